@@ -1,0 +1,56 @@
+// Ray / spherical-shell intersection in a cancellation-free form (DESIGN.md §2;
+// Haines et al., "Precision Improvements for Ray/Sphere Intersection", Ray Tracing
+// Gems ch. 7). The ray starts at altitude h above a sphere of radius R (the ground),
+// with mu = cos(angle between the ray and the local up at the start); the shell is the
+// sphere of radius R + H. Only the altitudes and mu are needed, never Earth-centred
+// coordinates, so float evaluation stays accurate to millimetres (see tests).
+//
+//   c  = (h - H)(2R + h + H)        = |O|^2 - (R+H)^2, exact-ish for small h - H
+//   b' = -(R + h) mu                 (half linear coefficient, sign flipped)
+//   q  = b' + sign(b') sqrt(b'^2 - c)
+//   roots t = c / q and t = q
+#pragma once
+
+#include <cmath>
+
+namespace cloudsvc::geo {
+
+template <class T>
+struct ShellHits {
+  int count = 0;  // number of hits with t >= 0 (0, 1 or 2)
+  T t_near = 0;   // first hit distance (valid if count >= 1), m
+  T t_far = 0;    // second hit distance (valid if count == 2), m
+};
+
+// Distances along the ray to the sphere of radius R + H, from a start at altitude h.
+// Hits behind the start (t < 0) are dropped. A tangent ray counts as two equal hits.
+template <class T>
+ShellHits<T> intersect_shell(T R, T h, T H, T mu) {
+  ShellHits<T> out;
+  const T c = (h - H) * (T(2) * R + h + H);
+  const T b = -(R + h) * mu;
+  const T disc = b * b - c;
+  if (disc < T(0)) return out;
+  const T s = std::sqrt(disc);
+  const T q = b + (b >= T(0) ? s : -s);
+  T t0, t1;
+  if (q == T(0)) {  // only when b == 0 and c == 0: ray starts on the shell, horizontal
+    t0 = t1 = T(0);
+  } else {
+    t0 = c / q;
+    t1 = q;
+  }
+  if (t0 > t1) { T tmp = t0; t0 = t1; t1 = tmp; }
+  if (t1 < T(0)) return out;
+  if (t0 < T(0)) {
+    out.count = 1;
+    out.t_near = t1;
+    return out;
+  }
+  out.count = 2;
+  out.t_near = t0;
+  out.t_far = t1;
+  return out;
+}
+
+}  // namespace cloudsvc::geo

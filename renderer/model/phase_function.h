@@ -1,0 +1,26 @@
+// Cloud phase function: Jendersie & d'Eon 2023, "An Approximate Mie Scattering
+// Function for Fog and Cloud Rendering" (SIGGRAPH talk), HG + Draine blend fitted to Mie
+// for water droplets of diameter d (um, 5 <= d <= 50). Parameter fits as printed in
+// seed 004 (signs) with w_D's constant 0.665888 (DESIGN.md §4). Double precision: this is
+// the reference twin of shaders/phase_function.glsl.
+#pragma once
+
+namespace cloudsvc::model {
+
+struct JdDParams {
+  double g_hg = 0.0;   // HG lobe asymmetry
+  double g_d = 0.0;    // Draine lobe asymmetry
+  double alpha = 0.0;  // Draine alpha
+  double w_d = 0.0;    // weight of the Draine lobe
+};
+
+// Fitted parameters for a droplet diameter in micrometres (clamped to [5, 50]).
+JdDParams jdd_params(double diameter_um);
+
+// Phase functions in sr^-1, each normalised to 1 over the sphere. cos_theta is the cosine
+// of the scattering angle (1 = forward).
+double hg_phase(double cos_theta, double g);
+double draine_phase(double cos_theta, double g, double alpha);
+double jdd_phase(double cos_theta, const JdDParams& p);
+
+}  // namespace cloudsvc::model

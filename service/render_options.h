@@ -1,0 +1,49 @@
+// Options of `cloudsvc render` and `cloudsvc demo`, parsed and fully validated before
+// any rendering starts (bad input -> one-line error naming the flag and its allowed
+// range, exit code 2, no output file).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "geodesy/geodetic.h"
+#include "weather/cloud_layer.h"
+
+namespace cloudsvc {
+
+struct RenderOptions {
+  geo::Geodetic position{47.45, 8.56, 2500.0};  // --lat --lon (deg) --alt (m, ellipsoid)
+  geo::Attitude attitude{270.0, 5.0, 0.0};       // --heading --pitch --roll (deg)
+  std::string time_text = "2026-06-21T12:00:00Z";  // --time, UTC ISO 8601
+  double unix_time_s = 0.0;                      // parsed --time
+  double fov_deg = 60.0;                         // --fov, horizontal field of view, (0, 170)
+  int width = 640;                               // --size WxH, 1..8192 each
+  int height = 360;
+  std::string weather_arg = "broken-cumulus";    // --weather PRESET or FILE.json
+  weather::Weather weather;                      // resolved preset or loaded file
+  std::string out_path = "view.png";             // --out, .exr (linear half) or .png (sRGB)
+  bool window = false;                           // --window: interactive GLFW window
+  int window_frames = 0;                         // --window-frames N: close after N frames (0 = run until closed)
+  double exposure_ev = 0.0;                      // --exposure: EV offset for PNG tone mapping
+};
+
+struct DemoOptions {
+  std::string out_dir = "out";  // --out-dir
+  int width = 640;              // --size WxH
+  int height = 360;
+};
+
+// Result of parsing a command line. exit_code >= 0 means: stop and return it (help was
+// printed: 0; an error was printed to stderr: 2).
+struct ParsedCommand {
+  enum class Kind { None, Render, Demo } kind = Kind::None;
+  RenderOptions render;
+  DemoOptions demo;
+  int exit_code = -1;
+  std::string error;  // the one-line message printed, if exit_code == 2
+};
+
+// argv[0] is the program name; argv[1] the sub-command ("render", "demo").
+ParsedCommand parse_command_line(int argc, const char* const* argv);
+
+}  // namespace cloudsvc

@@ -1,0 +1,84 @@
+// Cloud layers: the weather state the renderer draws (DESIGN.md §3).
+// Altitudes are metres above the WGS84 ellipsoid (the geoid undulation, |N| < 110 m,
+// is ignored: MSL values are taken as ellipsoidal heights).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace cloudsvc::weather {
+
+// Cloud types, numbered as in CIGI 3.3 Weather Control (cloud type field).
+enum class CloudType : int {
+  None = 0,
+  Altocumulus = 1,
+  Altostratus = 2,
+  Cirrocumulus = 3,
+  Cirrostratus = 4,
+  Cirrus = 5,
+  Cumulonimbus = 6,
+  Cumulus = 7,
+  Nimbostratus = 8,
+  Stratocumulus = 9,
+  Stratus = 10,
+};
+
+// Lower-case name ("cumulus", "stratocumulus", ...) and its inverse (nullopt if unknown).
+std::string_view cloud_type_name(CloudType t);
+std::optional<CloudType> cloud_type_from_name(std::string_view name);
+
+// Vertical density profile of a cloud type over the height fraction f in [0, 1] of its
+// layer (0 = base, 1 = top). The shader evaluates
+//   profile(f) = smoothstep(0, bottom_ramp, f) * (1 - smoothstep(1 - top_ramp, 1, f))
+//                * mix(1, f, top_weight)   ... see shaders/cloud_density.glsl
+// and the same numbers drive the CPU reference.
+struct HeightProfile {
+  float bottom_ramp = 0.1f;  // fraction of the layer over which density rises at the base
+  float top_ramp = 0.3f;     // fraction over which density falls at the top
+  float top_weight = 0.0f;   // 0: flat profile; 1: density grows linearly with height (anvils)
+  float base_erosion = 0.5f; // 0..1: how strongly detail noise erodes (wispy edges)
+};
+
+struct CloudTypeTraits {
+  HeightProfile profile;
+  double default_base_m = 1000.0;
+  double default_top_m = 2000.0;
+  double default_droplet_diameter_um = 20.0;
+  double default_density_scale = 1.0;
+  double noise_scale_m = 8000.0;  // horizontal period of the base shape noise, m
+  bool stratiform = false;
+};
+const CloudTypeTraits& cloud_type_traits(CloudType t);
+
+struct Wind {
+  double east_mps = 0.0;
+  double north_mps = 0.0;
+};
+
+struct CloudLayer {
+  CloudType type = CloudType::Cumulus;
+  double base_m = 1000.0;   // bottom of the layer, m above the ellipsoid
+  double top_m = 2000.0;    // top of the layer, m above the ellipsoid (> base_m)
+  double coverage = 0.5;    // fraction of the sky covered, [0, 1]
+  double density_scale = 1.0;          // multiplier on microphysical extinction, [0, 10]
+  double droplet_diameter_um = 20.0;   // [5, 50]
+  Wind wind;                           // m/s, drives the cloud field's drift
+};
+
+constexpr int kMaxCloudLayers = 4;
+
+// Everything the renderer needs to know about weather at one time.
+struct Weather {
+  std::string name;                // preset name or file name, for logs
+  std::vector<CloudLayer> layers;  // at most kMaxCloudLayers, sorted by base altitude
+  std::uint32_t map_seed = 1;      // seed of the procedural global weather map
+};
+
+// Checks ranges and ordering; returns an empty string when valid, else a one-line
+// message naming the offending field (e.g. "layers[1].coverage 1.5 out of range [0, 1]").
+std::string validate(const Weather& w);
+
+}  // namespace cloudsvc::weather

@@ -1,0 +1,36 @@
+// Global weather map: an equirectangular lat/lon grid of RGBA float channels.
+//   R: coverage modulation m in [0, 1]; 0.5 = the layer's own coverage
+//   G: vertical development v in [0, 1]; 0.5 = the layer's own depth
+//   B: density modulation in [0, 1]; 0.5 = the layer's own density (factor 2^(2(B-0.5)))
+//   A: reserved (precipitation), 0
+// Texel (i, j) is centred at lon = -180 + (i + 0.5) * 360 / width,
+// lat = -90 + (j + 0.5) * 180 / height (row 0 is the southernmost).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace cloudsvc::weather {
+
+struct WeatherMap {
+  int width = 0;
+  int height = 0;
+  std::vector<float> rgba;  // width * height * 4, row-major from the south
+
+  // Bilinear sample at a geodetic position, wrapping in longitude (no antimeridian
+  // seam) and clamping in latitude. Returns 4 channels.
+  void sample(double lat_deg, double lon_deg, float out[4]) const;
+};
+
+// Deterministic procedural map from a seed: smooth noise evaluated on the unit sphere
+// (3D positions, not lat/lon), so it is seamless across the antimeridian and at the poles.
+// feature_km: typical size of weather systems.
+WeatherMap generate_procedural_map(std::uint32_t seed, int width = 1024, int height = 512,
+                                   double feature_km = 300.0);
+
+// Combines a layer coverage c with the map's coverage modulation m (both [0, 1]):
+// local = clamp(c + 1.2 * min(c, 1 - c) * (m - 0.5) * 2, 0, 1): overcast (c = 1) and clear
+// (c = 0) layers stay as they are, partial layers vary with the map.
+float local_coverage(float layer_coverage, float m);
+
+}  // namespace cloudsvc::weather

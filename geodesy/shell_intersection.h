@@ -24,13 +24,22 @@ struct ShellHits {
 
 // Distances along the ray to the sphere of radius R + H, from a start at altitude h.
 // Hits behind the start (t < 0) are dropped. A tangent ray counts as two equal hits.
+// The roots are those of t^2 - 2 b' t + c = 0, i.e. |O + t D|^2 = (R + H)^2 with
+// |O| = R + h, O.D = (R + h) mu; their product is c, so c / q is the second root.
+// Cases (reviewed and tested in tests/geodesy_shell_test.cpp):
+//   below the shell (h < H, c < 0): one hit, t_near > 0, for every mu;
+//   above (h > H, c > 0): two hits when looking down steeply enough, else none;
+//   exactly on it (h == H, c == 0): a root at t = 0. Looking down (mu < 0) gives
+//     count 2 {0, -2(R+h)mu}; looking up (mu > 0) gives count 1 {0}; mu == 0 is the
+//     tangent double root, count 2 {0, 0}.
+// NaN input gives count 0 (no NaN reaches a caller that trusts count).
 template <class T>
 ShellHits<T> intersect_shell(T R, T h, T H, T mu) {
   ShellHits<T> out;
   const T c = (h - H) * (T(2) * R + h + H);
   const T b = -(R + h) * mu;
   const T disc = b * b - c;
-  if (disc < T(0)) return out;
+  if (!(disc >= T(0))) return out;  // miss, or NaN input
   const T s = std::sqrt(disc);
   const T q = b + (b >= T(0) ? s : -s);
   T t0, t1;

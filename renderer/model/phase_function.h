@@ -23,4 +23,8 @@ double hg_phase(double cos_theta, double g);
 double draine_phase(double cos_theta, double g, double alpha);
 double jdd_phase(double cos_theta, const JdDParams& p);
 
+// Mean cosine <cos theta> of the blend (closed form: Draine 2003 for the Draine lobe,
+// g for the HG lobe). Used to map the phase to a single asymmetry parameter.
+double jdd_mean_cosine(const JdDParams& p);
+
 }  // namespace cloudsvc::model

@@ -1,0 +1,65 @@
+#include "renderer/atmosphere_luts.h"
+
+namespace cloudsvc {
+
+void dispatch_2d(int w, int h, int d) {
+  glDispatchCompute(static_cast<GLuint>((w + 7) / 8), static_cast<GLuint>((h + 7) / 8), static_cast<GLuint>(d));
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+}
+
+AtmosphereLuts::AtmosphereLuts()
+    : sky_view_prog_(gl::ShaderProgram::compute("sky_view_lut.comp")),
+      ap_prog_(gl::ShaderProgram::compute("aerial_perspective.comp")),
+      transmittance_(gl::make_texture_2d(GL_RGBA32F, kTransmittanceW, kTransmittanceH, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE)),
+      multiscatter_(gl::make_texture_2d(GL_RGBA32F, kMultiscatterSize, kMultiscatterSize, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE)),
+      irradiance_(gl::make_texture_2d(GL_RGBA32F, kIrradianceSize, kIrradianceSize, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE)),
+      sky_view_(gl::make_texture_2d(GL_RGBA32F, kSkyViewW, kSkyViewH, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE)),
+      ap_inscatter_(gl::make_texture_3d(GL_RGBA32F, kApSize, kApSize, kApSize, GL_CLAMP_TO_EDGE)),
+      ap_transmittance_(gl::make_texture_3d(GL_RGBA32F, kApSize, kApSize, kApSize, GL_CLAMP_TO_EDGE)) {
+  // Static LUTs, in dependency order: transmittance -> multiple scattering -> irradiance.
+  {
+    auto prog = gl::ShaderProgram::compute("transmittance_lut.comp");
+    prog.use();
+    glBindImageTexture(0, transmittance_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    dispatch_2d(kTransmittanceW, kTransmittanceH);
+  }
+  {
+    auto prog = gl::ShaderProgram::compute("multiscatter_lut.comp");
+    prog.use();
+    glBindTextureUnit(0, transmittance_.id());
+    glBindImageTexture(0, multiscatter_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    dispatch_2d(kMultiscatterSize, kMultiscatterSize);
+  }
+  {
+    auto prog = gl::ShaderProgram::compute("sky_irradiance_lut.comp");
+    prog.use();
+    glBindTextureUnit(0, transmittance_.id());
+    glBindTextureUnit(1, multiscatter_.id());
+    glBindImageTexture(0, irradiance_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    dispatch_2d(kIrradianceSize, kIrradianceSize);
+  }
+}
+
+void AtmosphereLuts::update_view_dependent() {
+  glBindTextureUnit(0, transmittance_.id());
+  glBindTextureUnit(1, multiscatter_.id());
+  glBindTextureUnit(2, irradiance_.id());
+  sky_view_prog_.use();
+  glBindImageTexture(0, sky_view_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  dispatch_2d(kSkyViewW, kSkyViewH);
+  ap_prog_.use();
+  glBindImageTexture(0, ap_inscatter_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  glBindImageTexture(1, ap_transmittance_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  dispatch_2d(kApSize, kApSize);
+}
+
+void AtmosphereLuts::bind_for_scene() const {
+  glBindTextureUnit(0, transmittance_.id());
+  glBindTextureUnit(1, multiscatter_.id());
+  glBindTextureUnit(2, irradiance_.id());
+  glBindTextureUnit(6, sky_view_.id());
+  glBindTextureUnit(7, ap_inscatter_.id());
+  glBindTextureUnit(8, ap_transmittance_.id());
+}
+
+}  // namespace cloudsvc

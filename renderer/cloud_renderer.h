@@ -1,0 +1,51 @@
+// The GPU renderer: owns every GL object (noise volumes, weather map, atmosphere LUTs,
+// frame target) and draws one ViewRequest per call. The caller owns the GL context and
+// must keep it current on the calling thread (DESIGN.md §1: the render thread alone owns it).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+
+#include "renderer/atmosphere_luts.h"
+#include "renderer/gl/gl_objects.h"
+#include "renderer/gl/shader_program.h"
+#include "renderer/render_types.h"
+#include "weather/cloud_layer.h"
+
+namespace cloudsvc {
+
+struct RendererConfig {
+  int base_noise_size = 128;   // Perlin-Worley base shape volume edge
+  int detail_noise_size = 32;  // Worley detail volume edge
+  std::uint32_t noise_seed = 1;
+  int weather_map_width = 1024;  // global map, 0.35 deg per texel
+  int weather_map_height = 512;
+};
+
+class CloudRenderer {
+ public:
+  explicit CloudRenderer(const RendererConfig& config = {});
+
+  // Sets the weather; regenerates the global weather map only when its seed changes.
+  void set_weather(const weather::Weather& w);
+  const weather::Weather& weather() const { return weather_; }
+
+  // Renders one view and reads it back (rows from the top).
+  FrameImage render(const ViewRequest& view, const RenderQuality& quality = {});
+
+ private:
+  void upload_weather_map(std::uint32_t seed);
+  void ensure_target(int w, int h);
+
+  RendererConfig config_;
+  weather::Weather weather_;
+  std::uint32_t map_seed_ = 0;
+  bool map_valid_ = false;
+  AtmosphereLuts atmosphere_;
+  gl::ShaderProgram scene_prog_;
+  gl::Texture base_noise_, detail_noise_, weather_map_, target_;
+  gl::Buffer uniforms_, counters_;
+  int target_w_ = 0, target_h_ = 0;
+};
+
+}  // namespace cloudsvc

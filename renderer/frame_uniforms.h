@@ -1,0 +1,40 @@
+// CPU mirror of shaders/frame_uniforms.glsl (std140: only vec4/mat4 members, so the C++
+// layout matches without padding rules). Keep the two in sync.
+#pragma once
+
+#include <glm/glm.hpp>
+
+namespace cloudsvc {
+
+struct CloudLayerGpu {
+  glm::vec4 altitude;       // base m, top m, coverage, density scale
+  glm::vec4 optics;         // sigma_t max 1/m, g_HG, g_D, alpha
+  glm::vec4 optics2;        // w_D, 1/base period, 1/detail period, detail erosion
+  glm::vec4 profile;        // bottom ramp, top ramp, top weight, stratiform
+  glm::vec4 base_offset;    // base noise offset (tile units)
+  glm::vec4 detail_offset;  // detail noise offset (tile units)
+};
+
+constexpr int kGpuMaxLayers = 4;
+
+struct FrameUniforms {
+  glm::mat4 enu_to_ecef;
+  glm::vec4 camera_forward;
+  glm::vec4 camera_right;
+  glm::vec4 camera_up;
+  glm::vec4 view;
+  glm::vec4 planet;
+  glm::vec4 sun_dir;
+  glm::vec4 sun_irradiance;
+  glm::vec4 ground_albedo;
+  glm::vec4 quality;
+  glm::vec4 ms_params;
+  glm::vec4 ap_params;
+  glm::ivec4 counts;
+  CloudLayerGpu layers[kGpuMaxLayers];
+};
+
+static_assert(sizeof(CloudLayerGpu) == 6 * 16, "std140 layout");
+static_assert(sizeof(FrameUniforms) == 64 + 12 * 16 + kGpuMaxLayers * 6 * 16, "std140 layout");
+
+}  // namespace cloudsvc

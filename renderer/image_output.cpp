@@ -1,0 +1,92 @@
+#include "renderer/image_output.h"
+
+#include <OpenImageIO/imageio.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <stdexcept>
+
+namespace cloudsvc {
+
+namespace {
+
+double aces_filmic(double x) {  // Narkowicz 2015, "ACES Filmic Tone Mapping Curve"
+  return std::clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
+}
+
+double srgb_oetf(double v) { return v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055; }
+
+std::string lower_extension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> tone_map_srgb8(const FrameImage& img, double exposure_ev) {
+  const size_t n = static_cast<size_t>(img.width) * img.height;
+  // Log-average luminance (Reinhard et al. 2002), ignoring the sun disk's extreme values.
+  double log_sum = 0.0;
+  size_t count = 0;
+  for (size_t i = 0; i < n; ++i) {
+    const double y = luminance(&img.rgba[i * 4]);
+    if (y < 10.0) {
+      log_sum += std::log(1e-12 + y);
+      ++count;
+    }
+  }
+  const double key = count ? std::exp(log_sum / static_cast<double>(count)) : 1.0;
+  // 0.18 / key, but never brighter than 200x: a moonless night stays black, twilight dim.
+  const double exposure = std::clamp(0.18 / key, 0.5, 200.0) * std::exp2(exposure_ev);
+  std::vector<std::uint8_t> out(n * 4);
+  for (size_t i = 0; i < n; ++i) {
+    for (int c = 0; c < 3; ++c) {
+      const double v = srgb_oetf(aces_filmic(exposure * std::max(0.0f, img.rgba[i * 4 + c])));
+      out[i * 4 + c] = static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
+    }
+    out[i * 4 + 3] = 255;
+  }
+  return out;
+}
+
+void write_image(const std::string& path, const FrameImage& img, double exposure_ev) {
+  const std::string ext = lower_extension(path);
+  if (ext != ".exr" && ext != ".png") throw std::runtime_error(path + ": unsupported extension (use .exr or .png)");
+  const std::filesystem::path final_path(path);
+  const std::filesystem::path tmp_path =
+      final_path.parent_path() / ("." + final_path.stem().string() + ".tmp" + std::to_string(::getpid()) + ext);
+
+  auto out = OIIO::ImageOutput::create(tmp_path.string());
+  if (!out) throw std::runtime_error(path + ": cannot create image writer: " + OIIO::geterror());
+  bool ok = false;
+  if (ext == ".exr") {
+    OIIO::ImageSpec spec(img.width, img.height, 4, OIIO::TypeDesc::HALF);
+    spec.channelnames = {"R", "G", "B", "A"};
+    spec.attribute("compression", "zip");
+    spec.attribute("cloudsvc:radiance_units", "W m^-2 sr^-1 nm^-1 at 680/550/440 nm; A = cloud opacity");
+    ok = out->open(tmp_path.string(), spec) && out->write_image(OIIO::TypeDesc::FLOAT, img.rgba.data());
+  } else {
+    const std::vector<std::uint8_t> px = tone_map_srgb8(img, exposure_ev);
+    OIIO::ImageSpec spec(img.width, img.height, 4, OIIO::TypeDesc::UINT8);
+    ok = out->open(tmp_path.string(), spec) && out->write_image(OIIO::TypeDesc::UINT8, px.data());
+  }
+  ok = out->close() && ok;
+  if (!ok) {
+    std::string err = out->geterror();
+    std::error_code ec;
+    std::filesystem::remove(tmp_path, ec);
+    throw std::runtime_error(path + ": write failed: " + err);
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp_path, final_path, ec);
+  if (ec) {
+    std::filesystem::remove(tmp_path, ec);
+    throw std::runtime_error(path + ": cannot move the finished image into place: " + ec.message());
+  }
+}
+
+}  // namespace cloudsvc

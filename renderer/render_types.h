@@ -1,0 +1,55 @@
+// Plain data exchanged with the renderer: what to draw, how carefully, and the result.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "geodesy/geodetic.h"
+
+namespace cloudsvc {
+
+// One view: where the camera is, where it looks, when, and the image size.
+struct ViewRequest {
+  geo::Geodetic position;      // WGS84, altitude above the ellipsoid (m)
+  geo::Attitude attitude;      // heading/pitch/roll, degrees
+  double unix_time_s = 0.0;    // UTC, seconds since 1970-01-01
+  double fov_deg = 60.0;       // horizontal field of view
+  int width = 640;
+  int height = 360;
+  std::uint32_t frame_index = 0;  // varies the per-pixel jitter between frames
+};
+
+// Quality knobs of the ray march. The march code is the same for every preset; presets
+// only change these numbers.
+struct RenderQuality {
+  int primary_steps = 64;       // steps along the view ray through all layer intervals
+  int light_steps = 6;          // steps of the secondary march towards the sun
+  int ms_octaves = 3;           // Wrenninge multiple-scattering octaves (1 = single scattering)
+  int ground_shadow_steps = 8;  // steps per layer of the ground-to-sun shadow march
+  double ms_a = 0.4;            // extinction scale per octave (a <= b for energy conservation)
+  double ms_b = 0.5;            // energy scale per octave
+  double ms_c = 0.6;            // phase eccentricity scale per octave
+  bool count_density_evaluations = true;
+};
+
+struct FrameStats {
+  double render_ms = 0.0;             // GPU passes + readback, wall clock
+  double sun_elevation_deg = 0.0;     // geometric elevation at the camera
+  double sun_azimuth_deg = 0.0;
+  std::int64_t cloud_pixels = 0;      // pixels with cloud opacity > 0.01
+  double density_evals_per_pixel = 0.0;
+  std::int64_t nonfinite_pixels = 0;  // pixels the shader had to clamp (must be 0)
+};
+
+// A rendered frame: linear spectral radiance at 680/550/440 nm in W m^-2 sr^-1 nm^-1
+// (rgb) and cloud opacity (a), rows from the top of the image.
+struct FrameImage {
+  int width = 0;
+  int height = 0;
+  std::vector<float> rgba;
+  FrameStats stats;
+
+  const float* pixel(int x, int y) const { return &rgba[(static_cast<size_t>(y) * width + x) * 4]; }
+};
+
+}  // namespace cloudsvc

@@ -1,0 +1,106 @@
+#include "renderer/scene_setup.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "geodesy/solar_position.h"
+#include "renderer/model/droplet_optics.h"
+#include "renderer/model/phase_function.h"
+
+namespace cloudsvc {
+
+namespace {
+
+constexpr double kDegToRad = M_PI / 180.0;
+
+// Fractional part of x / period in [0, 1), computed in double so that offsets of
+// thousands of km (or decades of wind drift) keep sub-millimetre precision.
+double wrap01(double x, double period) {
+  double f = std::fmod(x / period, 1.0);
+  return f < 0.0 ? f + 1.0 : f;
+}
+
+glm::vec4 wrapped_offset(const glm::dvec3& world_m, double period) {
+  return {static_cast<float>(wrap01(world_m.x, period)), static_cast<float>(wrap01(world_m.y, period)),
+          static_cast<float>(wrap01(world_m.z, period)), 0.0f};
+}
+
+}  // namespace
+
+double horizon_reach_m(double R, double h, double H) {
+  return std::sqrt(std::max(h, 0.0) * (2.0 * R + std::max(h, 0.0))) + std::sqrt(std::max(H, 0.0) * (2.0 * R + H));
+}
+
+FrameUniforms make_frame_uniforms(const ViewRequest& view, const weather::Weather& weather,
+                                  const RenderQuality& quality) {
+  FrameUniforms u{};
+  const geo::Geodetic& pos = view.position;
+  const glm::dmat3 enu_to_ecef = geo::enu_to_ecef(pos.lat_deg, pos.lon_deg);
+  u.enu_to_ecef = glm::mat4(glm::mat3(enu_to_ecef));
+
+  const geo::BodyAxes axes = geo::body_axes_enu(view.attitude);
+  u.camera_forward = glm::vec4(glm::vec3(axes.forward), 0.0f);
+  u.camera_right = glm::vec4(glm::vec3(axes.right), 0.0f);
+  u.camera_up = glm::vec4(glm::vec3(axes.up), 0.0f);
+  const double tan_h = std::tan(0.5 * view.fov_deg * kDegToRad);
+  const double tan_v = tan_h * static_cast<double>(view.height) / static_cast<double>(view.width);
+  u.view = glm::vec4(static_cast<float>(tan_h), static_cast<float>(tan_v), static_cast<float>(view.width),
+                     static_cast<float>(view.height));
+
+  // Shell: osculating sphere at the camera. Ground at altitude 0, or just below a camera
+  // that is below the ellipsoid (no terrain or geoid model yet).
+  const double R = geo::gaussian_radius(pos.lat_deg);
+  const double h = pos.alt_m;
+  const double ground_alt = std::min(0.0, h - 1.0);
+  double highest = 12000.0;
+  for (const auto& l : weather.layers) highest = std::max(highest, l.top_m);
+  const double reach = horizon_reach_m(R, h - ground_alt, highest);
+  u.planet = glm::vec4(static_cast<float>(R), static_cast<float>(h), static_cast<float>(ground_alt),
+                       static_cast<float>(reach));
+
+  const geo::SolarPosition sp = geo::solar_position(view.unix_time_s, pos.lat_deg, pos.lon_deg);
+  const double el = sp.elevation_deg * kDegToRad, az = sp.azimuth_deg * kDegToRad;
+  u.sun_dir = glm::vec4(static_cast<float>(std::cos(el) * std::sin(az)), static_cast<float>(std::cos(el) * std::cos(az)),
+                        static_cast<float>(std::sin(el)), static_cast<float>(std::cos(kSunAngularRadiusDeg * kDegToRad)));
+  u.sun_irradiance = glm::vec4(kSolarIrradiance[0], kSolarIrradiance[1], kSolarIrradiance[2], 0.0f);
+  u.ground_albedo = glm::vec4(kGroundAlbedo, kGroundAlbedo, kGroundAlbedo, kNightSkyRadiance);
+  u.quality = glm::vec4(static_cast<float>(quality.primary_steps), static_cast<float>(quality.light_steps),
+                        static_cast<float>(quality.ms_octaves), static_cast<float>(quality.ground_shadow_steps));
+  u.ms_params = glm::vec4(static_cast<float>(quality.ms_a), static_cast<float>(quality.ms_b),
+                          static_cast<float>(quality.ms_c), 0.0f);
+  // Aerial perspective reaches the farthest visible ground or cloud (hundreds of km).
+  u.ap_params = glm::vec4(static_cast<float>(std::max(reach, 1000.0)), 0.0f, 0.0f, 0.0f);
+
+  const glm::dvec3 cam_ecef = geo::geodetic_to_ecef(pos);
+  const int n_layers = std::min<int>(static_cast<int>(weather.layers.size()), kGpuMaxLayers);
+  for (int i = 0; i < n_layers; ++i) {
+    const weather::CloudLayer& l = weather.layers[static_cast<size_t>(i)];
+    const weather::CloudTypeTraits& tr = weather::cloud_type_traits(l.type);
+    const model::JdDParams ph = model::jdd_params(l.droplet_diameter_um);
+    const double base_period = tr.noise_scale_m;
+    const double detail_period = base_period / 8.0;
+    // Wind drift: the cloud field moves with the wind, so noise is sampled at
+    // x - wind * t. Wind given in ENU at the camera, applied along ECEF axes.
+    const glm::dvec3 wind_ecef = enu_to_ecef * glm::dvec3(l.wind.east_mps, l.wind.north_mps, 0.0);
+    auto drift = [&](double period) {
+      // fmod per component keeps the product wind*t (1e10 m after decades) exact enough.
+      return glm::dvec3(std::fmod(wind_ecef.x * view.unix_time_s, period), std::fmod(wind_ecef.y * view.unix_time_s, period),
+                        std::fmod(wind_ecef.z * view.unix_time_s, period));
+    };
+    CloudLayerGpu& g = u.layers[i];
+    g.altitude = glm::vec4(static_cast<float>(l.base_m), static_cast<float>(l.top_m), static_cast<float>(l.coverage),
+                           static_cast<float>(l.density_scale));
+    g.optics = glm::vec4(static_cast<float>(model::cloud_extinction_per_m(l.droplet_diameter_um)),
+                         static_cast<float>(ph.g_hg), static_cast<float>(ph.g_d), static_cast<float>(ph.alpha));
+    g.optics2 = glm::vec4(static_cast<float>(ph.w_d), static_cast<float>(1.0 / base_period),
+                          static_cast<float>(1.0 / detail_period), tr.profile.base_erosion);
+    g.profile = glm::vec4(tr.profile.bottom_ramp, tr.profile.top_ramp, tr.profile.top_weight, tr.stratiform ? 1.0f : 0.0f);
+    g.base_offset = wrapped_offset(cam_ecef - drift(base_period), base_period);
+    g.detail_offset = wrapped_offset(cam_ecef - drift(detail_period), detail_period);
+  }
+  u.counts = glm::ivec4(n_layers, static_cast<int>(view.frame_index % 65536u),
+                        quality.count_density_evaluations ? 1 : 0, 0);
+  return u;
+}
+
+}  // namespace cloudsvc

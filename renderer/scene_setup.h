@@ -1,0 +1,26 @@
+// Per-frame constants for the GPU, computed on the CPU in double precision from the view
+// and the weather (DESIGN.md §2): camera frame, osculating shell radius, sun direction,
+// wrapped noise offsets. No GL here, so it is unit-testable.
+#pragma once
+
+#include "renderer/frame_uniforms.h"
+#include "renderer/render_types.h"
+#include "weather/cloud_layer.h"
+
+namespace cloudsvc {
+
+// Solar spectral irradiance at the top of the atmosphere at 680, 550, 440 nm
+// (W m^-2 nm^-1; ASTM E-490 / the table of Bruneton's precomputed-scattering demo).
+constexpr float kSolarIrradiance[3] = {1.474f, 1.8504f, 1.91198f};
+constexpr double kSunAngularRadiusDeg = 0.2667;
+constexpr float kGroundAlbedo = 0.12f;          // average land surface
+constexpr float kNightSkyRadiance = 2.0e-9f;    // W m^-2 sr^-1 nm^-1, airglow + starlight
+
+FrameUniforms make_frame_uniforms(const ViewRequest& view, const weather::Weather& weather,
+                                  const RenderQuality& quality);
+
+// Farthest distance (m) along a ray from altitude h at which anything below altitude H can
+// still be seen over the horizon of a sphere of radius R: sqrt(h(2R+h)) + sqrt(H(2R+H)).
+double horizon_reach_m(double R, double h, double H);
+
+}  // namespace cloudsvc

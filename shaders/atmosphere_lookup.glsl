@@ -1,0 +1,64 @@
+// Lookups into the atmosphere LUTs; needs atmosphere_model.glsl.
+layout(binding = 0) uniform sampler2D transmittance_lut;   // 256x64, rgb transmittance to the top
+layout(binding = 1) uniform sampler2D multiscatter_lut;    // 32x32, rgb Psi_ms (Hillaire 2020 eq. 10)
+
+// Transmittance from altitude alt along zenith cosine mu to space; 0 if the planet blocks it.
+vec3 transmittance_to_space(float alt, float mu) {
+  float r = atmo_radius(alt);
+  if (ray_hits_ground(r, mu)) return vec3(0.0);
+  return textureLod(transmittance_lut, transmittance_uv(r, mu, vec2(textureSize(transmittance_lut, 0))), 0.0).rgb;
+}
+
+// Multiple-scattering contribution Psi_ms for unit sun irradiance (sr^-1 per unit sigma_s).
+vec3 multiscatter(float alt, float mu_sun) {
+  vec2 uv = vec2(mu_sun * 0.5 + 0.5, saturate(alt / (ATMO_TOP - ATMO_BOTTOM)));
+  vec2 size = vec2(textureSize(multiscatter_lut, 0));
+  uv = 0.5 / size + uv * (1.0 - 1.0 / size);
+  return textureLod(multiscatter_lut, uv, 0.0).rgb;
+}
+
+// In-scattered radiance per metre at a point (W m^-2 sr^-1 nm^-1 per m) for a unit-less
+// sun irradiance; multiply by the solar irradiance. Single scattering with phase, plus
+// Hillaire's isotropic multiple-scattering term.
+vec3 atmo_inscatter_density(AtmoMedium m, float alt, float mu_sun, float cos_view_sun) {
+  vec3 t_sun = transmittance_to_space(alt, mu_sun);
+  vec3 single = (m.rayleigh * rayleigh_phase(cos_view_sun) + vec3(m.mie * aerosol_phase(cos_view_sun))) * t_sun;
+  vec3 ms = (m.rayleigh + vec3(m.mie)) * multiscatter(alt, mu_sun);
+  return single + ms;
+}
+
+// Ray march through the atmosphere from radius r (planet-centred frame with the start on
+// the +z axis, so d and sun are in the start's local ENU frame) over distance len.
+// Returns in-scattered radiance for unit solar irradiance (rgb) and the transmittance.
+void march_atmosphere(float r, vec3 d, vec3 sun, float len, int steps, out vec3 L, out vec3 T) {
+  L = vec3(0.0);
+  T = vec3(1.0);
+  float nu = dot(d, sun);
+  float dt = len / float(steps);
+  for (int i = 0; i < steps; ++i) {
+    float t = (float(i) + 0.5) * dt;
+    vec3 x = vec3(0.0, 0.0, r) + t * d;
+    float rx = length(x);
+    float alt = rx - ATMO_BOTTOM;
+    AtmoMedium m = atmo_medium(alt);
+    vec3 S = atmo_inscatter_density(m, alt, dot(x, sun) / rx, nu);
+    vec3 step_T = exp(-m.extinction * dt);
+    L += T * S * (vec3(1.0) - step_T) / max(m.extinction, vec3(1e-12));
+    T *= step_T;
+  }
+}
+
+// Length of the atmospheric path from radius r along zenith cosine mu: to the ground or
+// to the top of the atmosphere.
+float atmosphere_path_length(float r, float mu) {
+  return ray_hits_ground(r, mu) ? distance_to_bottom(r, mu) : distance_to_top(r, mu);
+}
+
+layout(binding = 2) uniform sampler2D sky_irradiance_lut;  // 32x32, rgb E_sky for unit sun
+
+// Sky irradiance on an upward-facing surface at altitude alt, unit sun irradiance.
+vec3 sky_irradiance(float alt, float mu_sun) {
+  vec2 size = vec2(textureSize(sky_irradiance_lut, 0));
+  vec2 uv = vec2(mu_sun * 0.5 + 0.5, saturate(alt / (ATMO_TOP - ATMO_BOTTOM)));
+  return textureLod(sky_irradiance_lut, 0.5 / size + uv * (1.0 - 1.0 / size), 0.0).rgb;
+}

@@ -1,0 +1,83 @@
+// Earth atmosphere in the style of Hillaire 2020, "A Scalable and Production Ready Sky
+// and Atmosphere Rendering Technique" (EGSR), constants from DESIGN.md §4 (Bruneton 2017
+// uses the same Rayleigh/Mie values). Lengths in metres, coefficients in 1/m. The
+// atmosphere is spherically symmetric: only the altitude and the zenith cosine of a ray
+// matter, so it uses its own radius (6360 km) regardless of the cloud-shell radius.
+
+const float ATMO_BOTTOM = 6360.0e3;            // m
+const float ATMO_TOP = 6460.0e3;               // m (100 km thick)
+const vec3 RAYLEIGH_SCATTERING = vec3(5.802e-6, 13.558e-6, 33.1e-6);  // 1/m at 680, 550, 440 nm
+const float RAYLEIGH_SCALE_HEIGHT = 8000.0;    // m
+const float MIE_SCATTERING = 3.996e-6;         // 1/m
+const float MIE_EXTINCTION = 4.44e-6;          // 1/m
+const float MIE_SCALE_HEIGHT = 1200.0;         // m
+const float MIE_G = 0.8;
+const vec3 OZONE_ABSORPTION = vec3(0.650e-6, 1.881e-6, 0.085e-6);     // 1/m at the tent peak
+const float GROUND_ALBEDO_ATMO = 0.3;          // ground albedo seen by the multi-scattering LUT
+
+struct AtmoMedium {
+  vec3 rayleigh;   // scattering, 1/m
+  float mie;       // scattering, 1/m
+  vec3 extinction; // total, 1/m
+};
+
+AtmoMedium atmo_medium(float alt) {
+  alt = max(alt, 0.0);
+  float dr = exp(-alt / RAYLEIGH_SCALE_HEIGHT);
+  float dm = exp(-alt / MIE_SCALE_HEIGHT);
+  float doz = max(0.0, 1.0 - abs(alt - 25.0e3) / 15.0e3);  // tent 10-25-40 km
+  AtmoMedium m;
+  m.rayleigh = RAYLEIGH_SCATTERING * dr;
+  m.mie = MIE_SCATTERING * dm;
+  m.extinction = m.rayleigh + vec3(MIE_EXTINCTION * dm) + OZONE_ABSORPTION * doz;
+  return m;
+}
+
+float rayleigh_phase(float mu) { return 3.0 / (16.0 * PI) * (1.0 + mu * mu); }
+
+// Cornette-Shanks phase for the aerosol (Mie) component, sr^-1.
+float aerosol_phase(float mu) {
+  float g = MIE_G, g2 = g * g;
+  float k = 3.0 / (8.0 * PI) * (1.0 - g2) / (2.0 + g2);
+  return k * (1.0 + mu * mu) / pow(max(1.0 + g2 - 2.0 * g * mu, 1e-6), 1.5);
+}
+
+// Distance from radius r along zenith cosine mu to the top / bottom sphere.
+float distance_to_top(float r, float mu) {
+  float disc = r * r * (mu * mu - 1.0) + ATMO_TOP * ATMO_TOP;
+  return max(0.0, -r * mu + sqrt(max(disc, 0.0)));
+}
+float distance_to_bottom(float r, float mu) {
+  float disc = r * r * (mu * mu - 1.0) + ATMO_BOTTOM * ATMO_BOTTOM;
+  return max(0.0, -r * mu - sqrt(max(disc, 0.0)));
+}
+bool ray_hits_ground(float r, float mu) {
+  return mu < 0.0 && r * r * (mu * mu - 1.0) + ATMO_BOTTOM * ATMO_BOTTOM >= 0.0;
+}
+
+// Transmittance LUT parameterisation (Bruneton 2017, §"Transmittance"): x_r from the
+// horizon distance, x_mu from the distance to the top, both in [0, 1].
+vec2 transmittance_uv(float r, float mu, vec2 size) {
+  float H = sqrt(ATMO_TOP * ATMO_TOP - ATMO_BOTTOM * ATMO_BOTTOM);
+  float rho = sqrt(max(r * r - ATMO_BOTTOM * ATMO_BOTTOM, 0.0));
+  float d = distance_to_top(r, mu);
+  float d_min = ATMO_TOP - r, d_max = rho + H;
+  float x_mu = (d_max > d_min) ? (d - d_min) / (d_max - d_min) : 0.0;
+  float x_r = rho / H;
+  // texel-centre mapping
+  return vec2(0.5 / size.x + x_mu * (1.0 - 1.0 / size.x), 0.5 / size.y + x_r * (1.0 - 1.0 / size.y));
+}
+vec2 transmittance_r_mu(vec2 uv, vec2 size) {
+  float x_mu = saturate((uv.x - 0.5 / size.x) / (1.0 - 1.0 / size.x));
+  float x_r = saturate((uv.y - 0.5 / size.y) / (1.0 - 1.0 / size.y));
+  float H = sqrt(ATMO_TOP * ATMO_TOP - ATMO_BOTTOM * ATMO_BOTTOM);
+  float rho = H * x_r;
+  float r = sqrt(rho * rho + ATMO_BOTTOM * ATMO_BOTTOM);
+  float d_min = ATMO_TOP - r, d_max = rho + H;
+  float d = d_min + x_mu * (d_max - d_min);
+  float mu = d == 0.0 ? 1.0 : (H * H - rho * rho - d * d) / (2.0 * r * d);
+  return vec2(r, clamp(mu, -1.0, 1.0));
+}
+
+// Radius used for atmosphere lookups of a point at altitude alt (m) above the shell.
+float atmo_radius(float alt) { return clamp(ATMO_BOTTOM + alt, ATMO_BOTTOM + 1.0, ATMO_TOP - 1.0); }

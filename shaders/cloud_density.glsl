@@ -1,0 +1,56 @@
+// Cloud density field (Schneider 2015 / Nubis, seeds 002-004): coverage from the layer
+// and the global weather map, a vertical profile by cloud type, Perlin-Worley base shape
+// and Worley detail erosion. Returns the extinction coefficient sigma_t in 1/m.
+// Needs frame_uniforms.glsl and common.glsl.
+
+layout(binding = 3) uniform sampler3D base_noise;    // 128^3, tiles (REPEAT)
+layout(binding = 4) uniform sampler3D detail_noise;  // 32^3, tiles (REPEAT)
+layout(binding = 5) uniform sampler2D weather_map;   // equirectangular lat/lon, REPEAT in lon
+
+uint g_density_evals = 0u;  // per-invocation count of density evaluations
+
+// Weather map at a point p (local frame): the map is indexed by latitude/longitude of the
+// point's direction from the shell centre, in ECEF axes. atan2 for latitude keeps full
+// precision near the poles (asin would lose ~km there in float).
+vec4 weather_at(vec3 p) {
+  vec3 q = (mat3(U.enu_to_ecef) * (p + vec3(0.0, 0.0, U.planet.x + U.planet.y)));
+  float lat = atan(q.z, length(q.xy));
+  float lon = atan(q.y, q.x);
+  vec2 uv = vec2(lon * (0.5 / PI) + 0.5, lat / PI + 0.5);
+  return textureLod(weather_map, uv, 0.0);
+}
+
+// Vertical profile over the height fraction f of the layer (0 base, 1 top).
+float height_profile(vec4 prof, float f) {
+  float bottom = smoothstep(0.0, max(prof.x, 1e-3), f);
+  float top = 1.0 - smoothstep(1.0 - max(prof.y, 1e-3), 1.0, f);
+  return bottom * top * mix(1.0, f, prof.z);
+}
+
+// sigma_t (1/m) of layer li at local point p with altitude alt. With detail = false the
+// erosion by detail noise is skipped (light marches, ground shadows).
+float cloud_extinction(int li, vec3 p, float alt, bool detail) {
+  CloudLayerGpu L = U.layers[li];
+  float thickness = L.altitude.y - L.altitude.x;
+  float f = (alt - L.altitude.x) / thickness;
+  if (f <= 0.0 || f >= 1.0) return 0.0;
+  g_density_evals += 1u;
+  vec4 w = weather_at(p);
+  float coverage = clamp(L.altitude.z + 1.2 * min(L.altitude.z, 1.0 - L.altitude.z) * (w.r - 0.5) * 2.0, 0.0, 1.0);
+  if (coverage <= 0.0) return 0.0;
+  // vertical development: 0.5 = full layer depth, less = lower tops
+  float depth_fraction = clamp(0.5 + w.g, 0.3, 1.0);
+  float profile = height_profile(L.profile, f / depth_fraction) * step(f, depth_fraction);
+  if (profile <= 0.0) return 0.0;
+  vec3 p_ecef = mat3(U.enu_to_ecef) * p;
+  float shape = textureLod(base_noise, p_ecef * L.optics2.y + L.base_offset.xyz, 0.0).r;
+  // Coverage threshold with a soft edge: full cover (1) keeps nearly all of the shape.
+  float d = saturate((shape * profile - (1.0 - coverage)) / 0.25);
+  if (d <= 0.0) return 0.0;
+  if (detail && d < 1.0) {
+    float dn = textureLod(detail_noise, p_ecef * L.optics2.z + L.detail_offset.xyz, 0.0).r;
+    d = saturate(remap(d, dn * L.optics2.w, 1.0, 0.0, 1.0));
+  }
+  float density_mod = exp2(2.0 * (w.b - 0.5));
+  return d * L.altitude.w * density_mod * L.optics.x;
+}

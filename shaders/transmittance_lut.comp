@@ -1,0 +1,26 @@
+#version 450 core
+// Transmittance to the top of the atmosphere, T(r, mu) (Hillaire 2020 §4; Bruneton 2017).
+#include "common.glsl"
+#include "atmosphere_model.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(rgba32f, binding = 0) uniform writeonly image2D out_lut;
+
+const int STEPS = 40;
+
+void main() {
+  ivec2 px = ivec2(gl_GlobalInvocationID.xy);
+  ivec2 size = imageSize(out_lut);
+  if (any(greaterThanEqual(px, size))) return;
+  vec2 rmu = transmittance_r_mu((vec2(px) + 0.5) / vec2(size), vec2(size));
+  float r = rmu.x, mu = rmu.y;
+  float len = distance_to_top(r, mu);
+  float dt = len / float(STEPS);
+  vec3 tau = vec3(0.0);
+  for (int i = 0; i < STEPS; ++i) {
+    float t = (float(i) + 0.5) * dt;
+    float ri = sqrt(r * r + t * t + 2.0 * r * mu * t);
+    tau += atmo_medium(ri - ATMO_BOTTOM).extinction * dt;
+  }
+  imageStore(out_lut, px, vec4(exp(-tau), 1.0));
+}

@@ -1,0 +1,153 @@
+// Image facts of the GPU renderer (issue: renderer core). Small images on llvmpipe.
+// Each test checks a physical fact a user would notice if it were wrong.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "geodesy/shell_intersection.h"
+#include "geodesy/solar_position.h"
+#include "render_test_support.h"
+
+namespace cloudsvc::test {
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+const char* kNoonZurich = "2026-06-21T11:30:00Z";
+
+TEST(RenderImage, NoNonFiniteOrNegativePixelsInAnyPresetOrView) {
+  struct Pose { double alt, pitch; const char* time; };
+  const std::vector<Pose> poses = {
+      {2.0, 10.0, kNoonZurich},      // on the ground, looking up
+      {1500.0, 0.0, kNoonZurich},    // inside most low layers
+      {4000.0, -30.0, kNoonZurich},  // above low layers
+      {30000.0, -25.0, kNoonZurich}, // stratosphere
+      {100000.0, -60.0, kNoonZurich},  // top of the atmosphere
+      {800.0, 5.0, "2026-06-21T19:20:00Z"},  // sunset
+      {800.0, 5.0, "2026-06-21T23:00:00Z"},  // night
+  };
+  for (const std::string& name : weather::preset_names()) {
+    for (const Pose& p : poses) {
+      const FrameImage img = render_preset(name, make_view(47.45, 8.56, p.alt, 250.0, p.pitch, p.time, 96, 54));
+      EXPECT_EQ(count_bad_values(img), 0) << name << " alt " << p.alt << " " << p.time;
+      EXPECT_EQ(img.stats.nonfinite_pixels, 0) << name << " alt " << p.alt << " " << p.time;
+    }
+  }
+}
+
+// Rayleigh scattering: the clear noon sky is bluer (higher blue/red ratio) at the zenith
+// than near the horizon, where the long path reddens and whitens it.
+TEST(RenderImage, ClearSkyZenithBluerThanHorizon) {
+  const FrameImage up = render_preset("clear", make_view(47.45, 8.56, 10.0, 0.0, 90.0, kNoonZurich, 32, 32, 10.0));
+  const FrameImage horizon = render_preset("clear", make_view(47.45, 8.56, 10.0, 0.0, 2.0, kNoonZurich, 32, 32, 2.0));
+  const float* z = up.pixel(16, 16);
+  const float* hz = horizon.pixel(16, 8);  // slightly above the horizon
+  const double zenith_blueness = z[2] / z[0];
+  const double horizon_blueness = hz[2] / hz[0];
+  EXPECT_GT(zenith_blueness, 1.5) << "zenith sky should be clearly blue";
+  EXPECT_GT(zenith_blueness, 1.3 * horizon_blueness);
+}
+
+TEST(RenderImage, NightIsOrdersOfMagnitudeDarkerThanDay) {
+  const FrameImage day = render_preset("scattered-cumulus", make_view(47.45, 8.56, 500.0, 0.0, 10.0, kNoonZurich));
+  const FrameImage night =
+      render_preset("scattered-cumulus", make_view(47.45, 8.56, 500.0, 0.0, 10.0, "2026-06-21T23:30:00Z"));
+  EXPECT_LT(night.stats.sun_elevation_deg, -12.0);
+  EXPECT_GT(mean_luminance(day), 1000.0 * mean_luminance(night));
+}
+
+// Ground seen from 150 m, looking down, under an overcast deck vs a clear sky.
+TEST(RenderImage, GroundUnderOvercastIsDarkerThanUnderClearSky) {
+  const ViewRequest v = make_view(47.45, 8.56, 150.0, 90.0, -45.0, kNoonZurich);
+  const FrameImage clear = render_preset("clear", v);
+  const FrameImage overcast = render_preset("overcast-stratus", v);
+  const double lc = mean_luminance(clear), lo = mean_luminance(overcast);
+  EXPECT_LT(lo, 0.5 * lc) << "clear " << lc << " overcast " << lo;
+  EXPECT_GT(lo, 0.0);
+}
+
+// Seen from above, a sunlit deck is brighter than the ground seen through its gaps.
+TEST(RenderImage, DeckSeenFromAboveIsBrighterThanGroundInGaps) {
+  const FrameImage img =
+      render_preset("stratocumulus-deck", make_view(47.45, 8.56, 3500.0, 90.0, -60.0, kNoonZurich, 160, 90));
+  double deck = 0.0, gap = 0.0;
+  int nd = 0, ng = 0;
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x) {
+      const float a = img.pixel(x, y)[3];
+      if (a > 0.95f) { deck += luminance(img.pixel(x, y)); ++nd; }
+      if (a < 0.05f) { gap += luminance(img.pixel(x, y)); ++ng; }
+    }
+  ASSERT_GT(nd, 100) << "expected deck pixels";
+  ASSERT_GT(ng, 20) << "expected gaps in a stratocumulus deck";
+  EXPECT_GT(deck / nd, 2.0 * gap / ng);
+}
+
+// Cloud shadows fall where the sun direction says: for ground pixels seen through gaps,
+// follow the sun direction up to the layer's middle and project that point back into the
+// image. Where the image shows cloud there, the ground must be in shadow (darker).
+TEST(RenderImage, CloudShadowsFallAlongTheSunDirection) {
+  const ViewRequest v = make_view(47.45, 8.56, 3500.0, 90.0, -70.0, "2026-06-21T08:00:00Z", 200, 200, 70.0);
+  const FrameImage img = render_preset("stratocumulus-deck", v);
+  const weather::Weather w = *weather::preset("stratocumulus-deck");
+  const double mid = 0.5 * (w.layers[0].base_m + w.layers[0].top_m);
+
+  const geo::BodyAxes ax = geo::body_axes_enu(v.attitude);
+  const double R = geo::gaussian_radius(v.position.lat_deg), h = v.position.alt_m;
+  const double tan_h = std::tan(0.5 * v.fov_deg * kDeg), tan_v = tan_h * v.height / v.width;
+  const geo::SolarPosition sp = geo::solar_position(v.unix_time_s, v.position.lat_deg, v.position.lon_deg);
+  auto sun_enu = [&](double az_deg) {
+    const double el = sp.elevation_deg * kDeg, az = az_deg * kDeg;
+    return glm::dvec3(std::cos(el) * std::sin(az), std::cos(el) * std::cos(az), std::sin(el));
+  };
+  // Mean ground luminance where the projected caster is cloud vs clear, for a sun azimuth.
+  auto shadow_contrast = [&](glm::dvec3 sun) {
+    double lit = 0, shade = 0;
+    int n_lit = 0, n_shade = 0;
+    for (int y = 0; y < v.height; ++y)
+      for (int x = 0; x < v.width; ++x) {
+        if (img.pixel(x, y)[3] > 0.02f) continue;  // cloud in front of the ground
+        const double nx = ((x + 0.5) / v.width) * 2 - 1, ny = -(((y + 0.5) / v.height) * 2 - 1);
+        const glm::dvec3 d = glm::normalize(ax.forward + nx * tan_h * ax.right + ny * tan_v * ax.up);
+        const auto g = geo::intersect_shell<double>(R, h, 0.0, d.z);
+        if (g.count < 2) continue;
+        const glm::dvec3 p = g.t_near * d;
+        const glm::dvec3 up = glm::normalize(p + glm::dvec3(0, 0, R + h));
+        const auto s = geo::intersect_shell<double>(R, 0.0, mid, glm::dot(up, sun));
+        const glm::dvec3 q = p + s.t_near * sun;  // caster point at mid-layer
+        const double f = glm::dot(q, ax.forward);
+        if (f <= 0) continue;
+        const int qx = static_cast<int>(std::floor(((glm::dot(q, ax.right) / f / tan_h) + 1) * 0.5 * v.width));
+        const int qy = static_cast<int>(std::floor((1 - glm::dot(q, ax.up) / f / tan_v) * 0.5 * v.height));
+        if (qx < 0 || qy < 0 || qx >= v.width || qy >= v.height) continue;
+        const float a = img.pixel(qx, qy)[3];
+        const double l = luminance(img.pixel(x, y));
+        if (a > 0.9f) { shade += l; ++n_shade; }
+        if (a < 0.05f) { lit += l; ++n_lit; }
+      }
+    EXPECT_GT(n_shade, 30);
+    EXPECT_GT(n_lit, 30);
+    return (shade / std::max(n_shade, 1)) / (lit / std::max(n_lit, 1));
+  };
+  ASSERT_GT(sp.elevation_deg, 30.0);
+  const double true_ratio = shadow_contrast(sun_enu(sp.azimuth_deg));
+  const double wrong_ratio = shadow_contrast(sun_enu(sp.azimuth_deg + 180.0));
+  EXPECT_LT(true_ratio, 0.5) << "ground under predicted cloud shadow should be much darker";
+  EXPECT_GT(wrong_ratio, 1.5 * true_ratio) << "a mirrored sun must not explain the shadows as well";
+}
+
+// Crossing the antimeridian changes nothing: 0.0002 deg of longitude apart (~11 m at
+// 60 N), the two images agree to a few percent.
+TEST(RenderImage, AntimeridianViewsMatch) {
+  const FrameImage a = render_preset("broken-cumulus", make_view(60.0, 179.9999, 1500.0, 90.0, 0.0, "2026-06-21T00:30:00Z"));
+  const FrameImage b = render_preset("broken-cumulus", make_view(60.0, -179.9999, 1500.0, 90.0, 0.0, "2026-06-21T00:30:00Z"));
+  double diff = 0.0, sum = 0.0;
+  for (size_t i = 0; i < a.rgba.size(); i += 4)
+    for (int c = 0; c < 3; ++c) { diff += std::abs(a.rgba[i + c] - b.rgba[i + c]); sum += a.rgba[i + c]; }
+  EXPECT_GT(a.stats.cloud_pixels, 100);
+  EXPECT_LT(diff / sum, 0.05);
+}
+
+}  // namespace
+}  // namespace cloudsvc::test

@@ -31,10 +31,12 @@ struct Counters {
 CloudRenderer::CloudRenderer(const RendererConfig& config)
     : config_(config),
       scene_prog_(gl::ShaderProgram::compute("scene.comp")),
-      base_noise_(upload_noise(weather::make_base_shape_noise(config.base_noise_size, config.noise_seed))),
       detail_noise_(upload_noise(weather::make_detail_noise(config.detail_noise_size, config.noise_seed + 1))),
       uniforms_(gl::make_buffer(sizeof(FrameUniforms), nullptr, GL_DYNAMIC_DRAW)),
       counters_(gl::make_buffer(sizeof(Counters), nullptr, GL_DYNAMIC_READ)) {
+  const weather::NoiseVolume base = weather::make_base_shape_noise(config.base_noise_size, config.noise_seed);
+  base_quantiles_ = noise_quantiles(base);
+  base_noise_ = upload_noise(base);
   set_weather(weather::Weather{});
 }
 
@@ -66,7 +68,7 @@ FrameImage CloudRenderer::render(const ViewRequest& view, const RenderQuality& q
   const auto start = std::chrono::steady_clock::now();
   ensure_target(view.width, view.height);
 
-  const FrameUniforms u = make_frame_uniforms(view, weather_, quality);
+  const FrameUniforms u = make_frame_uniforms(view, weather_, quality, base_quantiles_);
   glNamedBufferSubData(uniforms_.id(), 0, sizeof(FrameUniforms), &u);
   glBindBufferBase(GL_UNIFORM_BUFFER, 0, uniforms_.id());
   const Counters zero{0, 0, 0};

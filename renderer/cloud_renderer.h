@@ -10,6 +10,7 @@
 #include "renderer/gl/gl_objects.h"
 #include "renderer/gl/shader_program.h"
 #include "renderer/render_types.h"
+#include "renderer/scene_setup.h"
 #include "weather/cloud_layer.h"
 
 namespace cloudsvc {
@@ -43,6 +44,7 @@ class CloudRenderer {
   bool map_valid_ = false;
   AtmosphereLuts atmosphere_;
   gl::ShaderProgram scene_prog_;
+  NoiseQuantiles base_quantiles_{};
   gl::Texture base_noise_, detail_noise_, weather_map_, target_;
   gl::Buffer uniforms_, counters_;
   int target_w_ = 0, target_h_ = 0;

@@ -31,10 +31,11 @@ struct FrameUniforms {
   glm::vec4 ms_params;
   glm::vec4 ap_params;
   glm::ivec4 counts;
+  glm::vec4 noise_quantiles[4];  // base-noise quantiles at p = i / 15, i = 0..15
   CloudLayerGpu layers[kGpuMaxLayers];
 };
 
 static_assert(sizeof(CloudLayerGpu) == 6 * 16, "std140 layout");
-static_assert(sizeof(FrameUniforms) == 64 + 12 * 16 + kGpuMaxLayers * 6 * 16, "std140 layout");
+static_assert(sizeof(FrameUniforms) == 64 + 16 * 16 + kGpuMaxLayers * 6 * 16, "std140 layout");
 
 }  // namespace cloudsvc

@@ -31,8 +31,25 @@ double horizon_reach_m(double R, double h, double H) {
   return std::sqrt(std::max(h, 0.0) * (2.0 * R + std::max(h, 0.0))) + std::sqrt(std::max(H, 0.0) * (2.0 * R + H));
 }
 
+NoiseQuantiles noise_quantiles(const weather::NoiseVolume& v) {
+  std::array<std::size_t, 256> hist{};
+  for (std::uint8_t x : v.data) ++hist[x];
+  NoiseQuantiles q{};
+  const double n = static_cast<double>(v.data.size());
+  std::size_t acc = 0;
+  int value = 0;
+  for (int i = 0; i < 16; ++i) {
+    const double target = n * i / 15.0;
+    while (value < 255 && static_cast<double>(acc + hist[static_cast<size_t>(value)]) < target) acc += hist[static_cast<size_t>(value++)];
+    q[static_cast<size_t>(i)] = static_cast<float>(value) / 255.0f;
+  }
+  q[0] = 0.0f;
+  q[15] = 1.0f;
+  return q;
+}
+
 FrameUniforms make_frame_uniforms(const ViewRequest& view, const weather::Weather& weather,
-                                  const RenderQuality& quality) {
+                                  const RenderQuality& quality, const NoiseQuantiles& base_quantiles) {
   FrameUniforms u{};
   const geo::Geodetic& pos = view.position;
   const glm::dmat3 enu_to_ecef = geo::enu_to_ecef(pos.lat_deg, pos.lon_deg);
@@ -70,6 +87,10 @@ FrameUniforms make_frame_uniforms(const ViewRequest& view, const weather::Weathe
                           static_cast<float>(quality.ms_c), 0.0f);
   // Aerial perspective reaches the farthest visible ground or cloud (hundreds of km).
   u.ap_params = glm::vec4(static_cast<float>(std::max(reach, 1000.0)), 0.0f, 0.0f, 0.0f);
+
+  for (int i = 0; i < 4; ++i)
+    u.noise_quantiles[i] = glm::vec4(base_quantiles[4 * i], base_quantiles[4 * i + 1], base_quantiles[4 * i + 2],
+                                     base_quantiles[4 * i + 3]);
 
   const glm::dvec3 cam_ecef = geo::geodetic_to_ecef(pos);
   const int n_layers = std::min<int>(static_cast<int>(weather.layers.size()), kGpuMaxLayers);

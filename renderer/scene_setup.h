@@ -5,7 +5,10 @@
 
 #include "renderer/frame_uniforms.h"
 #include "renderer/render_types.h"
+#include <array>
+
 #include "weather/cloud_layer.h"
+#include "weather/noise_volumes.h"
 
 namespace cloudsvc {
 
@@ -16,8 +19,14 @@ constexpr double kSunAngularRadiusDeg = 0.2667;
 constexpr float kGroundAlbedo = 0.12f;          // average land surface
 constexpr float kNightSkyRadiance = 2.0e-9f;    // W m^-2 sr^-1 nm^-1, airglow + starlight
 
+// Values of a noise volume below which a fraction i / 15 of its texels lie (i = 0..15).
+// The shader turns a layer's coverage c into the base-noise threshold Q(1 - c), so that
+// coverage is the fraction of horizontal area covered by cloud at mid-profile.
+using NoiseQuantiles = std::array<float, 16>;
+NoiseQuantiles noise_quantiles(const weather::NoiseVolume& v);
+
 FrameUniforms make_frame_uniforms(const ViewRequest& view, const weather::Weather& weather,
-                                  const RenderQuality& quality);
+                                  const RenderQuality& quality, const NoiseQuantiles& base_quantiles);
 
 // Farthest distance (m) along a ray from altitude h at which anything below altitude H can
 // still be seen over the horizon of a sphere of radius R: sqrt(h(2R+h)) + sqrt(H(2R+H)).

@@ -16,12 +16,13 @@ struct RenderOptions {
   geo::Attitude attitude{270.0, 5.0, 0.0};       // --heading --pitch --roll (deg)
   std::string time_text = "2026-06-21T12:00:00Z";  // --time, UTC ISO 8601
   double unix_time_s = 0.0;                      // parsed --time
-  double fov_deg = 60.0;                         // --fov, horizontal field of view, (0, 170)
+  double fov_deg = 60.0;                         // --fov, horizontal field of view, (0, 170]
   int width = 640;                               // --size WxH, 1..8192 each
   int height = 360;
   std::string weather_arg = "broken-cumulus";    // --weather PRESET or FILE.json
   weather::Weather weather;                      // resolved preset or loaded file
-  std::string out_path = "view.png";             // --out, .exr (linear half) or .png (sRGB)
+  std::string out_path = "view.png";             // --out, .exr (linear half) or .png (sRGB);
+                                                 // empty with --window and no --out: no file
   bool window = false;                           // --window: interactive GLFW window
   int window_frames = 0;                         // --window-frames N: close after N frames (0 = run until closed)
   double exposure_ev = 0.0;                      // --exposure: EV offset for PNG tone mapping

@@ -27,16 +27,38 @@ float height_profile(vec4 prof, float f) {
   return bottom * top * mix(1.0, f, prof.z);
 }
 
-// sigma_t (1/m) of layer li at local point p with altitude alt. With detail = false the
-// erosion by detail noise is skipped (light marches, ground shadows).
-float cloud_extinction(int li, vec3 p, float alt, bool detail) {
+// Base-noise value below which a fraction p of the volume lies (piecewise linear in the
+// 16 quantiles measured on the CPU when the noise was generated).
+float noise_quantile(float p) {
+  float x = saturate(p) * 15.0;
+  int i = min(int(x), 14);
+  float a = U.noise_quantiles[i / 4][i % 4];
+  float b = U.noise_quantiles[(i + 1) / 4][(i + 1) % 4];
+  return mix(a, b, x - float(i));
+}
+
+// Width of the soft edge of the coverage threshold, in base-noise units.
+const float COVERAGE_EDGE = 0.12;
+
+// Local coverage of layer li at p: the layer's coverage modulated by the weather map
+// (weather/weather_map.h, local_coverage()).
+float local_coverage(CloudLayerGpu L, vec4 w) {
+  float c = L.altitude.z;
+  return clamp(c + 1.2 * min(c, 1.0 - c) * (w.r - 0.5) * 2.0, 0.0, 1.0);
+}
+
+// sigma_t (1/m) of layer li at local point p with altitude alt; also returns the local
+// coverage (0 outside the layer). With detail = false the erosion by detail noise is
+// skipped (light marches, ground shadows).
+float cloud_extinction(int li, vec3 p, float alt, bool detail, out float coverage) {
+  coverage = 0.0;
   CloudLayerGpu L = U.layers[li];
   float thickness = L.altitude.y - L.altitude.x;
   float f = (alt - L.altitude.x) / thickness;
   if (f <= 0.0 || f >= 1.0) return 0.0;
   g_density_evals += 1u;
   vec4 w = weather_at(p);
-  float coverage = clamp(L.altitude.z + 1.2 * min(L.altitude.z, 1.0 - L.altitude.z) * (w.r - 0.5) * 2.0, 0.0, 1.0);
+  coverage = local_coverage(L, w);
   if (coverage <= 0.0) return 0.0;
   // vertical development: 0.5 = full layer depth, less = lower tops
   float depth_fraction = clamp(0.5 + w.g, 0.3, 1.0);
@@ -44,8 +66,9 @@ float cloud_extinction(int li, vec3 p, float alt, bool detail) {
   if (profile <= 0.0) return 0.0;
   vec3 p_ecef = mat3(U.enu_to_ecef) * p;
   float shape = textureLod(base_noise, p_ecef * L.optics2.y + L.base_offset.xyz, 0.0).r;
-  // Coverage threshold with a soft edge: full cover (1) keeps nearly all of the shape.
-  float d = saturate((shape * profile - (1.0 - coverage)) / 0.25);
+  // Coverage threshold: the shape exceeds Q(1 - c) over a fraction c of the area (at
+  // mid-profile), with a soft edge; full cover (c = 1) keeps nearly all of the shape.
+  float d = saturate((shape * profile - noise_quantile(1.0 - coverage)) / COVERAGE_EDGE);
   if (d <= 0.0) return 0.0;
   if (detail && d < 1.0) {
     float dn = textureLod(detail_noise, p_ecef * L.optics2.z + L.detail_offset.xyz, 0.0).r;
@@ -53,4 +76,9 @@ float cloud_extinction(int li, vec3 p, float alt, bool detail) {
   }
   float density_mod = exp2(2.0 * (w.b - 0.5));
   return d * L.altitude.w * density_mod * L.optics.x;
+}
+
+float cloud_extinction(int li, vec3 p, float alt, bool detail) {
+  float coverage;
+  return cloud_extinction(li, p, alt, detail, coverage);
 }

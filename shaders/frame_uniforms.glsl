@@ -24,7 +24,8 @@ layout(std140, binding = 0) uniform FrameUniforms {
   vec4 ground_albedo;      // rgb diffuse albedo of the ground; w night-sky radiance (W m^-2 sr^-1 nm^-1)
   vec4 quality;            // x primary steps, y light steps, z multiple-scattering octaves, w ground-shadow steps per layer
   vec4 ms_params;          // x a (extinction scale per octave), y b (energy per octave), z c (eccentricity per octave)
-  vec4 ap_params;          // x aerial-perspective max distance (m), y weather map texel size (deg), z,w unused
+  vec4 ap_params;          // x aerial-perspective max distance (m), y,z,w unused
   ivec4 counts;            // x layer count, y frame index, z count density evaluations (0/1)
+  vec4 noise_quantiles[4]; // base shape noise value below which a fraction i/15 of texels lie, i = 0..15
   CloudLayerGpu layers[4];
 } U;

@@ -96,6 +96,34 @@ float ground_shadow_optical_depth(vec3 p, float ground_alt, vec3 sun, float mu_s
   return tau;
 }
 
+// Diffuse in-scattered radiance (per unit scattering) at altitude alt inside layer L, from
+// two-stream slab theory for conservative scattering (Bohren 1987): with vertical optical
+// depths tau_a above and tau_b below the point, estimated from the layer's nominal
+// extinction and the local coverage,
+//   T(tau) = 1 / (1 + 3/4 (1 - g) tau),   R(tau) = 1 - T(tau),
+//   F_down = F_sun (T(tau_a) - e^{-tau_a / mu_s}) + E_sky T(tau_a)      (diffuse only)
+//   F_up   = (F_sun + E_sky) T(tau_a) R(tau_b) + E_ground T(tau_b)
+// Each flux is taken as isotropic over its hemisphere (radiance F / pi), so the
+// in-scatter averaged over directions is (F_down + F_up) / (2 pi). This supplies the
+// light that the few octaves of the sun march cannot carry deep into a cloud or back
+// out of its top.
+vec3 diffuse_inscatter(CloudLayerGpu L, float alt, float mu_s, vec3 T_atm, float coverage, vec3 E_sun,
+                       float ground_alt) {
+  float sigma_nominal = L.optics.x * L.altitude.w * coverage;
+  float tau_a = sigma_nominal * max(L.altitude.y - alt, 0.0);
+  float tau_b = sigma_nominal * max(alt - L.altitude.x, 0.0);
+  float Ta = slab_diffuse_transmittance(tau_a), Tb = slab_diffuse_transmittance(tau_b);
+  float mu_pos = max(mu_s, 0.0);
+  vec3 F_sun = E_sun * T_atm * mu_pos;
+  vec3 E_sky = E_sun * sky_irradiance(alt, mu_s);
+  vec3 E_ground = U.ground_albedo.rgb * E_sun *
+                  (transmittance_to_space(ground_alt, mu_s) * mu_pos + sky_irradiance(ground_alt, mu_s));
+  float direct_a = mu_pos > 0.0 ? exp(-tau_a / max(mu_pos, 0.05)) : 0.0;
+  vec3 F_down = F_sun * max(Ta - direct_a, 0.0) + E_sky * Ta;
+  vec3 F_up = (F_sun + E_sky) * Ta * (1.0 - Tb) + E_ground * Tb;
+  return (F_down + F_up) / (2.0 * PI);
+}
+
 // Aerial perspective lookup: in-scatter (unit sun) and transmittance to distance t along
 // the pixel with normalised device coordinates ndc.
 void aerial_perspective(vec2 ndc, float t, out vec3 inscatter, out vec3 transmittance) {
@@ -159,12 +187,13 @@ void main() {
         float t = iv[k].t0 + (float(s) + jitter) * dt;
         vec3 p = t * dir;
         float alt = altitude_of(p, R, h);
-        float sigma = cloud_extinction(li, p, alt, true);
+        float coverage;
+        float sigma = cloud_extinction(li, p, alt, true, coverage);
         if (sigma <= 0.0) continue;
         vec3 up = up_at(p, R, h);
         float mu_s = dot(up, sun);
-        // sun: Wrenninge octaves over the light-march optical depth
         vec3 T_atm = transmittance_to_space(alt, mu_s);
+        // direct sun: Wrenninge octaves over the light-march optical depth
         vec3 L_sun = vec3(0.0);
         if (max(T_atm.r, max(T_atm.g, T_atm.b)) > 0.0) {
           float tau = light_optical_depth(li, p, alt, sun, mu_s);
@@ -175,17 +204,9 @@ void main() {
           }
           L_sun = E_sun * T_atm * s_sum;
         }
-        // ambient: sky from above and ground-reflected light from below, isotropic
-        // in-scatter E / (2 pi) per hemisphere, through the cloud above/below (two-stream)
-        float f = (alt - L.altitude.x) / (L.altitude.y - L.altitude.x);
-        float thickness = L.altitude.y - L.altitude.x;
-        vec3 E_sky = E_sun * sky_irradiance(alt, mu_s);
-        vec3 E_up = U.ground_albedo.rgb * E_sun *
-                    (transmittance_to_space(ground_alt, mu_s) * max(mu_s, 0.0) + sky_irradiance(ground_alt, mu_s));
-        vec3 L_amb = (E_sky * slab_diffuse_transmittance(sigma * (1.0 - f) * thickness * 0.5) +
-                      E_up * slab_diffuse_transmittance(sigma * f * thickness * 0.5)) / (2.0 * PI);
+        vec3 L_diffuse = diffuse_inscatter(L, alt, mu_s, T_atm, coverage, E_sun, ground_alt);
         float absorbed = one_minus_exp_neg(sigma * dt);  // albedo 1: scattered fraction
-        C += T * absorbed * (L_sun + L_amb);
+        C += T * absorbed * (L_sun + L_diffuse);
         depth_acc += t * T * absorbed;
         T *= 1.0 - absorbed;
       }

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <memory>
 #include <string>
 
@@ -37,10 +38,39 @@ inline ViewRequest make_view(double lat, double lon, double alt, double heading,
   return v;
 }
 
-inline FrameImage render_preset(const std::string& preset, const ViewRequest& v, const RenderQuality& q = {}) {
+// Writes img as PNG to $CLOUDSVC_TEST_IMAGES/<name>.png when that variable is set (for
+// looking at what a test saw).
+inline void maybe_save(const std::string& name, const FrameImage& img) {
+  if (const char* dir = std::getenv("CLOUDSVC_TEST_IMAGES")) write_image(std::string(dir) + "/" + name + ".png", img);
+}
+
+inline FrameImage render_weather(const weather::Weather& w, const ViewRequest& v, const RenderQuality& q = {}) {
   CloudRenderer& r = shared_renderer();
-  r.set_weather(*weather::preset(preset));
-  return r.render(v, q);
+  r.set_weather(w);
+  FrameImage img = r.render(v, q);
+  maybe_save(::testing::UnitTest::GetInstance()->current_test_info()->name() + std::string("_") + w.name, img);
+  return img;
+}
+
+inline FrameImage render_preset(const std::string& preset, const ViewRequest& v, const RenderQuality& q = {}) {
+  return render_weather(*weather::preset(preset), v, q);
+}
+
+// One layer of the given type, for tests that need a known sky.
+inline weather::Weather single_layer(weather::CloudType type, double base_m, double top_m, double coverage,
+                                     std::uint32_t map_seed = 11) {
+  weather::Weather w;
+  w.name = "test-layer";
+  w.map_seed = map_seed;
+  weather::CloudLayer l;
+  l.type = type;
+  l.base_m = base_m;
+  l.top_m = top_m;
+  l.coverage = coverage;
+  l.density_scale = weather::cloud_type_traits(type).default_density_scale;
+  l.droplet_diameter_um = weather::cloud_type_traits(type).default_droplet_diameter_um;
+  w.layers.push_back(l);
+  return w;
 }
 
 inline double mean_luminance(const FrameImage& img, int x0, int y0, int x1, int y1) {

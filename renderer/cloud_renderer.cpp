@@ -35,7 +35,7 @@ CloudRenderer::CloudRenderer(const RendererConfig& config)
       uniforms_(gl::make_buffer(sizeof(FrameUniforms), nullptr, GL_DYNAMIC_DRAW)),
       counters_(gl::make_buffer(sizeof(Counters), nullptr, GL_DYNAMIC_READ)) {
   const weather::NoiseVolume base = weather::make_base_shape_noise(config.base_noise_size, config.noise_seed);
-  base_quantiles_ = noise_quantiles(base);
+  facts_.base_quantiles = noise_quantiles(base);
   base_noise_ = upload_noise(base);
   set_weather(weather::Weather{});
 }
@@ -45,6 +45,9 @@ void CloudRenderer::upload_weather_map(std::uint32_t seed) {
       weather::generate_procedural_map(seed, config_.weather_map_width, config_.weather_map_height);
   weather_map_ = gl::make_texture_2d(GL_RGBA32F, m.width, m.height, GL_REPEAT, GL_CLAMP_TO_EDGE);
   glTextureSubImage2D(weather_map_.id(), 0, 0, 0, m.width, m.height, GL_RGBA, GL_FLOAT, m.rgba.data());
+  m.pole_value(false, facts_.weather_pole_south.data());
+  m.pole_value(true, facts_.weather_pole_north.data());
+  facts_.weather_map_height = m.height;
   map_seed_ = seed;
   map_valid_ = true;
 }
@@ -53,6 +56,7 @@ void CloudRenderer::set_weather(const weather::Weather& w) {
   const std::string problem = weather::validate(w);
   if (!problem.empty()) throw std::invalid_argument("invalid weather: " + problem);
   weather_ = w;
+  wind_anchor_.reset();
   if (!map_valid_ || map_seed_ != w.map_seed) upload_weather_map(w.map_seed);
 }
 
@@ -68,7 +72,8 @@ FrameImage CloudRenderer::render(const ViewRequest& view, const RenderQuality& q
   const auto start = std::chrono::steady_clock::now();
   ensure_target(view.width, view.height);
 
-  const FrameUniforms u = make_frame_uniforms(view, weather_, quality, base_quantiles_);
+  if (!wind_anchor_) wind_anchor_ = WindAnchor{view.position, view.unix_time_s};
+  const FrameUniforms u = make_frame_uniforms(view, weather_, quality, facts_, &*wind_anchor_);
   glNamedBufferSubData(uniforms_.id(), 0, sizeof(FrameUniforms), &u);
   glBindBufferBase(GL_UNIFORM_BUFFER, 0, uniforms_.id());
   const Counters zero{0, 0, 0};

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 
 #include "renderer/atmosphere_luts.h"
 #include "renderer/gl/gl_objects.h"
@@ -28,6 +29,7 @@ class CloudRenderer {
   explicit CloudRenderer(const RendererConfig& config = {});
 
   // Sets the weather; regenerates the global weather map only when its seed changes.
+  // The next rendered view becomes the wind anchor (renderer/wind_drift.h).
   void set_weather(const weather::Weather& w);
   const weather::Weather& weather() const { return weather_; }
 
@@ -44,7 +46,8 @@ class CloudRenderer {
   bool map_valid_ = false;
   AtmosphereLuts atmosphere_;
   gl::ShaderProgram scene_prog_;
-  NoiseQuantiles base_quantiles_{};
+  ResourceFacts facts_{};
+  std::optional<WindAnchor> wind_anchor_;  // latched at the first view after set_weather
   gl::Texture base_noise_, detail_noise_, weather_map_, target_;
   gl::Buffer uniforms_, counters_;
   int target_w_ = 0, target_h_ = 0;

@@ -13,6 +13,7 @@ struct CloudLayerGpu {
   glm::vec4 profile;        // bottom ramp, top ramp, top weight, stratiform
   glm::vec4 base_offset;    // base noise offset (tile units)
   glm::vec4 detail_offset;  // detail noise offset (tile units)
+  glm::mat4 noise_rotation;  // local ENU -> ECEF axes of the wind-rotated cloud field
 };
 
 constexpr int kGpuMaxLayers = 4;
@@ -32,10 +33,12 @@ struct FrameUniforms {
   glm::vec4 ap_params;
   glm::ivec4 counts;
   glm::vec4 noise_quantiles[4];  // base-noise quantiles at p = i / 15, i = 0..15
+  glm::vec4 weather_pole_south;  // weather map value at the south pole (row mean)
+  glm::vec4 weather_pole_north;  // ... and at the north pole
   CloudLayerGpu layers[kGpuMaxLayers];
 };
 
-static_assert(sizeof(CloudLayerGpu) == 6 * 16, "std140 layout");
-static_assert(sizeof(FrameUniforms) == 64 + 16 * 16 + kGpuMaxLayers * 6 * 16, "std140 layout");
+static_assert(sizeof(CloudLayerGpu) == 10 * 16, "std140 layout");
+static_assert(sizeof(FrameUniforms) == 64 + 18 * 16 + kGpuMaxLayers * 10 * 16, "std140 layout");
 
 }  // namespace cloudsvc

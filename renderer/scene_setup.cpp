@@ -49,7 +49,9 @@ NoiseQuantiles noise_quantiles(const weather::NoiseVolume& v) {
 }
 
 FrameUniforms make_frame_uniforms(const ViewRequest& view, const weather::Weather& weather,
-                                  const RenderQuality& quality, const NoiseQuantiles& base_quantiles) {
+                                  const RenderQuality& quality, const ResourceFacts& resources,
+                                  const WindAnchor* wind_anchor) {
+  const NoiseQuantiles& base_quantiles = resources.base_quantiles;
   FrameUniforms u{};
   const geo::Geodetic& pos = view.position;
   const glm::dmat3 enu_to_ecef = geo::enu_to_ecef(pos.lat_deg, pos.lon_deg);
@@ -80,13 +82,18 @@ FrameUniforms make_frame_uniforms(const ViewRequest& view, const weather::Weathe
   u.sun_dir = glm::vec4(static_cast<float>(std::cos(el) * std::sin(az)), static_cast<float>(std::cos(el) * std::cos(az)),
                         static_cast<float>(std::sin(el)), static_cast<float>(std::cos(kSunAngularRadiusDeg * kDegToRad)));
   u.sun_irradiance = glm::vec4(kSolarIrradiance[0], kSolarIrradiance[1], kSolarIrradiance[2], 0.0f);
-  u.ground_albedo = glm::vec4(kGroundAlbedo, kGroundAlbedo, kGroundAlbedo, kNightSkyRadiance);
+  u.ground_albedo = glm::vec4(kGroundAlbedo[0], kGroundAlbedo[1], kGroundAlbedo[2], kNightSkyRadiance);
   u.quality = glm::vec4(static_cast<float>(quality.primary_steps), static_cast<float>(quality.light_steps),
                         static_cast<float>(quality.ms_octaves), static_cast<float>(quality.ground_shadow_steps));
   u.ms_params = glm::vec4(static_cast<float>(quality.ms_a), static_cast<float>(quality.ms_b),
                           static_cast<float>(quality.ms_c), 0.0f);
   // Aerial perspective reaches the farthest visible ground or cloud (hundreds of km).
-  u.ap_params = glm::vec4(static_cast<float>(std::max(reach, 1000.0)), 0.0f, 0.0f, 0.0f);
+  u.ap_params = glm::vec4(static_cast<float>(std::max(reach, 1000.0)), static_cast<float>(resources.weather_map_height),
+                          0.0f, 0.0f);
+  const auto& ps = resources.weather_pole_south;
+  const auto& pn = resources.weather_pole_north;
+  u.weather_pole_south = glm::vec4(ps[0], ps[1], ps[2], ps[3]);
+  u.weather_pole_north = glm::vec4(pn[0], pn[1], pn[2], pn[3]);
 
   for (int i = 0; i < 4; ++i)
     u.noise_quantiles[i] = glm::vec4(base_quantiles[4 * i], base_quantiles[4 * i + 1], base_quantiles[4 * i + 2],
@@ -100,14 +107,11 @@ FrameUniforms make_frame_uniforms(const ViewRequest& view, const weather::Weathe
     const model::JdDParams ph = model::jdd_params(l.droplet_diameter_um);
     const double base_period = tr.noise_scale_m;
     const double detail_period = base_period / 8.0;
-    // Wind drift: the cloud field moves with the wind, so noise is sampled at
-    // x - wind * t. Wind given in ENU at the camera, applied along ECEF axes.
-    const glm::dvec3 wind_ecef = enu_to_ecef * glm::dvec3(l.wind.east_mps, l.wind.north_mps, 0.0);
-    auto drift = [&](double period) {
-      // fmod per component keeps the product wind*t (1e10 m after decades) exact enough.
-      return glm::dvec3(std::fmod(wind_ecef.x * view.unix_time_s, period), std::fmod(wind_ecef.y * view.unix_time_s, period),
-                        std::fmod(wind_ecef.z * view.unix_time_s, period));
-    };
+    // Wind: the field is sampled at rot * x (renderer/wind_drift.h); the camera's
+    // rotated ECEF position is wrapped per period in double, the GPU adds rot * p.
+    const WindAnchor& anchor = wind_anchor ? *wind_anchor : WindAnchor{pos, view.unix_time_s};
+    const glm::dmat3 rot = wind_rotation(l.wind, anchor, view.unix_time_s);
+    const glm::dvec3 cam_field = rot * cam_ecef;
     CloudLayerGpu& g = u.layers[i];
     g.altitude = glm::vec4(static_cast<float>(l.base_m), static_cast<float>(l.top_m), static_cast<float>(l.coverage),
                            static_cast<float>(l.density_scale));
@@ -116,8 +120,9 @@ FrameUniforms make_frame_uniforms(const ViewRequest& view, const weather::Weathe
     g.optics2 = glm::vec4(static_cast<float>(ph.w_d), static_cast<float>(1.0 / base_period),
                           static_cast<float>(1.0 / detail_period), tr.profile.base_erosion);
     g.profile = glm::vec4(tr.profile.bottom_ramp, tr.profile.top_ramp, tr.profile.top_weight, tr.stratiform ? 1.0f : 0.0f);
-    g.base_offset = wrapped_offset(cam_ecef - drift(base_period), base_period);
-    g.detail_offset = wrapped_offset(cam_ecef - drift(detail_period), detail_period);
+    g.base_offset = wrapped_offset(cam_field, base_period);
+    g.detail_offset = wrapped_offset(cam_field, detail_period);
+    g.noise_rotation = glm::mat4(glm::mat3(rot * enu_to_ecef));
   }
   u.counts = glm::ivec4(n_layers, static_cast<int>(view.frame_index % 65536u),
                         quality.count_density_evaluations ? 1 : 0, 0);

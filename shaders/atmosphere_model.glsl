@@ -13,7 +13,9 @@ const float MIE_EXTINCTION = 4.44e-6;          // 1/m
 const float MIE_SCALE_HEIGHT = 1200.0;         // m
 const float MIE_G = 0.8;
 const vec3 OZONE_ABSORPTION = vec3(0.650e-6, 1.881e-6, 0.085e-6);     // 1/m at the tent peak
-const float GROUND_ALBEDO_ATMO = 0.3;          // ground albedo seen by the multi-scattering LUT
+// Ground albedo seen by the multiple-scattering LUT: the same values as kGroundAlbedo in
+// renderer/scene_setup.h (680/550/440 nm).
+const vec3 GROUND_ALBEDO_ATMO = vec3(0.14, 0.12, 0.08);
 
 struct AtmoMedium {
   vec3 rayleigh;   // scattering, 1/m

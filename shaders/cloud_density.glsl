@@ -17,7 +17,13 @@ vec4 weather_at(vec3 p) {
   float lat = atan(q.z, length(q.xy));
   float lon = atan(q.y, q.x);
   vec2 uv = vec2(lon * (0.5 / PI) + 0.5, lat / PI + 0.5);
-  return textureLod(weather_map, uv, 0.0);
+  vec4 w = textureLod(weather_map, uv, 0.0);
+  // Within half a texel row of a pole, blend to the pole's value (as WeatherMap::sample
+  // does): every longitude meets at the same value, no pinwheel at the pole.
+  float y = uv.y * U.ap_params.y - 0.5;
+  if (y < 0.0) w = mix(w, U.weather_pole_south, min(1.0, -2.0 * y));
+  else if (y > U.ap_params.y - 1.0) w = mix(w, U.weather_pole_north, min(1.0, 2.0 * (y - U.ap_params.y + 1.0)));
+  return w;
 }
 
 // Vertical profile over the height fraction f of the layer (0 base, 1 top).
@@ -64,14 +70,14 @@ float cloud_extinction(int li, vec3 p, float alt, bool detail, out float coverag
   float depth_fraction = clamp(0.5 + w.g, 0.3, 1.0);
   float profile = height_profile(L.profile, f / depth_fraction) * step(f, depth_fraction);
   if (profile <= 0.0) return 0.0;
-  vec3 p_ecef = mat3(U.enu_to_ecef) * p;
-  float shape = textureLod(base_noise, p_ecef * L.optics2.y + L.base_offset.xyz, 0.0).r;
+  vec3 p_field = mat3(L.noise_rotation) * p;  // camera-relative, in the field's axes
+  float shape = textureLod(base_noise, p_field * L.optics2.y + L.base_offset.xyz, 0.0).r;
   // Coverage threshold: the shape exceeds Q(1 - c) over a fraction c of the area (at
   // mid-profile), with a soft edge; full cover (c = 1) keeps nearly all of the shape.
   float d = saturate((shape * profile - noise_quantile(1.0 - coverage)) / COVERAGE_EDGE);
   if (d <= 0.0) return 0.0;
   if (detail && d < 1.0) {
-    float dn = textureLod(detail_noise, p_ecef * L.optics2.z + L.detail_offset.xyz, 0.0).r;
+    float dn = textureLod(detail_noise, p_field * L.optics2.z + L.detail_offset.xyz, 0.0).r;
     d = saturate(remap(d, dn * L.optics2.w, 1.0, 0.0, 1.0));
   }
   float density_mod = exp2(2.0 * (w.b - 0.5));

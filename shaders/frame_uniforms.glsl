@@ -10,6 +10,7 @@ struct CloudLayerGpu {
   vec4 profile;        // x bottom ramp, y top ramp, z top weight, w stratiform flag
   vec4 base_offset;    // xyz offset of the base noise in tile units (ECEF axes), wrapped
   vec4 detail_offset;  // xyz offset of the detail noise in tile units, wrapped
+  mat4 noise_rotation; // upper 3x3: local ENU -> ECEF axes of the wind-rotated field (renderer/wind_drift.h)
 };
 
 layout(std140, binding = 0) uniform FrameUniforms {
@@ -24,8 +25,10 @@ layout(std140, binding = 0) uniform FrameUniforms {
   vec4 ground_albedo;      // rgb diffuse albedo of the ground; w night-sky radiance (W m^-2 sr^-1 nm^-1)
   vec4 quality;            // x primary steps, y light steps, z multiple-scattering octaves, w ground-shadow steps per layer
   vec4 ms_params;          // x a (extinction scale per octave), y b (energy per octave), z c (eccentricity per octave)
-  vec4 ap_params;          // x aerial-perspective max distance (m), y,z,w unused
+  vec4 ap_params;          // x aerial-perspective max distance (m), y weather map height (texels), z,w unused
   ivec4 counts;            // x layer count, y frame index, z count density evaluations (0/1)
   vec4 noise_quantiles[4]; // base shape noise value below which a fraction i/15 of texels lie, i = 0..15
+  vec4 weather_pole_south; // weather map value at the south pole (mean of the southernmost row)
+  vec4 weather_pole_north; // ... at the north pole
   CloudLayerGpu layers[4];
 } U;

@@ -154,5 +154,23 @@ TEST(RenderImage, AntimeridianViewsMatch) {
   EXPECT_LT(diff / sum, 0.05);
 }
 
+// Exactly at the poles the image is clean, and two cameras 2.2 m apart on opposite sides
+// of the north pole, looking along the same ECEF direction (north at lon 0, south at
+// lon 180), see nearly the same picture: no seam or pinwheel in the weather map.
+TEST(RenderImage, PolesRenderCleanlyAndContinuously) {
+  for (double lat : {90.0, -90.0})
+    for (double alt : {10.0, 1500.0, 40000.0}) {
+      const FrameImage img = render_preset("broken-cumulus", make_view(lat, 37.0, alt, 45.0, 10.0, "2026-06-21T12:00:00Z", 96, 54));
+      EXPECT_EQ(count_bad_values(img), 0) << lat << " " << alt;
+    }
+  const FrameImage a = render_preset("broken-cumulus", make_view(89.99999, 0.0, 500.0, 0.0, 5.0, "2026-06-21T12:00:00Z"));
+  const FrameImage b = render_preset("broken-cumulus", make_view(89.99999, 180.0, 500.0, 180.0, 5.0, "2026-06-21T12:00:00Z"));
+  double diff = 0.0, sum = 0.0;
+  for (size_t i = 0; i < a.rgba.size(); i += 4)
+    for (int c = 0; c < 3; ++c) { diff += std::abs(a.rgba[i + c] - b.rgba[i + c]); sum += a.rgba[i + c]; }
+  EXPECT_GT(a.stats.cloud_pixels, 100);
+  EXPECT_LT(diff / sum, 0.05);
+}
+
 }  // namespace
 }  // namespace cloudsvc::test

@@ -42,6 +42,15 @@ struct HeightProfile {
   float base_erosion = 0.5f; // 0..1: how strongly detail noise erodes (wispy edges)
 };
 
+// Typical values of a cloud type (defaults for layers that do not give their own; see
+// weather/cloud_layer.cpp for the sources of each number).
+//   default_density_scale multiplies the microphysical extinction
+//     sigma_t = N0 * Q_ext * pi * (d / 2)^2,  N0 = 300 cm^-3, Q_ext = 2
+//   (renderer/model/droplet_optics.h). It is chosen as LWC / LWC_N0(d): the type's typical
+//   liquid (or ice) water content over the water content that N0 droplets of diameter d
+//   would hold, so that sigma_t matches the type's typical water content.
+//   stratiform: not convective (everything but cumulus and cumulonimbus): a sheet whose
+//   depth is not driven by the weather map's vertical-development channel.
 struct CloudTypeTraits {
   HeightProfile profile;
   double default_base_m = 1000.0;
@@ -52,6 +61,9 @@ struct CloudTypeTraits {
   bool stratiform = false;
 };
 const CloudTypeTraits& cloud_type_traits(CloudType t);
+
+// All cloud types except None, in enum order.
+const std::vector<CloudType>& all_cloud_types();
 
 struct Wind {
   double east_mps = 0.0;
@@ -70,6 +82,9 @@ struct CloudLayer {
 
 constexpr int kMaxCloudLayers = 4;
 
+// A layer of type t with every field at the type's defaults (coverage 0.5, no wind).
+CloudLayer default_layer(CloudType t);
+
 // Everything the renderer needs to know about weather at one time.
 struct Weather {
   std::string name;                // preset name or file name, for logs
@@ -79,6 +94,28 @@ struct Weather {
 
 // Checks ranges and ordering; returns an empty string when valid, else a one-line
 // message naming the offending field (e.g. "layers[1].coverage 1.5 out of range [0, 1]").
+// Limits: at most kMaxCloudLayers layers; per layer all values finite, base_m in
+// [-500, 20000], top_m in (base_m, 20000] with top_m - base_m >= 10, coverage [0, 1],
+// density_scale [0, 10], droplet_diameter_um [5, 50], |wind| <= 150 m/s, type not None;
+// layers sorted by base_m and not overlapping in altitude (touching is allowed).
 std::string validate(const Weather& w);
+
+// The same checks, with the field ("layers[1].coverage") and the problem ("1.5 out of range
+// [0, 1]") apart, so that file loaders can prefix the file name. nullopt when valid.
+struct ValidationIssue {
+  std::string field;
+  std::string problem;
+};
+std::optional<ValidationIssue> validate_layer(const CloudLayer& layer, int index);
+std::optional<ValidationIssue> validate_detail(const Weather& w);
+
+// Limits used by validate (also quoted in docs/WEATHER.md).
+constexpr double kMinLayerBase_m = -500.0;
+constexpr double kMaxLayerTop_m = 20000.0;
+constexpr double kMinLayerThickness_m = 10.0;
+constexpr double kMaxDensityScale = 10.0;
+constexpr double kMinDropletDiameter_um = 5.0;
+constexpr double kMaxDropletDiameter_um = 50.0;
+constexpr double kMaxWindSpeed_mps = 150.0;
 
 }  // namespace cloudsvc::weather

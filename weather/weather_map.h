@@ -19,7 +19,18 @@ struct WeatherMap {
 
   // Bilinear sample at a geodetic position, wrapping in longitude (no antimeridian
   // seam) and clamping in latitude. Returns 4 channels.
+  // Poles: poleward of the outermost texel-centre row (within half a row of the pole)
+  // the value is blended linearly from the row's bilinear value to the row's mean, which
+  // is the value at the pole itself: every longitude then gives the same value at the
+  // pole, and points on opposite sides of it a few km apart differ only slightly (plain
+  // clamping would give them the values of texels a whole ring apart). Latitudes beyond
+  // +-90 are clamped. Non-finite positions or an empty map give the neutral
+  // {0.5, 0.5, 0.5, 0}.
   void sample(double lat_deg, double lon_deg, float out[4]) const;
+
+  // Mean of the southernmost (north = false) or northernmost row: the value at the pole
+  // that sample() blends to (the GPU sampler does the same).
+  void pole_value(bool north, float out[4]) const;
 };
 
 // Deterministic procedural map from a seed: smooth noise evaluated on the unit sphere

@@ -1,0 +1,145 @@
+// End-to-end checks of the cloudsvc executable: bad input gives one line naming the flag,
+// exit code 2 and no output file; a good render writes a readable EXR/PNG and prints
+// the stats line.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <array>
+#include <unistd.h>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct RunResult {
+  int exit_code = -1;
+  std::string out, err;
+};
+
+std::string quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += (c == '\'') ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+RunResult run_cloudsvc(const std::vector<std::string>& args, const fs::path& dir) {
+  std::string cmd = quote(std::string(CLOUDSVC_BIN_DIR) + "/cloudsvc");
+  for (const auto& a : args) cmd += " " + quote(a);
+  const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
+  cmd += " >" + quote(out.string()) + " 2>" + quote(err.string());
+  const int status = std::system(cmd.c_str());
+  RunResult r;
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  auto slurp = [](const fs::path& p) {
+    std::ifstream f(p);
+    return std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  };
+  r.out = slurp(out);
+  r.err = slurp(err);
+  return r;
+}
+
+class CliBinary : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("cloudsvc_cli_" + std::to_string(::getpid()) + "_" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  fs::path dir_;
+};
+
+TEST_F(CliBinary, BadInputGivesOneLineExitTwoAndNoFile) {
+  const std::string out = (dir_ / "view.png").string();
+  const std::string bad_json = (dir_ / "bad.json").string();
+  std::ofstream(bad_json) << "{\"layers\": [ {\"type\": \"cumulus\", ";
+  struct Case { std::vector<std::string> args; std::string flag; };
+  const std::vector<Case> cases = {
+      {{"--lat", "95"}, "--lat"},
+      {{"--lon", "400"}, "--lon"},
+      {{"--alt", "nan"}, "--alt"},
+      {{"--heading", "NaN"}, "--heading"},
+      {{"--alt", "-501"}, "--alt"},
+      {{"--size", "0x0"}, "--size"},
+      {{"--size", "8193x8193"}, "--size"},
+      {{"--weather", "hurricane"}, "--weather"},
+      {{"--time", "2026-13-01T00:00:00Z"}, "--time"},
+      {{"--weather", (dir_ / "missing.json").string()}, "missing.json"},
+      {{"--weather", bad_json}, "bad.json"},
+  };
+  for (const Case& c : cases) {
+    std::vector<std::string> args = {"render", "--size", "32x18", "--out", out};
+    args.insert(args.end(), c.args.begin(), c.args.end());
+    const RunResult r = run_cloudsvc(args, dir_);
+    EXPECT_EQ(r.exit_code, 2) << c.flag << ": " << r.err;
+    EXPECT_NE(r.err.find(c.flag), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line expected: " << r.err;
+    EXPECT_FALSE(fs::exists(out)) << c.flag;
+  }
+  const RunResult unwritable =
+      run_cloudsvc({"render", "--size", "32x18", "--out", (dir_ / "no" / "such" / "dir.png").string()}, dir_);
+  EXPECT_EQ(unwritable.exit_code, 2);
+  EXPECT_NE(unwritable.err.find("--out"), std::string::npos) << unwritable.err;
+}
+
+TEST_F(CliBinary, RenderWritesExrAndPngAndPrintsStats) {
+  const std::string exr = (dir_ / "view.exr").string(), png = (dir_ / "view.png").string();
+  const std::vector<std::string> pose = {"--lat", "47.45", "--lon", "8.56", "--alt", "2500", "--heading", "270",
+                                         "--pitch", "5", "--roll", "0", "--time", "2026-06-21T16:30:00Z",
+                                         "--fov", "60", "--size", "64x36", "--weather", "broken-cumulus"};
+  for (const std::string& out : {exr, png}) {
+    std::vector<std::string> args = {"render"};
+    args.insert(args.end(), pose.begin(), pose.end());
+    args.insert(args.end(), {"--out", out});
+    const RunResult r = run_cloudsvc(args, dir_);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("64x36"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("sun elevation"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("pixels with cloud"), std::string::npos) << r.out;
+    auto in = OIIO::ImageInput::open(out);
+    ASSERT_TRUE(in) << out;
+    EXPECT_EQ(in->spec().width, 64);
+    EXPECT_EQ(in->spec().height, 36);
+    EXPECT_EQ(in->spec().nchannels, 4);
+    if (out == exr) EXPECT_EQ(in->spec().format, OIIO::TypeDesc::HALF);
+    in->close();
+  }
+  // No temporary files left behind next to the outputs.
+  int files = 0;
+  for (const auto& e : fs::directory_iterator(dir_)) files += e.path().extension() == ".exr" || e.path().extension() == ".png";
+  EXPECT_EQ(files, 2);
+}
+
+TEST_F(CliBinary, HelpDocumentsUnits) {
+  const RunResult r = run_cloudsvc({"render", "--help"}, dir_);
+  EXPECT_EQ(r.exit_code, 0);
+  for (const char* flag : {"--lat", "--lon", "--alt", "--heading", "--pitch", "--roll", "--time", "--fov", "--size",
+                           "--weather", "--out", "--window"})
+    EXPECT_NE(r.out.find(flag), std::string::npos) << flag;
+  EXPECT_NE(r.out.find("ellipsoid"), std::string::npos);
+}
+
+// --window under a virtual X server, when xvfb-run is installed (scripts/install-deps.sh does).
+TEST_F(CliBinary, WindowModeRendersUnderXvfb) {
+  if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run not installed";
+  const std::string cmd = "xvfb-run -a " + quote(std::string(CLOUDSVC_BIN_DIR) + "/cloudsvc") +
+                          " render --window --window-frames 2 --size 64x36 --weather scattered-cumulus >" +
+                          quote((dir_ / "w.txt").string()) + " 2>&1";
+  const int status = std::system(cmd.c_str());
+  std::ifstream f(dir_ / "w.txt");
+  const std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  ASSERT_TRUE(WIFEXITED(status)) << text;
+  EXPECT_EQ(WEXITSTATUS(status), 0) << text;
+  EXPECT_NE(text.find("window: 2 frames"), std::string::npos) << text;
+}
+
+}  // namespace

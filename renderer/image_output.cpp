@@ -40,8 +40,9 @@ std::vector<std::uint8_t> tone_map_srgb8(const FrameImage& img, double exposure_
     }
   }
   const double key = count ? std::exp(log_sum / static_cast<double>(count)) : 1.0;
-  // 0.18 / key, but never brighter than 200x: a moonless night stays black, twilight dim.
-  const double exposure = std::clamp(0.18 / key, 0.5, 200.0) * std::exp2(exposure_ev);
+  // 0.18 / key, at most 5000: twilight (sky ~1e-5 W m^-2 sr^-1 nm^-1) stays visible and dim,
+  // a moonless night (airglow ~2e-9) stays black, as the eye would see it without adapting.
+  const double exposure = std::clamp(0.18 / key, 0.5, 5000.0) * std::exp2(exposure_ev);
   std::vector<std::uint8_t> out(n * 4);
   for (size_t i = 0; i < n; ++i) {
     for (int c = 0; c < 3; ++c) {

@@ -29,6 +29,9 @@ struct RenderQuality {
   double ms_a = 0.4;            // extinction scale per octave (a <= b for energy conservation)
   double ms_b = 0.5;            // energy scale per octave
   double ms_c = 0.6;            // phase eccentricity scale per octave
+  // Primary steps are uniform in ln(1 + t / t_ref): step length grows with distance t
+  // like the pixel footprint. 0 = uniform steps in t (the naive march).
+  double step_growth_ref_m = 1000.0;
   bool count_density_evaluations = true;
 };
 

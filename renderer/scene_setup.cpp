@@ -86,7 +86,7 @@ FrameUniforms make_frame_uniforms(const ViewRequest& view, const weather::Weathe
   u.quality = glm::vec4(static_cast<float>(quality.primary_steps), static_cast<float>(quality.light_steps),
                         static_cast<float>(quality.ms_octaves), static_cast<float>(quality.ground_shadow_steps));
   u.ms_params = glm::vec4(static_cast<float>(quality.ms_a), static_cast<float>(quality.ms_b),
-                          static_cast<float>(quality.ms_c), 0.0f);
+                          static_cast<float>(quality.ms_c), static_cast<float>(quality.step_growth_ref_m));
   // Aerial perspective reaches the farthest visible ground or cloud (hundreds of km).
   u.ap_params = glm::vec4(static_cast<float>(std::max(reach, 1000.0)), static_cast<float>(resources.weather_map_height),
                           0.0f, 0.0f);
@@ -111,7 +111,10 @@ FrameUniforms make_frame_uniforms(const ViewRequest& view, const weather::Weathe
     // rotated ECEF position is wrapped per period in double, the GPU adds rot * p.
     const WindAnchor& anchor = wind_anchor ? *wind_anchor : WindAnchor{pos, view.unix_time_s};
     const glm::dmat3 rot = wind_rotation(l.wind, anchor, view.unix_time_s);
-    const glm::dvec3 cam_field = rot * cam_ecef;
+    // Noise space: world positions with altitude scaled by k along the ellipsoid normal,
+    // f(X) = X + (k - 1) a(X) n(X), a fixed map of the world (no camera dependence).
+    const glm::dvec3 cam_normal = enu_to_ecef[2];
+    const glm::dvec3 cam_field = rot * (cam_ecef + (tr.noise_vertical_scale - 1.0) * h * cam_normal);
     CloudLayerGpu& g = u.layers[i];
     g.altitude = glm::vec4(static_cast<float>(l.base_m), static_cast<float>(l.top_m), static_cast<float>(l.coverage),
                            static_cast<float>(l.density_scale));
@@ -119,7 +122,8 @@ FrameUniforms make_frame_uniforms(const ViewRequest& view, const weather::Weathe
                          static_cast<float>(ph.g_hg), static_cast<float>(ph.g_d), static_cast<float>(ph.alpha));
     g.optics2 = glm::vec4(static_cast<float>(ph.w_d), static_cast<float>(1.0 / base_period),
                           static_cast<float>(1.0 / detail_period), tr.profile.base_erosion);
-    g.profile = glm::vec4(tr.profile.bottom_ramp, tr.profile.top_ramp, tr.profile.top_weight, tr.stratiform ? 1.0f : 0.0f);
+    g.profile = glm::vec4(tr.profile.bottom_ramp, tr.profile.top_ramp, tr.profile.top_weight,
+                          static_cast<float>(tr.noise_vertical_scale));
     g.base_offset = wrapped_offset(cam_field, base_period);
     g.detail_offset = wrapped_offset(cam_field, detail_period);
     g.noise_rotation = glm::mat4(glm::mat3(rot * enu_to_ecef));

@@ -10,6 +10,7 @@ PACKAGES=(
   libopenimageio-dev openimageio-tools
   libgtest-dev libgmock-dev
   libcli11-dev nlohmann-json3-dev libspdlog-dev libfmt-dev
+  libflatbuffers-dev flatbuffers-compiler libasio-dev
   xvfb xauth
 )
 

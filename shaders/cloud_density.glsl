@@ -70,7 +70,10 @@ float cloud_extinction(int li, vec3 p, float alt, bool detail, out float coverag
   float depth_fraction = clamp(0.5 + w.g, 0.3, 1.0);
   float profile = height_profile(L.profile, f / depth_fraction) * step(f, depth_fraction);
   if (profile <= 0.0) return 0.0;
-  vec3 p_field = mat3(L.noise_rotation) * p;  // camera-relative, in the field's axes
+  // Noise space f(X) = X + (k - 1) a(X) n(X): altitude a scaled by k along the local up
+  // n, a fixed map of the world; camera-relative: f(X) - f(X_cam) = p + (k - 1)(a n - h n_cam).
+  vec3 p_stretched = p + (L.profile.w - 1.0) * (alt * up_at(p, U.planet.x, U.planet.y) - vec3(0.0, 0.0, U.planet.y));
+  vec3 p_field = mat3(L.noise_rotation) * p_stretched;  // in the wind-rotated field's axes
   float shape = textureLod(base_noise, p_field * L.optics2.y + L.base_offset.xyz, 0.0).r;
   // Coverage threshold: the shape exceeds Q(1 - c) over a fraction c of the area (at
   // mid-profile), with a soft edge; full cover (c = 1) keeps nearly all of the shape.

@@ -7,7 +7,7 @@ struct CloudLayerGpu {
   vec4 altitude;       // x base (m), y top (m), z coverage [0,1], w density scale
   vec4 optics;         // x sigma_t max (1/m), y g_HG, z g_D, w Draine alpha
   vec4 optics2;        // x w_D, y 1/base noise period (1/m), z 1/detail period (1/m), w detail erosion
-  vec4 profile;        // x bottom ramp, y top ramp, z top weight, w stratiform flag
+  vec4 profile;        // x bottom ramp, y top ramp, z top weight, w noise vertical scale k
   vec4 base_offset;    // xyz offset of the base noise in tile units (ECEF axes), wrapped
   vec4 detail_offset;  // xyz offset of the detail noise in tile units, wrapped
   mat4 noise_rotation; // upper 3x3: local ENU -> ECEF axes of the wind-rotated field (renderer/wind_drift.h)
@@ -24,7 +24,7 @@ layout(std140, binding = 0) uniform FrameUniforms {
   vec4 sun_irradiance;     // rgb solar spectral irradiance at the top of the atmosphere (W m^-2 nm^-1)
   vec4 ground_albedo;      // rgb diffuse albedo of the ground; w night-sky radiance (W m^-2 sr^-1 nm^-1)
   vec4 quality;            // x primary steps, y light steps, z multiple-scattering octaves, w ground-shadow steps per layer
-  vec4 ms_params;          // x a (extinction scale per octave), y b (energy per octave), z c (eccentricity per octave)
+  vec4 ms_params;          // x a (extinction scale per octave), y b (energy per octave), z c (eccentricity per octave), w t_ref of the step distribution (m; 0 = uniform)
   vec4 ap_params;          // x aerial-perspective max distance (m), y weather map height (texels), z,w unused
   ivec4 counts;            // x layer count, y frame index, z count density evaluations (0/1)
   vec4 noise_quantiles[4]; // base shape noise value below which a fraction i/15 of texels lie, i = 0..15

@@ -33,6 +33,10 @@ float slab_diffuse_transmittance(float tau) { return 1.0 / (1.0 + 0.75 * (1.0 - 
 
 struct Interval { float t0; float t1; int layer; };
 
+// March coordinate u(t) = ln(1 + t / t_ref) (or t itself when t_ref = 0) and its inverse.
+float march_coordinate(float t, float t_ref) { return t_ref > 0.0 ? log(1.0 + t / t_ref) : t; }
+float march_distance(float u, float t_ref) { return t_ref > 0.0 ? t_ref * (exp(u) - 1.0) : u; }
+
 // The part of the ray inside layer li, as up to two intervals [entry, exit] clipped to
 // [0, t_limit]: inside the top sphere and outside the base sphere.
 int layer_intervals(int li, float mu, float t_limit, out Interval a, out Interval b) {
@@ -154,14 +158,18 @@ void main() {
   float t_limit = min(t_ground, U.planet.w);
 
   // ---- cloud intervals along the ray, sorted by distance
+  // Steps are uniform in u = ln(t + t_ref) when t_ref = ms_params.w > 0 (step length
+  // grows in proportion to distance, like the pixel footprint: fine near the camera,
+  // coarse far away), and uniform in t when t_ref = 0 (the naive march).
+  float t_ref = U.ms_params.w;
   Interval iv[MAX_INTERVALS];
   int n_iv = 0;
-  float total_len = 0.0;
+  float total_len = 0.0;  // in u (or t) units
   for (int li = 0; li < U.counts.x; ++li) {
     Interval a, b;
     int n = layer_intervals(li, mu, t_limit, a, b);
-    if (n >= 1) { iv[n_iv++] = a; total_len += a.t1 - a.t0; }
-    if (n == 2) { iv[n_iv++] = b; total_len += b.t1 - b.t0; }
+    if (n >= 1) { iv[n_iv++] = a; total_len += march_coordinate(a.t1, t_ref) - march_coordinate(a.t0, t_ref); }
+    if (n == 2) { iv[n_iv++] = b; total_len += march_coordinate(b.t1, t_ref) - march_coordinate(b.t0, t_ref); }
   }
   for (int i = 1; i < n_iv; ++i) {  // insertion sort
     Interval x = iv[i];
@@ -176,15 +184,19 @@ void main() {
   float depth_acc = 0.0;
   if (n_iv > 0) {
     float jitter = hash12(uvec2(px) + uvec2(U.counts.y * 7919, U.counts.y * 104729));
-    float nominal_dt = max(total_len / U.quality.x, 1.0);
+    float nominal_du = total_len / U.quality.x;
     for (int k = 0; k < n_iv && T > CLOUD_T_EPS; ++k) {
       int li = iv[k].layer;
       CloudLayerGpu L = U.layers[li];
-      float len = iv[k].t1 - iv[k].t0;
-      int steps = max(1, int(ceil(len / nominal_dt)));
-      float dt = len / float(steps);
+      float u0 = march_coordinate(iv[k].t0, t_ref), u1 = march_coordinate(iv[k].t1, t_ref);
+      int steps = max(1, int(ceil((u1 - u0) / max(nominal_du, 1e-6))));
+      float du = (u1 - u0) / float(steps);
       for (int s = 0; s < steps && T > CLOUD_T_EPS; ++s) {
-        float t = iv[k].t0 + (float(s) + jitter) * dt;
+        // step [ta, tb] around the jittered sample t
+        float ta = march_distance(u0 + float(s) * du, t_ref);
+        float tb = march_distance(u0 + float(s + 1) * du, t_ref);
+        float t = march_distance(u0 + (float(s) + jitter) * du, t_ref);
+        float dt = tb - ta;
         vec3 p = t * dir;
         float alt = altitude_of(p, R, h);
         float coverage;

@@ -71,9 +71,10 @@ TEST(CloudTypeTraits, PhysicallyOrdered) {
   // Cumulus: flat base, rounded top.
   EXPECT_LT(cu.profile.bottom_ramp, cu.profile.top_ramp);
   EXPECT_FALSE(cu.stratiform);
-  // Cumulonimbus: deep, anvil, large droplets.
+  // Cumulonimbus: deep, towering (noise stretched vertically more than cumulus), large droplets.
   EXPECT_GE(cb.default_top_m, 10000.0);
-  EXPECT_GT(cb.profile.top_weight, 0.0f);
+  EXPECT_LT(cb.noise_vertical_scale, cu.noise_vertical_scale);
+  EXPECT_LT(cu.noise_vertical_scale, st.noise_vertical_scale);
   EXPECT_GT(cb.default_droplet_diameter_um, cu.default_droplet_diameter_um);
   // Ice clouds: high and optically thin.
   for (CloudType t : {CloudType::Cirrus, CloudType::Cirrostratus, CloudType::Cirrocumulus}) {

@@ -46,7 +46,7 @@ constexpr std::array<TypeEntry, 11> kTypes = {{
 
 CloudTypeTraits make_traits(HeightProfile profile, double base_m, double top_m,
                             double droplet_um, double density_scale, double noise_scale_m,
-                            bool stratiform) {
+                            bool stratiform, double noise_vertical_scale = 1.0) {
   CloudTypeTraits t;
   t.profile = profile;
   t.default_base_m = base_m;
@@ -55,6 +55,7 @@ CloudTypeTraits make_traits(HeightProfile profile, double base_m, double top_m,
   t.default_density_scale = density_scale;
   t.noise_scale_m = noise_scale_m;
   t.stratiform = stratiform;
+  t.noise_vertical_scale = noise_vertical_scale;
   return t;
 }
 
@@ -85,14 +86,16 @@ const std::array<CloudTypeTraits, 11>& traits_table() {
       make_traits({0.2f, 0.4f, 0.0f, 0.9f}, 9000, 10000, 50, 0.0005, 40000, true),
       // Cumulonimbus: convective tower from a low base (~1 km) to the tropopause
       // (~12 km); large droplets (d ~30 um) and high LWC (~1.5 g/m^3) -> 1.5 / 4.24 = 0.35
-      // (sigma_t 0.15 /m). Sharp base, short top ramp under the flat anvil top;
-      // top_weight > 0 makes density grow with height so the anvil spreads. Long period:
-      // storm cells are 10-20 km across.
-      make_traits({0.03f, 0.1f, 0.6f, 0.4f}, 1000, 12000, 30, 0.35, 40000, false),
+      // (sigma_t 0.15 /m). Sharp base, short top ramp under the flat top. Dense from base
+      // to top (a profile growing with height, thresholded by coverage, left only
+      // floating upper blobs). Shape noise stretched 2x vertically for towers; period
+      // 24 km: cells ~6 km across.
+      make_traits({0.03f, 0.1f, 0.0f, 0.5f}, 1000, 12000, 30, 0.35, 24000, false, 0.5),
       // Cumulus: fair-weather convective cloud, base ~1-1.5 km, 1-2 km deep. Flat base
       // (small bottom ramp), rounded top (large top ramp); d ~20 um, LWC ~0.5 g/m^3 ->
       // 0.5 / 1.26 = 0.40. Cells ~1-2 km.
-      make_traits({0.05f, 0.6f, 0.0f, 0.6f}, 1200, 2600, 20, 0.40, 8000, false),
+      // Shape noise stretched 1.5x vertically: cells are about as tall as wide.
+      make_traits({0.05f, 0.6f, 0.0f, 0.6f}, 1200, 2600, 20, 0.40, 8000, false, 1.0 / 1.5),
       // Nimbostratus: thick (2-5 km) precipitating grey layer from a low base; d ~18 um,
       // LWC ~0.5 g/m^3 -> 0.5 / 0.92 = 0.55. Nearly uniform, little erosion.
       make_traits({0.1f, 0.2f, 0.0f, 0.15f}, 600, 4000, 18, 0.55, 30000, true),

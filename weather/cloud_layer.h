@@ -58,6 +58,9 @@ struct CloudTypeTraits {
   double default_droplet_diameter_um = 20.0;
   double default_density_scale = 1.0;
   double noise_scale_m = 8000.0;  // horizontal period of the base shape noise, m
+  // Vertical frequency of the shape noise relative to the horizontal one: 1 = isotropic,
+  // < 1 stretches features upwards (convective towers), > 1 flattens them (sheets).
+  double noise_vertical_scale = 1.0;
   bool stratiform = false;
 };
 const CloudTypeTraits& cloud_type_traits(CloudType t);

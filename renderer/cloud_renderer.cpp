@@ -40,16 +40,36 @@ CloudRenderer::CloudRenderer(const RendererConfig& config)
   set_weather(weather::Weather{});
 }
 
-void CloudRenderer::upload_weather_map(std::uint32_t seed) {
-  const weather::WeatherMap m =
-      weather::generate_procedural_map(seed, config_.weather_map_width, config_.weather_map_height);
-  weather_map_ = gl::make_texture_2d(GL_RGBA32F, m.width, m.height, GL_REPEAT, GL_CLAMP_TO_EDGE);
-  glTextureSubImage2D(weather_map_.id(), 0, 0, 0, m.width, m.height, GL_RGBA, GL_FLOAT, m.rgba.data());
-  m.pole_value(false, facts_.weather_pole_south.data());
-  m.pole_value(true, facts_.weather_pole_north.data());
-  facts_.weather_map_height = m.height;
-  map_seed_ = seed;
-  map_valid_ = true;
+// Uploads the keyframes around utc_s (only those that changed) and sets the blend weight
+// and the blended pole values.
+void CloudRenderer::update_weather_textures(double utc_s) {
+  const weather::WeatherTimeline::Blend b = timeline_.at(utc_s);
+  const weather::WeatherMap* maps[2] = {b.from, b.to};
+  const std::uint64_t versions[2] = {b.from_version, b.to_version};
+  for (int k = 0; k < 2; ++k) {
+    if (uploaded_version_[k] == versions[k] && weather_maps_[k]) continue;
+    const weather::WeatherMap& m = *maps[k];
+    if (!weather_maps_[k]) weather_maps_[k] = gl::make_texture_2d(GL_RGBA32F, m.width, m.height, GL_REPEAT, GL_CLAMP_TO_EDGE);
+    glTextureSubImage2D(weather_maps_[k].id(), 0, 0, 0, m.width, m.height, GL_RGBA, GL_FLOAT, m.rgba.data());
+    uploaded_version_[k] = versions[k];
+  }
+  float south[2][4], north[2][4];
+  for (int k = 0; k < 2; ++k) {
+    maps[k]->pole_value(false, south[k]);
+    maps[k]->pole_value(true, north[k]);
+  }
+  for (int i = 0; i < 4; ++i) {
+    facts_.weather_pole_south[static_cast<size_t>(i)] = south[0][i] + b.weight * (south[1][i] - south[0][i]);
+    facts_.weather_pole_north[static_cast<size_t>(i)] = north[0][i] + b.weight * (north[1][i] - north[0][i]);
+  }
+  facts_.weather_map_height = b.from->height;
+  facts_.weather_blend = b.weight;
+}
+
+void CloudRenderer::apply_tile(const weather::MapTile& tile, double now_utc_s) {
+  const std::string problem = tile.problem();
+  if (!problem.empty()) throw std::invalid_argument("weather tile: " + problem);
+  timeline_.apply(tile, now_utc_s);
 }
 
 void CloudRenderer::set_weather(const weather::Weather& w) {
@@ -57,7 +77,11 @@ void CloudRenderer::set_weather(const weather::Weather& w) {
   if (!problem.empty()) throw std::invalid_argument("invalid weather: " + problem);
   weather_ = w;
   wind_anchor_.reset();
-  if (!map_valid_ || map_seed_ != w.map_seed) upload_weather_map(w.map_seed);
+  if (!map_valid_ || map_seed_ != w.map_seed) {
+    timeline_.reset(weather::generate_procedural_map(w.map_seed, config_.weather_map_width, config_.weather_map_height));
+    map_seed_ = w.map_seed;
+    map_valid_ = true;
+  }
 }
 
 void CloudRenderer::ensure_target(int w, int h) {
@@ -73,6 +97,7 @@ FrameImage CloudRenderer::render(const ViewRequest& view, const RenderQuality& q
   ensure_target(view.width, view.height);
 
   if (!wind_anchor_) wind_anchor_ = WindAnchor{view.position, view.unix_time_s};
+  update_weather_textures(view.unix_time_s);
   const FrameUniforms u = make_frame_uniforms(view, weather_, quality, facts_, &*wind_anchor_);
   glNamedBufferSubData(uniforms_.id(), 0, sizeof(FrameUniforms), &u);
   glBindBufferBase(GL_UNIFORM_BUFFER, 0, uniforms_.id());
@@ -86,7 +111,8 @@ FrameImage CloudRenderer::render(const ViewRequest& view, const RenderQuality& q
   atmosphere_.bind_for_scene();
   glBindTextureUnit(3, base_noise_.id());
   glBindTextureUnit(4, detail_noise_.id());
-  glBindTextureUnit(5, weather_map_.id());
+  glBindTextureUnit(5, weather_maps_[0].id());
+  glBindTextureUnit(9, weather_maps_[1].id());
   glBindImageTexture(0, target_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   dispatch_2d(view.width, view.height);
   glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);

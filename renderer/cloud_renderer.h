@@ -13,6 +13,7 @@
 #include "renderer/render_types.h"
 #include "renderer/scene_setup.h"
 #include "weather/cloud_layer.h"
+#include "weather/weather_timeline.h"
 
 namespace cloudsvc {
 
@@ -33,11 +34,16 @@ class CloudRenderer {
   void set_weather(const weather::Weather& w);
   const weather::Weather& weather() const { return weather_; }
 
+  // Streams a weather-map tile in (weather/weather_timeline.h): it fades in over time
+  // instead of popping. The tile must have no problem(); now_utc_s is the current time.
+  void apply_tile(const weather::MapTile& tile, double now_utc_s);
+  std::size_t weather_keyframes() const { return timeline_.keyframe_count(); }
+
   // Renders one view and reads it back (rows from the top).
   FrameImage render(const ViewRequest& view, const RenderQuality& quality = {});
 
  private:
-  void upload_weather_map(std::uint32_t seed);
+  void update_weather_textures(double utc_s);
   void ensure_target(int w, int h);
 
   RendererConfig config_;
@@ -48,7 +54,9 @@ class CloudRenderer {
   gl::ShaderProgram scene_prog_;
   ResourceFacts facts_{};
   std::optional<WindAnchor> wind_anchor_;  // latched at the first view after set_weather
-  gl::Texture base_noise_, detail_noise_, weather_map_, target_;
+  weather::WeatherTimeline timeline_;
+  std::uint64_t uploaded_version_[2] = {0, 0};  // keyframe versions in weather_maps_[0], [1]
+  gl::Texture base_noise_, detail_noise_, weather_maps_[2], target_;
   gl::Buffer uniforms_, counters_;
   int target_w_ = 0, target_h_ = 0;
 };

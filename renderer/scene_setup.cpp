@@ -89,7 +89,7 @@ FrameUniforms make_frame_uniforms(const ViewRequest& view, const weather::Weathe
                           static_cast<float>(quality.ms_c), static_cast<float>(quality.step_growth_ref_m));
   // Aerial perspective reaches the farthest visible ground or cloud (hundreds of km).
   u.ap_params = glm::vec4(static_cast<float>(std::max(reach, 1000.0)), static_cast<float>(resources.weather_map_height),
-                          0.0f, 0.0f);
+                          resources.weather_blend, 0.0f);
   const auto& ps = resources.weather_pole_south;
   const auto& pn = resources.weather_pole_north;
   u.weather_pole_south = glm::vec4(ps[0], ps[1], ps[2], ps[3]);

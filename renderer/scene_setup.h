@@ -34,6 +34,7 @@ struct ResourceFacts {
   std::array<float, 4> weather_pole_south{0.5f, 0.5f, 0.5f, 0.0f};
   std::array<float, 4> weather_pole_north{0.5f, 0.5f, 0.5f, 0.0f};
   int weather_map_height = 1;
+  float weather_blend = 0.0f;  // weight of the second weather keyframe (weather_timeline.h)
 };
 
 // wind_anchor: where/when the cloud field is undisplaced; nullptr anchors it at this view.

@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
     switch (cmd.kind) {
       case cloudsvc::ParsedCommand::Kind::Render: return cloudsvc::run_render(cmd.render);
       case cloudsvc::ParsedCommand::Kind::Demo: return cloudsvc::run_demo(cmd.demo);
+      case cloudsvc::ParsedCommand::Kind::Serve: return cloudsvc::run_serve(cmd.serve);
       case cloudsvc::ParsedCommand::Kind::None: break;
     }
   } catch (const std::exception& e) {

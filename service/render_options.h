@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "geodesy/geodetic.h"
+#include "service/serve_options.h"
 #include "weather/cloud_layer.h"
 
 namespace cloudsvc {
@@ -37,9 +38,10 @@ struct DemoOptions {
 // Result of parsing a command line. exit_code >= 0 means: stop and return it (help was
 // printed: 0; an error was printed to stderr: 2).
 struct ParsedCommand {
-  enum class Kind { None, Render, Demo } kind = Kind::None;
+  enum class Kind { None, Render, Demo, Serve } kind = Kind::None;
   RenderOptions render;
   DemoOptions demo;
+  ServeOptions serve;
   int exit_code = -1;
   std::string error;  // the one-line message printed, if exit_code == 2
 };

@@ -11,8 +11,7 @@
 #include "geodesy/geodetic.h"
 #include "geodesy/utc_time.h"
 #include "renderer/cloud_renderer.h"
-#include "renderer/gl/shader_program.h"
-#include "renderer/image_output.h"
+#include "service/window_presenter.h"
 
 namespace cloudsvc {
 
@@ -55,73 +54,42 @@ void key_callback(GLFWwindow* w, int key, int, int action, int mods) {
 }  // namespace
 
 int run_window(const RenderOptions& opt) {
-  if (!glfwInit()) {
-    throw std::runtime_error("--window: GLFW cannot initialise (no X display? set DISPLAY or run under xvfb-run -a)");
-  }
-  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
-  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
-  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-  glfwWindowHint(GLFW_RESIZABLE, GLFW_FALSE);
-  GLFWwindow* window = glfwCreateWindow(opt.width, opt.height, "cloudsvc", nullptr, nullptr);
-  if (!window) {
-    glfwTerminate();
-    throw std::runtime_error("--window: cannot create a 4.5 core OpenGL window");
-  }
-  glfwMakeContextCurrent(window);
+  WindowPresenter window(opt.width, opt.height, "cloudsvc");
   int rc = 0;
-  {
-    ViewerState state;
-    state.view.position = opt.position;
-    state.view.attitude = opt.attitude;
-    state.view.unix_time_s = opt.unix_time_s;
-    state.view.fov_deg = opt.fov_deg;
-    state.view.width = opt.width;
-    state.view.height = opt.height;
-    glfwSetWindowUserPointer(window, &state);
-    glfwSetKeyCallback(window, key_callback);
+  ViewerState state;
+  state.view.position = opt.position;
+  state.view.attitude = opt.attitude;
+  state.view.unix_time_s = opt.unix_time_s;
+  state.view.fov_deg = opt.fov_deg;
+  state.view.width = opt.width;
+  state.view.height = opt.height;
+  glfwSetWindowUserPointer(window.window(), &state);
+  glfwSetKeyCallback(window.window(), key_callback);
 
-    CloudRenderer renderer;
-    renderer.set_weather(opt.weather);
-    gl::ShaderProgram present = gl::ShaderProgram::graphics("present.vert", "present.frag");
-    gl::Texture shown = gl::make_texture_2d(GL_RGBA8, opt.width, opt.height, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE);
-    GLuint vao = 0;
-    glCreateVertexArrays(1, &vao);
-    int frames = 0;
-    std::printf("window: arrows turn/pitch, W/S move, PgUp/PgDn altitude, T/G time +-10 min, shift x10, Esc quits\n");
-    while (!glfwWindowShouldClose(window)) {
-      if (state.dirty) {
-        const FrameImage img = renderer.render(state.view);
-        if (img.stats.nonfinite_pixels != 0) rc = 1;
-        const std::vector<std::uint8_t> px = tone_map_srgb8(img, opt.exposure_ev);
-        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-        glTextureSubImage2D(shown.id(), 0, 0, 0, img.width, img.height, GL_RGBA, GL_UNSIGNED_BYTE, px.data());
-        char title[256];
-        std::snprintf(title, sizeof title, "cloudsvc  %.4f %.4f %.0f m  hdg %.0f pitch %.0f  %s  %.0f ms",
-                      state.view.position.lat_deg, state.view.position.lon_deg, state.view.position.alt_m,
-                      state.view.attitude.heading_deg, state.view.attitude.pitch_deg,
-                      geo::format_utc_iso8601(state.view.unix_time_s).c_str(), img.stats.render_ms);
-        glfwSetWindowTitle(window, title);
-        state.dirty = false;
-        ++frames;
-      }
-      int fw = 0, fh = 0;
-      glfwGetFramebufferSize(window, &fw, &fh);
-      glBindFramebuffer(GL_FRAMEBUFFER, 0);
-      glViewport(0, 0, fw, fh);
-      present.use();
-      glBindTextureUnit(0, shown.id());
-      glBindVertexArray(vao);
-      glDrawArrays(GL_TRIANGLES, 0, 3);
-      glfwSwapBuffers(window);
-      if (opt.window_frames > 0 && frames >= opt.window_frames) break;
-      glfwWaitEventsTimeout(0.05);
-      if (opt.window_frames > 0) state.dirty = true;  // scripted runs redraw every loop
+  CloudRenderer renderer;
+  renderer.set_weather(opt.weather);
+  int frames = 0;
+  std::printf("window: arrows turn/pitch, W/S move, PgUp/PgDn altitude, T/G time +-10 min, shift x10, Esc quits\n");
+  while (!window.close_requested()) {
+    if (state.dirty) {
+      const FrameImage img = renderer.render(state.view);
+      if (img.stats.nonfinite_pixels != 0) rc = 1;
+      window.present(img, opt.exposure_ev);
+      char title[256];
+      std::snprintf(title, sizeof title, "cloudsvc  %.4f %.4f %.0f m  hdg %.0f pitch %.0f  %s  %.0f ms",
+                    state.view.position.lat_deg, state.view.position.lon_deg, state.view.position.alt_m,
+                    state.view.attitude.heading_deg, state.view.attitude.pitch_deg,
+                    geo::format_utc_iso8601(state.view.unix_time_s).c_str(), img.stats.render_ms);
+      window.set_title(title);
+      state.dirty = false;
+      ++frames;
     }
-    glDeleteVertexArrays(1, &vao);
-    std::printf("window: %d frames\n", frames);
+    if (opt.window_frames > 0 && frames >= opt.window_frames) break;
+    glfwWaitEventsTimeout(0.05);
+    window.poll();
+    if (opt.window_frames > 0) state.dirty = true;  // scripted runs redraw every loop
   }
-  glfwDestroyWindow(window);
-  glfwTerminate();
+  std::printf("window: %d frames\n", frames);
   return rc;
 }
 

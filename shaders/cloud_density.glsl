@@ -5,7 +5,8 @@
 
 layout(binding = 3) uniform sampler3D base_noise;    // 128^3, tiles (REPEAT)
 layout(binding = 4) uniform sampler3D detail_noise;  // 32^3, tiles (REPEAT)
-layout(binding = 5) uniform sampler2D weather_map;   // equirectangular lat/lon, REPEAT in lon
+layout(binding = 5) uniform sampler2D weather_map;       // equirectangular lat/lon, REPEAT in lon
+layout(binding = 9) uniform sampler2D weather_map_next;  // the next keyframe, blended by U.ap_params.z
 
 uint g_density_evals = 0u;  // per-invocation count of density evaluations
 
@@ -17,7 +18,7 @@ vec4 weather_at(vec3 p) {
   float lat = atan(q.z, length(q.xy));
   float lon = atan(q.y, q.x);
   vec2 uv = vec2(lon * (0.5 / PI) + 0.5, lat / PI + 0.5);
-  vec4 w = textureLod(weather_map, uv, 0.0);
+  vec4 w = mix(textureLod(weather_map, uv, 0.0), textureLod(weather_map_next, uv, 0.0), U.ap_params.z);
   // Within half a texel row of a pole, blend to the pole's value (as WeatherMap::sample
   // does): every longitude meets at the same value, no pinwheel at the pole.
   float y = uv.y * U.ap_params.y - 0.5;

@@ -1,0 +1,64 @@
+// A double-precision transcription of what the GPU cloud march (shaders/scene.comp)
+// computes for a homogeneous plane-parallel slab: the "model of the model" that the
+// Monte Carlo slab (slab_monte_carlo.h) is compared against. It is deliberately literal:
+// every step cites the shader line it mirrors, and nothing here is tuned.
+//
+// Scene: flat slab base z = 0, top z = H (the shader's shells, with the planet radius
+// taken to infinity), sigma = sigma_t everywhere inside (coverage 1, density scale 1,
+// density modulation 1, no noise), sun irradiance E_sun = 1 (normal to the beam),
+// atmosphere transmittance T_atm = 1, sky irradiance E_sky = 0, ground albedo 0 (sun
+// only), no aerial perspective. A camera above the slab looking down sees the reflected
+// radiance; below looking up, the transmitted radiance. The result is the cloud term C
+// of scene.comp:209 (the background T · L_bg is excluded: it holds the direct sun, which
+// the Monte Carlo radiances exclude as well). Units: L / E_sun in sr^-1.
+#pragma once
+
+#include "renderer/model/slab_monte_carlo.h"
+#include "renderer/render_types.h"
+
+namespace cloudsvc::model {
+
+struct SlabRendererModelOptions {
+  // RenderQuality defaults (renderer/render_types.h), as the shader receives them in
+  // U.quality and U.ms_params (renderer/scene_setup.cpp:86-89).
+  int primary_steps = RenderQuality{}.primary_steps;  // U.quality.x
+  int light_steps = RenderQuality{}.light_steps;      // U.quality.y
+  int ms_octaves = RenderQuality{}.ms_octaves;        // U.quality.z
+  double ms_a = RenderQuality{}.ms_a;                 // U.ms_params.x, extinction per octave
+  double ms_b = RenderQuality{}.ms_b;                 // U.ms_params.y, energy per octave
+  double ms_c = RenderQuality{}.ms_c;                 // U.ms_params.z, eccentricity per octave
+  double min_step_m = 1.0;                            // scene.comp:179, max(total_len / N, 1 m)
+  bool cap_light_march = true;                        // scene.comp:66, len <= LIGHT_MAX_DIST
+  double light_max_dist_m = 4000.0;                   // scene.comp:27
+  bool diffuse = true;                                // scene.comp:207, diffuse_inscatter
+  double mean_cosine = 0.86;                          // scene.comp:28, MEAN_COSINE
+  double cloud_t_eps = 1e-3;                          // scene.comp:26, early exit
+  // The shader jitters the sample within each step per pixel (scene.comp:178,187). The
+  // model averages over jitter_samples stratified jitters (j + 0.5) / n, i.e. the
+  // expected pixel value; 1 = the step midpoint.
+  int jitter_samples = 1;
+};
+
+// Options for a converged march of the same light model: many primary steps, so the
+// difference to the Monte Carlo is the lighting approximation, not the step size.
+SlabRendererModelOptions converged_renderer_model_options();
+
+struct SlabRendererModelResult {
+  double radiance = 0.0;          // C / E_sun, sr^-1 (sun octaves + diffuse)
+  double radiance_sun = 0.0;      // the octave (L_sun) part
+  double radiance_diffuse = 0.0;  // the diffuse_inscatter part
+  double transmittance = 1.0;     // T along the view ray at the end of the march
+};
+
+// Radiance of the slab in the view direction v (ViewDirection of slab_monte_carlo.h: the
+// travel direction of the light leaving the top if `top`, else the bottom).
+SlabRendererModelResult slab_renderer_model_radiance(const SlabSpec& slab, const ViewDirection& v, bool top,
+                                                     const SlabRendererModelOptions& options = {});
+
+// Sun part pieces, exposed for tests: the light-march optical depth from height z (m) to
+// the slab top towards a sun with cosine mu_s (scene.comp:60-78), and the diffuse
+// in-scatter per unit scattering (scene.comp:110-125) in sr^-1.
+double slab_light_optical_depth(const SlabSpec& slab, double z, const SlabRendererModelOptions& options);
+double slab_diffuse_inscatter(const SlabSpec& slab, double z, const SlabRendererModelOptions& options);
+
+}  // namespace cloudsvc::model

@@ -1,0 +1,41 @@
+// Options of `cloudsvc serve`: the long-running image generator (docs/CLI.md,
+// docs/PROTOCOL.md). Parsed and validated by parse_command_line (render_options.h).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "weather/cloud_layer.h"
+
+namespace cloudsvc {
+
+// One --listen address: "tcp://HOST:PORT" (HOST an IPv4/IPv6 literal or "localhost";
+// IPv6 in brackets, e.g. tcp://[::1]:7420) or "unix:PATH" (a Unix stream socket path).
+struct ListenAddress {
+  enum class Kind { Tcp, Unix } kind = Kind::Tcp;
+  std::string host = "127.0.0.1";  // Tcp: numeric address ("localhost" resolved to 127.0.0.1)
+  std::uint16_t port = 7420;       // Tcp: 1..65535
+  std::string path;                // Unix: socket file path (at most 107 bytes)
+  std::string text;                // as given, for logs
+};
+
+struct ServeOptions {
+  std::vector<ListenAddress> listen;  // --listen, repeatable; default tcp://127.0.0.1:7420 (loopback only)
+  std::string shm_name;               // --shm NAME: shared-memory frame ring "/NAME"; empty = none
+  int shm_max_width = 1920;           // --shm-max-size WxH: largest frame the ring holds
+  int shm_max_height = 1080;
+  bool window = false;                // --window: show frames in a GLFW window
+  std::string out_dir;                // --out-dir DIR: write every frame there (PNG); empty = no file sink
+  std::string weather_arg = "broken-cumulus";  // --weather PRESET|FILE.json: weather at start
+  weather::Weather weather;                    // resolved
+  std::string time_text;              // --time UTC ISO 8601 used until a client sends time; default: now
+  double unix_time_s = 0.0;           // resolved (now when --time is absent)
+  int width = 640;                    // --size WxH: initial view until a client sends SetView
+  int height = 360;
+  double fov_deg = 60.0;              // --fov: initial horizontal field of view, (0, 170]
+  int max_clients = 16;               // --max-clients 1..1024
+  int exit_after_frames = 0;          // --exit-after-frames N: stop after N frames (tests, benchmarks); 0 = run until signalled
+};
+
+}  // namespace cloudsvc

@@ -1,0 +1,36 @@
+// C ABI wrapper of ShmFrameReader (sim_client/cloudsvc_shm.h).
+#include "sim_client/cloudsvc_shm.h"
+
+#include <cstdio>
+#include <cstring>
+#include <exception>
+
+#include "sim_client/shm_frame_reader.h"
+
+struct cloudsvc_shm_reader {
+  cloudsvc::client::ShmFrameReader reader;
+  cloudsvc::client::ShmFrame frame;
+  explicit cloudsvc_shm_reader(const char* name) : reader(name) {}
+};
+
+extern "C" cloudsvc_shm_reader* cloudsvc_shm_open(const char* name, char* error, size_t error_size) {
+  try {
+    if (!name) throw std::invalid_argument("name is NULL");
+    return new cloudsvc_shm_reader(name);
+  } catch (const std::exception& e) {
+    if (error && error_size) std::snprintf(error, error_size, "%s", e.what());
+    return nullptr;
+  }
+}
+
+extern "C" int cloudsvc_shm_read_latest(cloudsvc_shm_reader* r, uint64_t after_frame, cloudsvc_shm_slot* info,
+                                        void* pixels, size_t capacity) {
+  if (!r || !info) return -2;
+  if (!r->reader.read_latest(after_frame, r->frame)) return 0;
+  *info = r->frame.info;
+  if (!pixels || capacity < r->frame.pixels.size()) return -1;
+  std::memcpy(pixels, r->frame.pixels.data(), r->frame.pixels.size());
+  return 1;
+}
+
+extern "C" void cloudsvc_shm_close(cloudsvc_shm_reader* r) { delete r; }

@@ -1,0 +1,112 @@
+#include "weather/weather_timeline.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <limits>
+
+namespace cloudsvc::weather {
+
+std::string MapTile::problem() const {
+  if (!(std::isfinite(lat_min_deg) && std::isfinite(lat_max_deg) && std::isfinite(lon_min_deg) && std::isfinite(lon_max_deg)))
+    return "tile bounds are not finite";
+  if (lat_min_deg < -90.0 || lat_max_deg > 90.0 || lat_min_deg >= lat_max_deg) return "tile latitudes must satisfy -90 <= lat_min < lat_max <= 90";
+  if (lon_min_deg < -180.0 || lon_min_deg >= 180.0 || lon_max_deg <= lon_min_deg || lon_max_deg > lon_min_deg + 360.0)
+    return "tile longitudes must satisfy -180 <= lon_min < 180 and lon_min < lon_max <= lon_min + 360";
+  if (width < 1 || height < 1 || width > 4096 || height > 4096) return "tile size must be 1..4096 texels per side";
+  if (channels == 0 || channels > 0x0f) return "tile channels must be a non-empty subset of bits 0-3";
+  const std::size_t n = static_cast<std::size_t>(width) * height * static_cast<std::size_t>(std::popcount(channels));
+  if (data.size() != n) return "tile data has " + std::to_string(data.size()) + " values, expected " + std::to_string(n);
+  for (float v : data)
+    if (!std::isfinite(v) || v < 0.0f || v > 1.0f) return "tile values must be finite and in [0, 1]";
+  if (!std::isfinite(valid_at_utc_s)) return "tile valid-at time is not finite";
+  return {};
+}
+
+void apply_tile(WeatherMap& map, const MapTile& t) {
+  if (map.width <= 0 || map.height <= 0) return;
+  const int nch = std::popcount(t.channels);
+  int slot[4];  // map channel -> index within the tile's texel, or -1
+  for (int k = 0, i = 0; k < 4; ++k) slot[k] = (t.channels >> k) & 1u ? i++ : -1;
+  const double dlat = (t.lat_max_deg - t.lat_min_deg) / t.height;
+  const double dlon = (t.lon_max_deg - t.lon_min_deg) / t.width;
+  auto tile_value = [&](int col, int row, int s) {
+    col = std::clamp(col, 0, t.width - 1);
+    row = std::clamp(row, 0, t.height - 1);
+    return t.data[(static_cast<std::size_t>(row) * t.width + col) * nch + s];
+  };
+  for (int j = 0; j < map.height; ++j) {
+    const double lat = -90.0 + (j + 0.5) * 180.0 / map.height;
+    if (lat < t.lat_min_deg || lat > t.lat_max_deg) continue;
+    const double y = (lat - t.lat_min_deg) / dlat - 0.5;
+    const int r0 = static_cast<int>(std::floor(y));
+    const double fy = y - r0;
+    for (int i = 0; i < map.width; ++i) {
+      double lon = -180.0 + (i + 0.5) * 360.0 / map.width;
+      if (lon < t.lon_min_deg) lon += 360.0;  // tiles crossing the antimeridian
+      if (lon < t.lon_min_deg || lon > t.lon_max_deg) continue;
+      const double x = (lon - t.lon_min_deg) / dlon - 0.5;
+      const int c0 = static_cast<int>(std::floor(x));
+      const double fx = x - c0;
+      float* px = &map.rgba[(static_cast<std::size_t>(j) * map.width + i) * 4];
+      for (int k = 0; k < 4; ++k) {
+        if (slot[k] < 0) continue;
+        const double a = tile_value(c0, r0, slot[k]) * (1 - fx) + tile_value(c0 + 1, r0, slot[k]) * fx;
+        const double b = tile_value(c0, r0 + 1, slot[k]) * (1 - fx) + tile_value(c0 + 1, r0 + 1, slot[k]) * fx;
+        px[k] = static_cast<float>(a * (1 - fy) + b * fy);
+      }
+    }
+  }
+}
+
+WeatherTimeline::WeatherTimeline(WeatherMap base) { reset(std::move(base)); }
+
+void WeatherTimeline::reset(WeatherMap base) {
+  frames_.clear();
+  frames_[-std::numeric_limits<double>::infinity()] = Keyframe{std::move(base), next_version_++};
+}
+
+void WeatherTimeline::apply(const MapTile& tile, double now_utc_s, double transition_s) {
+  const double when = tile.valid_at_utc_s > now_utc_s ? tile.valid_at_utc_s : now_utc_s + transition_s;
+  auto it = frames_.find(when);
+  if (it == frames_.end()) {
+    if (frames_.size() >= kMaxKeyframes) {  // merge into the farthest keyframe instead
+      it = std::prev(frames_.end());
+    } else {
+      auto before = std::prev(frames_.upper_bound(when));
+      it = frames_.emplace(when, Keyframe{before->second.map, 0}).first;
+    }
+  }
+  apply_tile(it->second.map, tile);
+  it->second.version = next_version_++;
+  // Later keyframes inherit the change where they do not have their own data: apply
+  // the tile to them too, so a forecast for later is not undone by an older keyframe.
+  for (auto later = std::next(it); later != frames_.end(); ++later) {
+    apply_tile(later->second.map, tile);
+    later->second.version = next_version_++;
+  }
+}
+
+WeatherTimeline::Blend WeatherTimeline::at(double t) {
+  // Drop keyframes before the one in use.
+  auto cur = std::prev(frames_.upper_bound(t));
+  frames_.erase(frames_.begin(), cur);
+  Blend b;
+  b.from = &cur->second.map;
+  b.from_version = cur->second.version;
+  auto next = std::next(cur);
+  if (next == frames_.end()) {
+    b.to = b.from;
+    b.to_version = b.from_version;
+    return b;
+  }
+  b.to = &next->second.map;
+  b.to_version = next->second.version;
+  // Linear in time between the two valid-at times; the base keyframe (valid since
+  // forever) fades over the transition before the next one.
+  const double span = std::isfinite(cur->first) ? next->first - cur->first : kDefaultTransition_s;
+  b.weight = static_cast<float>(std::clamp(1.0 - (next->first - t) / span, 0.0, 1.0));
+  return b;
+}
+
+}  // namespace cloudsvc::weather

@@ -1,0 +1,71 @@
+// Streamed weather-map updates over time (DESIGN.md §3). The global map is a set of
+// keyframes, each a full WeatherMap valid at a UTC time; the renderer blends the two
+// keyframes around the current time, so a new forecast fades in instead of popping.
+//
+// A tile (a georeferenced patch of some channels) updates the keyframe at its valid-at
+// time; a missing keyframe is created as a copy of the latest one before it. A tile valid
+// at or before "now" would pop, so it goes into a keyframe at now + transition instead.
+// Keyframes older than the one in use are dropped; at most kMaxKeyframes are kept (the
+// farthest future ones are merged into the last).
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "weather/weather_map.h"
+
+namespace cloudsvc::weather {
+
+// Channel bits of a tile: bit 0 coverage (R), 1 vertical development (G), 2 density (B),
+// 3 precipitation (A). Values are interleaved per texel in ascending bit order.
+struct MapTile {
+  double lat_min_deg = 0.0, lon_min_deg = 0.0;  // south-west corner
+  double lat_max_deg = 0.0, lon_max_deg = 0.0;  // north-east corner; lon_max may exceed 180 (wraps)
+  int width = 0, height = 0;                    // texels; row 0 at the south
+  std::uint8_t channels = 0;
+  double valid_at_utc_s = 0.0;
+  std::vector<float> data;  // height * width * popcount(channels)
+
+  // One line describing what is wrong, empty when the tile is usable.
+  std::string problem() const;
+};
+
+// Writes the tile's channels into `map` at every map texel whose centre lies inside the
+// tile (bilinear resampling of the tile; seamless across the antimeridian).
+void apply_tile(WeatherMap& map, const MapTile& tile);
+
+class WeatherTimeline {
+ public:
+  static constexpr std::size_t kMaxKeyframes = 8;
+  static constexpr double kDefaultTransition_s = 30.0;
+
+  explicit WeatherTimeline(WeatherMap base = {});
+
+  // Replaces everything with one keyframe (e.g. a new procedural map).
+  void reset(WeatherMap base);
+  // Applies a tile (which must have no problem()) given the current UTC time.
+  void apply(const MapTile& tile, double now_utc_s, double transition_s = kDefaultTransition_s);
+
+  struct Blend {
+    const WeatherMap* from = nullptr;  // keyframe at or before t
+    const WeatherMap* to = nullptr;    // next keyframe (== from when none)
+    float weight = 0.0f;               // 0 -> from, 1 -> to
+    std::uint64_t from_version = 0, to_version = 0;  // change counters, for GPU uploads
+  };
+  // The keyframes around t; drops keyframes no longer needed.
+  Blend at(double t_utc_s);
+
+  std::size_t keyframe_count() const { return frames_.size(); }
+
+ private:
+  struct Keyframe {
+    WeatherMap map;
+    std::uint64_t version = 0;
+  };
+  std::map<double, Keyframe> frames_;  // by valid-at UTC; the first entry covers all earlier times
+  std::uint64_t next_version_ = 1;
+};
+
+}  // namespace cloudsvc::weather

@@ -1,84 +1,45 @@
-// Command line of `cloudsvc` (CLI11). CLI11 only collects each flag's text and prints
-// help; every value is then validated here (numbers, ranges, time, weather, output
-// paths) so that a bad command fails before any rendering starts, with exactly one line
-// on stderr naming the flag, the given value and what is allowed, and exit code 2.
+// Command line of `cloudsvc` (CLI11): the `render` and `demo` flags, the `serve`
+// sub-command (serve_options.cpp), and the reporting of bad input. CLI11 only collects each
+// flag's text and prints help; every value is then validated (option_values.h) so that a
+// bad command fails before any rendering starts, with exactly one line on stderr naming
+// the flag, the given value and what is allowed, and exit code 2.
 #include "service/render_options.h"
 
-#include <linux/magic.h>
-#include <sys/vfs.h>
-#include <unistd.h>
-
 #include <CLI/CLI.hpp>
-#include <cctype>
-#include <charconv>
-#include <climits>
 #include <cmath>
-#include <cstdio>
-#include <exception>
-#include <filesystem>
 #include <iostream>
-#include <optional>
-#include <stdexcept>
 #include <string>
 #include <string_view>
-#include <system_error>
 #include <tuple>
 #include <utility>
 #include <vector>
 
 #include "geodesy/geodetic.h"
-#include "geodesy/utc_time.h"
-#include "weather/presets.h"
-#include "weather/weather_json.h"
+#include "service/option_values.h"
 
 namespace cloudsvc {
 namespace {
 
-namespace fs = std::filesystem;
-
-constexpr const char* kProgram = "cloudsvc";
-constexpr int kExitOk = 0;
-constexpr int kExitBadInput = 2;
-constexpr int kMinImageSide = 1;     // px
-constexpr int kMaxImageSide = 8192;  // px, per side
-
-// ---------------------------------------------------------------------------------------
-// Errors
-
-// A flag whose value failed validation. what() is "<flag> <value>: <reason>".
-class FlagError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
-// Replaces line breaks and other control characters so a message stays on one line.
-std::string one_line(std::string_view text) {
-  std::string out;
-  out.reserve(text.size());
-  for (char c : text) out.push_back(static_cast<unsigned char>(c) < 0x20 ? ' ' : c);
-  while (!out.empty() && out.back() == ' ') out.pop_back();
-  return out;
-}
-
-[[noreturn]] void fail(std::string_view flag, std::string_view value, std::string_view reason) {
-  std::string message(flag);
-  message += ' ';
-  message += value.empty() ? std::string_view("\"\"") : value;
-  message += ": ";
-  message += reason;
-  throw FlagError(one_line(message));
-}
-
-// ---------------------------------------------------------------------------------------
-// Numbers
-
-// Interval of a numeric flag and its unit, for checks, messages and help.
-struct Range {
-  double min = 0.0;
-  double max = 0.0;
-  bool min_exclusive = false;  // (min, max] instead of [min, max]
-  const char* unit = "";       // e.g. "degrees"
-};
+using cli::check_output_directory;
+using cli::check_output_file;
+using cli::fail;
+using cli::FlagError;
+using cli::given;
+using cli::kExitBadInput;
+using cli::kExitOk;
+using cli::kFieldOfView;
+using cli::kProgram;
+using cli::numeric_help;
+using cli::one_line;
+using cli::parse_frame_count;
+using cli::parse_image_size;
+using cli::parse_number;
+using cli::parse_time;
+using cli::Range;
+using cli::resolve_weather;
+using cli::ServeCommandLine;
+using cli::size_help;
+using cli::weather_help;
 
 const Range kLatitude{-90.0, 90.0, false, "degrees"};
 const Range kLongitude{-180.0, 180.0, false, "degrees"};
@@ -86,94 +47,7 @@ const Range kAltitude{-500.0, 100000.0, false, "metres above the WGS84 ellipsoid
 const Range kHeading{-360.0, 360.0, false, "degrees"};
 const Range kPitch{-90.0, 90.0, false, "degrees"};
 const Range kRoll{-180.0, 180.0, false, "degrees"};
-const Range kFieldOfView{0.0, 170.0, true, "degrees"};
 const Range kExposure{-20.0, 20.0, false, "EV"};
-
-// Shortest decimal text of a value for messages and help ("90", "47.45", "100000").
-std::string format_number(double value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.10g", value);
-  return buffer;
-}
-
-// "[-90, 90] (degrees)" or "(0, 170] (degrees)".
-std::string range_text(const Range& r) {
-  return std::string(r.min_exclusive ? "(" : "[") + format_number(r.min) + ", " +
-         format_number(r.max) + "] (" + r.unit + ")";
-}
-
-bool in_range(double value, const Range& r) {
-  const bool above_min = r.min_exclusive ? value > r.min : value >= r.min;
-  return above_min && value <= r.max;
-}
-
-// Parses the whole text as a finite decimal number ("95", "-0.5", "+1e3"). Rejects
-// empty text, trailing characters, hexadecimal, "nan", "inf" and overflow.
-std::optional<double> parse_finite_number(std::string_view text) {
-  if (!text.empty() && text.front() == '+') {
-    text.remove_prefix(1);
-    if (!text.empty() && (text.front() == '+' || text.front() == '-')) return std::nullopt;
-  }
-  double value = 0.0;
-  const char* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
-  if (ec != std::errc() || ptr != end || !std::isfinite(value)) return std::nullopt;
-  return value;
-}
-
-// Value of a numeric flag, or FlagError naming it.
-double parse_number(std::string_view flag, const std::string& text, const Range& r) {
-  const std::optional<double> value = parse_finite_number(text);
-  if (!value) fail(flag, text, "expected a finite number in " + range_text(r));
-  if (!in_range(*value, r)) fail(flag, text, "out of range " + range_text(r));
-  return *value;
-}
-
-// Parses text made only of decimal digits. Values too large for int become INT_MAX so
-// that the caller's range check reports them.
-std::optional<int> parse_digits(std::string_view text) {
-  if (text.empty()) return std::nullopt;
-  for (char c : text) {
-    if (c < '0' || c > '9') return std::nullopt;
-  }
-  int value = 0;
-  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (ec == std::errc::result_out_of_range) return INT_MAX;
-  if (ec != std::errc()) return std::nullopt;
-  return value;
-}
-
-// --window-frames N: a count of frames >= 0.
-int parse_frame_count(std::string_view flag, const std::string& text) {
-  const std::optional<int> frames = parse_digits(text);
-  if (!frames || *frames == INT_MAX) {
-    fail(flag, text, "expected an integer number of frames in [0, " + std::to_string(INT_MAX - 1) +
-                         "] (0 = until the window is closed)");
-  }
-  return *frames;
-}
-
-// --size WxH: width and height in pixels, each in [1, 8192].
-std::pair<int, int> parse_image_size(std::string_view flag, const std::string& text) {
-  const std::string expected = "expected WxH with W and H integers in [" +
-                               std::to_string(kMinImageSide) + ", " +
-                               std::to_string(kMaxImageSide) + "] (pixels), e.g. 1280x720";
-  const std::size_t x = text.find_first_of("xX");
-  if (x == std::string::npos) fail(flag, text, expected);
-  const std::optional<int> width = parse_digits(std::string_view(text).substr(0, x));
-  const std::optional<int> height = parse_digits(std::string_view(text).substr(x + 1));
-  if (!width || !height) fail(flag, text, expected);
-  const std::string side_range =
-      " out of range [" + std::to_string(kMinImageSide) + ", " + std::to_string(kMaxImageSide) +
-      "] (pixels)";
-  if (*width < kMinImageSide || *width > kMaxImageSide) {
-    fail(flag, text, "width " + std::to_string(*width) + side_range);
-  }
-  if (*height < kMinImageSide || *height > kMaxImageSide) {
-    fail(flag, text, "height " + std::to_string(*height) + side_range);
-  }
-  return {*width, *height};
-}
 
 // Wraps a heading in degrees into [0, 360).
 double wrap_heading_deg(double heading_deg) {
@@ -183,168 +57,7 @@ double wrap_heading_deg(double heading_deg) {
 }
 
 // ---------------------------------------------------------------------------------------
-// Time and weather
-
-// --time: UTC ISO 8601 -> seconds since the Unix epoch.
-double parse_time(std::string_view flag, const std::string& text) {
-  const std::optional<double> unix_time_s = geo::parse_utc_iso8601(text);
-  if (!unix_time_s) {
-    fail(flag, text,
-         "expected a UTC ISO 8601 time YYYY-MM-DDTHH:MM[:SS]Z (years 1900..2199), "
-         "e.g. 2026-06-21T12:00:00Z");
-  }
-  return *unix_time_s;
-}
-
-// Case-insensitive ASCII test of a file name ending (".json", ".png").
-bool ends_with_ci(std::string_view text, std::string_view suffix) {
-  if (text.size() < suffix.size()) return false;
-  const std::string_view tail = text.substr(text.size() - suffix.size());
-  for (std::size_t i = 0; i < suffix.size(); ++i) {
-    const auto a = static_cast<unsigned char>(tail[i]);
-    const auto b = static_cast<unsigned char>(suffix[i]);
-    if (std::tolower(a) != std::tolower(b)) return false;
-  }
-  return true;
-}
-
-std::string join(const std::vector<std::string>& items, std::string_view separator) {
-  std::string out;
-  for (const std::string& item : items) {
-    if (!out.empty()) out += separator;
-    out += item;
-  }
-  return out;
-}
-
-// A weather file's error message usually starts with the file name, which the flag
-// line already shows: drop that prefix.
-std::string without_path_prefix(std::string message, const std::string& path) {
-  const std::string prefix = path + ": ";
-  if (message.rfind(prefix, 0) == 0) message.erase(0, prefix.size());
-  return message;
-}
-
-weather::Weather load_weather_file(std::string_view flag, const std::string& path) {
-  std::error_code ec;
-  const fs::file_status status = fs::status(path, ec);
-  if (!fs::exists(status)) fail(flag, path, "weather file not found");
-  if (!fs::is_regular_file(status)) fail(flag, path, "not a regular file");
-  weather::Weather w;
-  try {
-    w = weather::load_weather_json(path);
-  } catch (const weather::WeatherFileError& e) {
-    fail(flag, path, without_path_prefix(e.what(), path));
-  } catch (const std::exception& e) {
-    fail(flag, path, std::string("cannot read weather file: ") + e.what());
-  }
-  const std::string problem = weather::validate(w);
-  if (!problem.empty()) fail(flag, path, problem);
-  return w;
-}
-
-// --weather: a preset name or a path ending in .json.
-weather::Weather resolve_weather(std::string_view flag, const std::string& arg) {
-  if (ends_with_ci(arg, ".json")) return load_weather_file(flag, arg);
-  if (std::optional<weather::Weather> w = weather::preset(arg)) return *w;
-  fail(flag, arg,
-       "unknown weather preset (expected one of " + join(weather::preset_names(), ", ") +
-           ", or a path to a .json weather file)");
-}
-
-// ---------------------------------------------------------------------------------------
-// Output paths
-
-// Pseudo file systems where root passes access(W_OK) but no regular file can be created.
-bool is_pseudo_filesystem(const fs::path& dir) {
-  struct statfs info {};
-  if (statfs(dir.c_str(), &info) != 0) return false;
-  return info.f_type == PROC_SUPER_MAGIC || info.f_type == SYSFS_MAGIC;
-}
-
-// True if files can be created in the existing directory `dir`.
-bool is_writable_directory(const fs::path& dir) {
-  return access(dir.c_str(), W_OK | X_OK) == 0 && !is_pseudo_filesystem(dir);
-}
-
-// `dir` (where a file or sub-directory will be created) exists, is a directory and is
-// writable; otherwise FlagError for `flag value`.
-void require_writable_directory(std::string_view flag, const std::string& value,
-                                const fs::path& dir) {
-  std::error_code ec;
-  const fs::file_status status = fs::status(dir, ec);
-  if (!fs::exists(status)) fail(flag, value, "directory " + dir.string() + " does not exist");
-  if (!fs::is_directory(status)) fail(flag, value, dir.string() + " is not a directory");
-  if (!is_writable_directory(dir)) {
-    fail(flag, value, "directory " + dir.string() + " is not writable");
-  }
-}
-
-// --out: FILE.png or FILE.exr (any case) in an existing, writable directory. The file
-// itself is not created here.
-void check_output_file(std::string_view flag, const std::string& path) {
-  const fs::path file(path);
-  const std::string name = file.filename().string();
-  const bool known_extension = ends_with_ci(name, ".png") || ends_with_ci(name, ".exr");
-  if (!known_extension || name.size() <= 4) {
-    fail(flag, path, "expected a file name ending in .png (8-bit sRGB) or .exr (linear half float)");
-  }
-  const fs::path dir = file.has_parent_path() ? file.parent_path() : fs::path(".");
-  require_writable_directory(flag, path, dir);
-  std::error_code ec;
-  const fs::file_status status = fs::status(file, ec);
-  if (fs::is_directory(status)) fail(flag, path, "is a directory");
-  if (fs::exists(status) && access(file.c_str(), W_OK) != 0) {
-    fail(flag, path, "existing file is not writable");
-  }
-}
-
-// Deepest existing directory on the way to `path` (which does not exist).
-fs::path nearest_existing_ancestor(const fs::path& path) {
-  std::error_code ec;
-  fs::path current = fs::absolute(path, ec).lexically_normal();
-  while (!fs::exists(current, ec) && current.has_parent_path() &&
-         current.parent_path() != current) {
-    current = current.parent_path();
-  }
-  return current;
-}
-
-// demo --out-dir: an existing writable directory, or an absent one whose nearest
-// existing ancestor is a writable directory (the renderer creates it later).
-void check_output_directory(std::string_view flag, const std::string& dir_text) {
-  if (dir_text.empty()) fail(flag, dir_text, "expected a directory path");
-  const fs::path dir(dir_text);
-  std::error_code ec;
-  const fs::file_status status = fs::status(dir, ec);
-  if (fs::exists(status)) {
-    if (!fs::is_directory(status)) fail(flag, dir_text, "exists and is not a directory");
-    if (!is_writable_directory(dir)) fail(flag, dir_text, "directory is not writable");
-    return;
-  }
-  const fs::path ancestor = nearest_existing_ancestor(dir);
-  if (!fs::is_directory(ancestor, ec)) {
-    fail(flag, dir_text, ancestor.string() + " is not a directory");
-  }
-  if (!is_writable_directory(ancestor)) {
-    fail(flag, dir_text, "parent directory " + ancestor.string() + " is not writable");
-  }
-}
-
-// ---------------------------------------------------------------------------------------
-// Flag definitions (CLI11 collects text; the checks above convert it)
-
-// "<what>; <range> (<unit>); default <value>" for the help of a numeric flag.
-std::string numeric_help(std::string_view what, const Range& r, double default_value) {
-  return std::string(what) + "; range " + range_text(r) + "; default " +
-         format_number(default_value);
-}
-
-std::string size_help(int width, int height) {
-  return "Image size in pixels, width x height, each in [" + std::to_string(kMinImageSide) +
-         ", " + std::to_string(kMaxImageSide) + "]; default " + std::to_string(width) + "x" +
-         std::to_string(height);
-}
+// Flag definitions (CLI11 collects text; option_values.h converts it)
 
 // Raw text of each `render` flag, as collected by CLI11.
 struct RenderArgs {
@@ -397,10 +110,7 @@ void add_view_flags(CLI::App& cmd, RenderArgs& args, const RenderOptions& defaul
       ->type_name("DEG");
   cmd.add_option("--size", args.size, size_help(defaults.width, defaults.height))
       ->type_name("WxH");
-  cmd.add_option("--weather", args.weather,
-                 "Weather: a preset name (" + join(weather::preset_names(), ", ") +
-                     ") or a path to a weather file ending in .json (docs/WEATHER.md); "
-                     "default " + defaults.weather_arg)
+  cmd.add_option("--weather", args.weather, weather_help(defaults.weather_arg))
       ->type_name("PRESET|FILE.json");
 }
 
@@ -462,24 +172,16 @@ void configure_app(CLI::App& app, RenderArgs& render, DemoArgs& demo) {
       "Angles are degrees, altitudes metres above the WGS84 ellipsoid, times UTC.");
   app.require_subcommand(0, 1);
   app.footer(
-      "Run `cloudsvc render --help` or `cloudsvc demo --help` for the flags of a "
-      "sub-command.\nExit codes: 0 ok, 1 runtime failure (e.g. no GL context), 2 bad input.");
+      "Run `cloudsvc render --help`, `cloudsvc demo --help` or `cloudsvc serve --help` for "
+      "the flags of a sub-command.\nExit codes: 0 ok (serve: clean shutdown on SIGINT or "
+      "SIGTERM), 1 runtime failure (e.g. no GL context), 2 bad input.");
   add_render_command(app, render);
   add_demo_command(app, demo);
+  // `serve` is registered by cli::ServeCommandLine (serve_options.cpp) after this.
 }
 
 // ---------------------------------------------------------------------------------------
-// Validation of the collected text
-
-// True if `flag` was given. CLI11 keeps every occurrence (TakeLast policy); a flag given
-// more than once is rejected here so that the message shows all its values.
-bool given(const CLI::App& cmd, const std::string& flag) {
-  const CLI::Option* option = cmd.get_option(flag);
-  if (option->count() > 1) {
-    fail(flag, join(option->results(), " "), "given more than once (each flag at most once)");
-  }
-  return option->count() > 0;
-}
+// Validation of the collected text (each flag at most once: cli::given)
 
 void apply_geometry(const RenderArgs& a, RenderOptions& opt) {
   const CLI::App& cmd = *a.command;
@@ -502,7 +204,8 @@ void apply_image(const RenderArgs& a, RenderOptions& opt) {
   if (given(cmd, "--exposure")) opt.exposure_ev = parse_number("--exposure", a.exposure, kExposure);
   opt.window = a.window;
   if (given(cmd, "--window-frames")) {
-    opt.window_frames = parse_frame_count("--window-frames", a.frames);
+    opt.window_frames =
+        parse_frame_count("--window-frames", a.frames, "0 = until the window is closed");
     if (!opt.window) fail("--window-frames", a.frames, "only valid together with --window");
   }
 }
@@ -548,7 +251,9 @@ DemoOptions validate_demo(const DemoArgs& args) {
 std::string command_prefix(int argc, const char* const* argv) {
   if (argc > 1 && argv[1] != nullptr) {
     const std::string_view first = argv[1];
-    if (first == "render" || first == "demo") return std::string(kProgram) + " " + argv[1];
+    if (first == "render" || first == "demo" || first == "serve") {
+      return std::string(kProgram) + " " + argv[1];
+    }
   }
   return kProgram;
 }
@@ -571,7 +276,7 @@ std::vector<std::string> unmatched_arguments(const CLI::App& app) {
 std::string unmatched_argument_text(const CLI::App& app, const std::string& argument) {
   if (argument.rfind("-", 0) == 0) return argument + ": unknown flag";
   if (app.get_subcommands().empty()) {
-    return argument + ": unknown sub-command (expected render or demo)";
+    return argument + ": unknown sub-command (expected render, demo or serve)";
   }
   return argument + ": unexpected argument (flags take the form --name VALUE)";
 }
@@ -611,7 +316,7 @@ ParsedCommand report_help(ParsedCommand result, const CLI::App& app) {
 // No sub-command: the overview on stderr, then the error line.
 ParsedCommand report_missing_command(ParsedCommand result, const CLI::App& app) {
   result.exit_code = kExitBadInput;
-  result.error = std::string(kProgram) + ": missing sub-command (expected render or demo)";
+  result.error = std::string(kProgram) + ": missing sub-command (expected render, demo or serve)";
   std::cerr << app.help() << result.error << '\n' << std::flush;
   return result;
 }
@@ -624,8 +329,9 @@ ParsedCommand parse_command_line(int argc, const char* const* argv) {
   CLI::App app;
   RenderArgs render_args;
   DemoArgs demo_args;
+  configure_app(app, render_args, demo_args);
+  const ServeCommandLine serve_args(app);
   try {
-    configure_app(app, render_args, demo_args);
     if (argc > 0) app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {
     return report_help(std::move(result), app);
@@ -641,6 +347,9 @@ ParsedCommand parse_command_line(int argc, const char* const* argv) {
     } else if (demo_args.command->parsed()) {
       result.kind = ParsedCommand::Kind::Demo;
       result.demo = validate_demo(demo_args);
+    } else if (serve_args.parsed()) {
+      result.kind = ParsedCommand::Kind::Serve;
+      result.serve = serve_args.validate();
     } else {
       return report_missing_command(std::move(result), app);
     }

@@ -46,7 +46,7 @@ struct ParsedCommand {
   std::string error;  // the one-line message printed, if exit_code == 2
 };
 
-// argv[0] is the program name; argv[1] the sub-command ("render", "demo").
+// argv[0] is the program name; argv[1] the sub-command ("render", "demo", "serve").
 ParsedCommand parse_command_line(int argc, const char* const* argv);
 
 }  // namespace cloudsvc

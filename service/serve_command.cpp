@@ -55,6 +55,7 @@ std::string check_view(const protocol::SetView& v, const ServeOptions& opt) {
 }  // namespace
 
 int run_serve(const ServeOptions& opt) {
+  if (!opt.out_dir.empty()) std::filesystem::create_directories(opt.out_dir);
   asio::io_context io;
   auto work = asio::make_work_guard(io);
   FrameMailbox mailbox;

@@ -1,0 +1,376 @@
+// Flags of `cloudsvc serve` (serve_options.h is the spec): their help text, and the
+// conversion of the text CLI11 collected into ServeOptions, with the same one-line error
+// contract as render and demo (option_values.h).
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/un.h>
+
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <system_error>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include "service/option_values.h"
+
+namespace cloudsvc::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr std::string_view kTcpScheme = "tcp://";
+constexpr std::string_view kUnixScheme = "unix:";
+constexpr int kMinPort = 1;
+constexpr int kMaxPort = 65535;
+// Longest Unix socket path: sun_path holds 108 bytes including the terminating NUL.
+constexpr std::size_t kMaxUnixPathBytes = sizeof(sockaddr_un{}.sun_path) - 1;
+static_assert(kMaxUnixPathBytes == 107);
+constexpr std::size_t kMaxShmNameChars = 200;
+constexpr int kMinClients = 1;
+constexpr int kMaxClients = 1024;
+
+const std::string kListenForms =
+    "expected tcp://HOST:PORT (HOST a numeric IPv4 address, [IPv6 address] or localhost; "
+    "PORT in [1, 65535]) or unix:PATH";
+
+// ---- --listen --------------------------------------------------------------------------
+
+// PORT of tcp://HOST:PORT, in [1, 65535].
+std::uint16_t parse_port(std::string_view flag, const std::string& text, std::string_view port) {
+  if (port.empty()) fail(flag, text, "missing port after ':' (integer in [1, 65535])");
+  const std::optional<int> value = parse_digits(port);
+  if (!value) fail(flag, text, "port " + std::string(port) + " is not an integer in [1, 65535]");
+  if (*value < kMinPort || *value > kMaxPort) {
+    fail(flag, text, "port " + std::string(port) + " out of range [1, 65535]");
+  }
+  return static_cast<std::uint16_t>(*value);
+}
+
+// Canonical text of a numeric address of `family` (AF_INET/AF_INET6), or "" if `host`
+// is not one. No name is resolved.
+std::string canonical_address(int family, const std::string& host) {
+  unsigned char binary[sizeof(in6_addr)];
+  if (inet_pton(family, host.c_str(), binary) != 1) return "";
+  char text[INET6_ADDRSTRLEN];
+  return inet_ntop(family, binary, text, sizeof text) != nullptr ? text : "";
+}
+
+// tcp://HOST:PORT; `rest` is the text after "tcp://".
+ListenAddress parse_tcp_address(std::string_view flag, const std::string& text,
+                                std::string_view rest) {
+  ListenAddress address;
+  address.kind = ListenAddress::Kind::Tcp;
+  address.text = text;
+  std::string host;
+  std::size_t colon = std::string_view::npos;
+  bool bracketed = false;
+  if (!rest.empty() && rest.front() == '[') {
+    const std::size_t close = rest.find(']');
+    if (close == std::string_view::npos) fail(flag, text, "missing ']' after the IPv6 address");
+    host = std::string(rest.substr(1, close - 1));
+    bracketed = true;
+    if (close + 1 == rest.size() || rest[close + 1] != ':') {
+      fail(flag, text, "missing :PORT after the address (integer in [1, 65535])");
+    }
+    colon = close + 1;
+  } else {
+    colon = rest.rfind(':');
+    if (colon == std::string_view::npos) {
+      fail(flag, text, "missing :PORT after the host (integer in [1, 65535])");
+    }
+    host = std::string(rest.substr(0, colon));
+    if (host.find(':') != std::string::npos) {
+      fail(flag, text, "an IPv6 address must be in brackets, e.g. tcp://[::1]:7420");
+    }
+  }
+  address.port = parse_port(flag, text, rest.substr(colon + 1));
+  if (host.empty()) fail(flag, text, "missing host; " + kListenForms);
+  if (!bracketed && host == "localhost") {
+    address.host = "127.0.0.1";
+    return address;
+  }
+  address.host = canonical_address(bracketed ? AF_INET6 : AF_INET, host);
+  if (address.host.empty()) {
+    fail(flag, text,
+         bracketed ? "\"" + host + "\" is not a numeric IPv6 address"
+                   : "host \"" + host +
+                         "\" is not a numeric IPv4 address or localhost (host names are not "
+                         "resolved; IPv6 goes in brackets)");
+  }
+  return address;
+}
+
+// unix:PATH: at most 107 bytes, in an existing writable directory, not an existing
+// non-socket file (binding there would fail or clobber it).
+ListenAddress parse_unix_address(std::string_view flag, const std::string& text,
+                                 std::string_view path_text) {
+  ListenAddress address;
+  address.kind = ListenAddress::Kind::Unix;
+  address.text = text;
+  address.path = std::string(path_text);
+  if (address.path.empty()) fail(flag, text, "empty socket path; expected unix:PATH");
+  if (address.path.size() > kMaxUnixPathBytes) {
+    fail(flag, text,
+         "socket path is " + std::to_string(address.path.size()) + " bytes, at most " +
+             std::to_string(kMaxUnixPathBytes) + " (sun_path)");
+  }
+  const fs::path path(address.path);
+  if (!path.has_filename()) fail(flag, text, "socket path names a directory, expected a file name");
+  require_writable_directory(flag, text, path.has_parent_path() ? path.parent_path() : ".");
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (fs::exists(status) && !fs::is_socket(status)) {
+    fail(flag, text, "exists and is not a socket");
+  }
+  return address;
+}
+
+ListenAddress parse_listen_address(std::string_view flag, const std::string& text) {
+  const std::string_view view(text);
+  if (view.starts_with(kTcpScheme)) return parse_tcp_address(flag, text, view.substr(kTcpScheme.size()));
+  if (view.starts_with(kUnixScheme)) {
+    return parse_unix_address(flag, text, view.substr(kUnixScheme.size()));
+  }
+  fail(flag, text, kListenForms);
+}
+
+bool is_wildcard(const ListenAddress& a) { return a.host == "0.0.0.0" || a.host == "::"; }
+bool is_ipv6(const ListenAddress& a) { return a.host.find(':') != std::string::npos; }
+
+// True if `a` and `b` cannot both be bound: the same socket path, or the same TCP port
+// on the same address or on a wildcard address of the same family.
+bool conflicts(const ListenAddress& a, const ListenAddress& b) {
+  if (a.kind != b.kind) return false;
+  if (a.kind == ListenAddress::Kind::Unix) {
+    std::error_code ec;
+    return fs::absolute(a.path, ec).lexically_normal() ==
+           fs::absolute(b.path, ec).lexically_normal();
+  }
+  if (a.port != b.port || is_ipv6(a) != is_ipv6(b)) return false;
+  return a.host == b.host || is_wildcard(a) || is_wildcard(b);
+}
+
+std::string conflict_reason(const ListenAddress& a, const ListenAddress& earlier) {
+  if (a.kind == ListenAddress::Kind::Unix || a.host == earlier.host) {
+    return "same address as --listen " + earlier.text + " (each address at most once)";
+  }
+  return "overlaps --listen " + earlier.text + " (" + (is_ipv6(a) ? "::" : "0.0.0.0") +
+         " covers every address of its family on port " + std::to_string(a.port) + ")";
+}
+
+// Every --listen value in order; the default address if none was given.
+std::vector<ListenAddress> parse_listen_addresses(std::string_view flag,
+                                                  const std::vector<std::string>& texts) {
+  std::vector<ListenAddress> addresses;
+  for (const std::string& text : texts) {
+    ListenAddress address = parse_listen_address(flag, text);
+    for (const ListenAddress& earlier : addresses) {
+      if (conflicts(address, earlier)) fail(flag, text, conflict_reason(address, earlier));
+    }
+    addresses.push_back(std::move(address));
+  }
+  if (addresses.empty()) {
+    ListenAddress fallback;  // tcp://127.0.0.1:7420
+    fallback.text = "tcp://" + fallback.host + ":" + std::to_string(fallback.port);
+    addresses.push_back(fallback);
+  }
+  return addresses;
+}
+
+// ---- other values --------------------------------------------------------------------------
+
+bool is_shm_name_char(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' ||
+         c == '_' || c == '.';
+}
+
+// --shm NAME: the shared-memory object "/NAME".
+std::string parse_shm_name(std::string_view flag, const std::string& text) {
+  const std::string expected = "expected 1.." + std::to_string(kMaxShmNameChars) +
+                               " characters from letters, digits, '-', '_', '.' (not . or ..)";
+  if (text.empty() || text.size() > kMaxShmNameChars || text == "." || text == "..") {
+    fail(flag, text, expected);
+  }
+  for (char c : text) {
+    if (!is_shm_name_char(c)) fail(flag, text, expected);
+  }
+  return text;
+}
+
+// Seconds since the Unix epoch now, from the system clock.
+double now_unix_s() {
+  const auto since_epoch = std::chrono::system_clock::now().time_since_epoch();
+  return std::chrono::duration<double>(since_epoch).count();
+}
+
+std::string size_text(int width, int height) {
+  return std::to_string(width) + "x" + std::to_string(height);
+}
+
+}  // namespace
+
+// Raw text of each `serve` flag, as collected by CLI11.
+struct ServeCommandLine::Args {
+  CLI::App* command = nullptr;
+  std::vector<std::string> listen;
+  std::string shm, shm_max_size, out_dir, weather, time, size, fov, max_clients, exit_after_frames;
+  bool window = false;
+};
+
+namespace {
+
+void add_endpoint_flags(CLI::App& cmd, ServeCommandLine::Args& args, const ServeOptions& defaults) {
+  cmd.add_option("--listen", args.listen,
+                 "Address to accept protocol clients on; repeat for several. tcp://HOST:PORT: "
+                 "HOST a numeric IPv4 address, an IPv6 address in brackets ([::1]) or localhost "
+                 "(names are not resolved), PORT in [1, 65535]. unix:PATH: a Unix socket, PATH "
+                 "at most 107 bytes in an existing writable directory. A HOST other than "
+                 "loopback (e.g. 0.0.0.0) exposes the service, which has no authentication, to "
+                 "the network; default tcp://127.0.0.1:7420 (loopback only)")
+      ->type_name("ADDR")
+      ->expected(1)
+      ->allow_extra_args(false)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  cmd.add_option("--max-clients", args.max_clients,
+                 "Most clients connected at the same time, integer in [" +
+                     std::to_string(kMinClients) + ", " + std::to_string(kMaxClients) +
+                     "] (clients); default " + std::to_string(defaults.max_clients))
+      ->type_name("N");
+}
+
+void add_sink_flags(CLI::App& cmd, ServeCommandLine::Args& args, const ServeOptions& defaults) {
+  cmd.add_option("--shm", args.shm,
+                 "Publish every frame in the POSIX shared-memory ring /NAME; NAME 1..200 "
+                 "characters from letters, digits, '-', '_', '.'; default none")
+      ->type_name("NAME");
+  cmd.add_option("--shm-max-size", args.shm_max_size,
+                 "With --shm: largest frame the ring holds, pixels, width x height, each in [" +
+                     std::to_string(kMinImageSide) + ", " + std::to_string(kMaxImageSide) +
+                     "]; --size must fit; default " +
+                     size_text(defaults.shm_max_width, defaults.shm_max_height))
+      ->type_name("WxH");
+  cmd.add_flag("--window", args.window,
+               "Also show the frames in a window (needs a display); default off");
+  cmd.add_option("--out-dir", args.out_dir,
+                 "Write every frame as a PNG file into DIR; created if absent (its nearest "
+                 "existing parent must be a writable directory); default none (no files)")
+      ->type_name("DIR");
+}
+
+void add_scene_flags(CLI::App& cmd, ServeCommandLine::Args& args, const ServeOptions& defaults) {
+  cmd.add_option("--weather", args.weather,
+                 weather_help(defaults.weather_arg, "Weather at start"))
+      ->type_name("PRESET|FILE.json");
+  cmd.add_option("--time", args.time,
+                 "Date and time in UTC, ISO 8601 (YYYY-MM-DDTHH:MM[:SS[.fff]]Z or +hh:mm "
+                 "offset), years 1900..2199, used until a client sends a time; sets the sun "
+                 "position; default the current time (system clock)")
+      ->type_name("UTC");
+  cmd.add_option("--size", args.size,
+                 "View size in pixels until a client sets one, width x height, each in [" +
+                     std::to_string(kMinImageSide) + ", " + std::to_string(kMaxImageSide) +
+                     "]; default " + size_text(defaults.width, defaults.height))
+      ->type_name("WxH");
+  cmd.add_option("--fov", args.fov,
+                 numeric_help("Horizontal field of view until a client sets one", kFieldOfView,
+                              defaults.fov_deg))
+      ->type_name("DEG");
+  cmd.add_option("--exit-after-frames", args.exit_after_frames,
+                 "Stop cleanly after N rendered frames (frames follow client poses and render "
+                 "requests), for tests and benchmarks (integer >= 0; 0 = run until SIGINT or "
+                 "SIGTERM); default " + std::to_string(defaults.exit_after_frames))
+      ->type_name("N");
+}
+
+void apply_endpoints(const ServeCommandLine::Args& a, ServeOptions& opt) {
+  const CLI::App& cmd = *a.command;
+  opt.listen = parse_listen_addresses("--listen", a.listen);
+  if (given(cmd, "--max-clients")) {
+    opt.max_clients = parse_integer("--max-clients", a.max_clients, kMinClients, kMaxClients, "clients");
+  }
+}
+
+void apply_scene(const ServeCommandLine::Args& a, ServeOptions& opt) {
+  const CLI::App& cmd = *a.command;
+  if (given(cmd, "--weather")) opt.weather_arg = a.weather;
+  opt.weather = resolve_weather("--weather", opt.weather_arg);
+  if (given(cmd, "--time")) {
+    opt.time_text = a.time;
+    opt.unix_time_s = parse_time("--time", a.time);
+  } else {
+    opt.unix_time_s = now_unix_s();  // time_text stays empty: not given
+  }
+  if (given(cmd, "--size")) std::tie(opt.width, opt.height) = parse_image_size("--size", a.size);
+  if (given(cmd, "--fov")) opt.fov_deg = parse_number("--fov", a.fov, kFieldOfView);
+  if (given(cmd, "--exit-after-frames")) {
+    opt.exit_after_frames = parse_frame_count("--exit-after-frames", a.exit_after_frames,
+                                              "0 = run until SIGINT or SIGTERM");
+  }
+}
+
+// --shm, --shm-max-size, --window, --out-dir; after apply_scene (the view must fit the ring).
+void apply_sinks(const ServeCommandLine::Args& a, ServeOptions& opt) {
+  const CLI::App& cmd = *a.command;
+  if (given(cmd, "--shm")) opt.shm_name = parse_shm_name("--shm", a.shm);
+  if (given(cmd, "--shm-max-size")) {
+    std::tie(opt.shm_max_width, opt.shm_max_height) =
+        parse_image_size("--shm-max-size", a.shm_max_size);
+    if (opt.shm_name.empty()) fail("--shm-max-size", a.shm_max_size, "only valid together with --shm");
+  }
+  const bool view_fits = opt.width <= opt.shm_max_width && opt.height <= opt.shm_max_height;
+  if (!opt.shm_name.empty() && !view_fits) {
+    const std::string limit = size_text(opt.shm_max_width, opt.shm_max_height);
+    if (given(cmd, "--size")) {
+      fail("--size", a.size, "larger than the shared-memory frame limit " + limit + " (--shm-max-size)");
+    }
+    fail("--shm-max-size", a.shm_max_size,
+         "smaller than the view size " + size_text(opt.width, opt.height) + " (--size)");
+  }
+  opt.window = a.window;
+  if (given(cmd, "--out-dir")) {
+    check_output_directory("--out-dir", a.out_dir);
+    opt.out_dir = a.out_dir;
+  }
+}
+
+}  // namespace
+
+ServeCommandLine::ServeCommandLine(CLI::App& app) : args_(std::make_unique<Args>()) {
+  const ServeOptions defaults;
+  args_->command = app.add_subcommand(
+      "serve",
+      "Run as a long-lived image generator: render the views clients request over TCP or Unix "
+      "sockets (docs/PROTOCOL.md) into shared memory, files or a window");
+  CLI::App& cmd = *args_->command;
+  cmd.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  add_endpoint_flags(cmd, *args_, defaults);
+  add_sink_flags(cmd, *args_, defaults);
+  add_scene_flags(cmd, *args_, defaults);
+  cmd.footer(
+      "Example:\n  cloudsvc serve --listen tcp://127.0.0.1:7420 --listen unix:/tmp/cloudsvc.sock "
+      "--shm cloudsvc-frames --out-dir frames/\n"
+      "Exit codes: 0 clean shutdown on SIGINT or SIGTERM (or after --exit-after-frames), "
+      "1 runtime failure (e.g. no GL context, address in use), 2 bad input.");
+}
+
+ServeCommandLine::~ServeCommandLine() = default;
+
+bool ServeCommandLine::parsed() const { return args_->command->parsed(); }
+
+ServeOptions ServeCommandLine::validate() const {
+  ServeOptions opt;
+  apply_endpoints(*args_, opt);
+  apply_scene(*args_, opt);
+  apply_sinks(*args_, opt);
+  return opt;
+}
+
+}  // namespace cloudsvc::cli

@@ -1,0 +1,439 @@
+// Command line of `cloudsvc serve`: defaults, every flag's valid values, help, and the
+// error contract (one line on stderr starting "cloudsvc serve: " and naming the flag and
+// the given value, exit code 2) for each kind of bad input.
+#include <gtest/gtest.h>
+#include <sys/socket.h>
+#include <sys/un.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "service/render_options.h"
+#include "weather/presets.h"
+#include "weather/weather_json.h"
+
+namespace cloudsvc {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Outcome {
+  ParsedCommand cmd;
+  std::string out;  // stdout
+  std::string err;  // stderr
+};
+
+Outcome run(const std::vector<std::string>& args) {
+  std::vector<const char*> argv{"cloudsvc"};
+  for (const std::string& a : args) argv.push_back(a.c_str());
+  testing::internal::CaptureStdout();
+  testing::internal::CaptureStderr();
+  Outcome r;
+  r.cmd = parse_command_line(static_cast<int>(argv.size()), argv.data());
+  r.err = testing::internal::GetCapturedStderr();
+  r.out = testing::internal::GetCapturedStdout();
+  return r;
+}
+
+std::string joined(const std::vector<std::string>& args) {
+  std::string text = "cloudsvc";
+  for (const std::string& a : args) text += " " + a;
+  return text;
+}
+
+// `cloudsvc serve <flags>` is rejected: exit 2, only the error line on stderr, and the
+// line starts with the command and names `flag` and, if not empty, `value`.
+void expect_serve_rejected(const std::vector<std::string>& flags, const std::string& flag,
+                           const std::string& value = "") {
+  std::vector<std::string> args{"serve"};
+  args.insert(args.end(), flags.begin(), flags.end());
+  SCOPED_TRACE(joined(args));
+  const Outcome r = run(args);
+  EXPECT_EQ(r.cmd.exit_code, 2);
+  EXPECT_EQ(r.err, r.cmd.error + "\n");
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1);
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  EXPECT_EQ(r.cmd.error.rfind("cloudsvc serve: ", 0), 0u) << r.cmd.error;
+  EXPECT_NE(r.cmd.error.find(flag), std::string::npos) << r.cmd.error;
+  EXPECT_NE(r.cmd.error.find(value), std::string::npos) << r.cmd.error;
+}
+
+void expect_listen_rejected(const std::string& address) {
+  expect_serve_rejected({"--listen", address}, "--listen", address);
+}
+
+// `cloudsvc serve <flags>` is accepted silently; its options.
+ServeOptions serve_with(const std::vector<std::string>& flags) {
+  std::vector<std::string> args{"serve"};
+  args.insert(args.end(), flags.begin(), flags.end());
+  SCOPED_TRACE(joined(args));
+  const Outcome r = run(args);
+  EXPECT_EQ(r.cmd.exit_code, -1) << r.cmd.error;
+  EXPECT_EQ(r.cmd.kind, ParsedCommand::Kind::Serve);
+  EXPECT_TRUE(r.err.empty()) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  return r.cmd.serve;
+}
+
+ListenAddress single_listen(const std::string& address) {
+  const ServeOptions o = serve_with({"--listen", address});
+  EXPECT_EQ(o.listen.size(), 1u);
+  return o.listen.empty() ? ListenAddress{} : o.listen.front();
+}
+
+double now_unix_s() {
+  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch())
+      .count();
+}
+
+// A fresh directory under the system temp directory, removed afterwards.
+class CliServeOptionsTest : public testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() /
+           ("cloudsvc_serve_" + std::to_string(getpid()) + "_" + info->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  std::string write_file(const std::string& name, const std::string& text) const {
+    std::ofstream(path(name)) << text;
+    return path(name);
+  }
+  // A path in dir_ of exactly `bytes` bytes.
+  std::string path_of_length(std::size_t bytes) const {
+    const std::string prefix = path("s");
+    return prefix + std::string(bytes - prefix.size(), 'k');
+  }
+  // Binds (and closes) a Unix socket at `file`, leaving the socket file behind.
+  static void make_socket_file(const std::string& file) {
+    const int fd = ::socket(AF_UNIX, SOCK_STREAM, 0);
+    ASSERT_GE(fd, 0);
+    sockaddr_un addr{};
+    addr.sun_family = AF_UNIX;
+    std::strncpy(addr.sun_path, file.c_str(), sizeof addr.sun_path - 1);
+    const int rc = ::bind(fd, reinterpret_cast<const sockaddr*>(&addr), sizeof addr);
+    ::close(fd);
+    ASSERT_EQ(rc, 0) << std::strerror(errno);
+    ASSERT_TRUE(fs::is_socket(file));
+  }
+
+  fs::path dir_;
+};
+
+// ---- defaults and help ---------------------------------------------------------------
+
+TEST_F(CliServeOptionsTest, Defaults) {
+  const double before = now_unix_s();
+  const ServeOptions o = serve_with({});
+  const double after = now_unix_s();
+  ASSERT_EQ(o.listen.size(), 1u);
+  EXPECT_EQ(o.listen[0].kind, ListenAddress::Kind::Tcp);
+  EXPECT_EQ(o.listen[0].host, "127.0.0.1");
+  EXPECT_EQ(o.listen[0].port, 7420);
+  EXPECT_EQ(o.listen[0].text, "tcp://127.0.0.1:7420");
+  EXPECT_TRUE(o.shm_name.empty());
+  EXPECT_EQ(o.shm_max_width, 1920);
+  EXPECT_EQ(o.shm_max_height, 1080);
+  EXPECT_FALSE(o.window);
+  EXPECT_TRUE(o.out_dir.empty());
+  EXPECT_EQ(o.weather_arg, "broken-cumulus");
+  const auto preset = weather::preset("broken-cumulus");
+  ASSERT_TRUE(preset.has_value());
+  EXPECT_FALSE(o.weather.layers.empty());
+  EXPECT_EQ(o.weather.layers.size(), preset->layers.size());
+  EXPECT_TRUE(o.time_text.empty()) << "no --time: the current time, no text";
+  EXPECT_GE(o.unix_time_s, before);
+  EXPECT_LE(o.unix_time_s, after);
+  EXPECT_EQ(o.width, 640);
+  EXPECT_EQ(o.height, 360);
+  EXPECT_DOUBLE_EQ(o.fov_deg, 60.0);
+  EXPECT_EQ(o.max_clients, 16);
+  EXPECT_EQ(o.exit_after_frames, 0);
+}
+
+TEST_F(CliServeOptionsTest, HelpDocumentsEveryFlagWithUnitsRangesDefaultsAndExample) {
+  const Outcome r = run({"serve", "--help"});
+  EXPECT_EQ(r.cmd.exit_code, 0);
+  EXPECT_TRUE(r.err.empty()) << r.err;
+  for (const char* text :
+       {"--listen", "--shm", "--shm-max-size", "--window", "--out-dir", "--weather", "--time",
+        "--size", "--fov", "--max-clients", "--exit-after-frames", "tcp://HOST:PORT",
+        "unix:PATH", "[1, 65535]", "107 bytes", "localhost", "[::1]", "not resolved",
+        "exposes the service", "default tcp://127.0.0.1:7420", "1..200", "default 1920x1080",
+        "[1, 8192]", "pixels", "(0, 170] (degrees)", "default 60", "[1, 1024] (clients)",
+        "default 16", "ISO 8601", "UTC", "current time", "broken-cumulus", ".json",
+        "PNG", "SIGINT", "SIGTERM", "Exit codes", "2 bad input",
+        "cloudsvc serve --listen tcp://127.0.0.1:7420 --listen unix:/tmp/cloudsvc.sock --shm "
+        "cloudsvc-frames --out-dir frames/"}) {
+    EXPECT_NE(r.out.find(text), std::string::npos) << "missing: " << text << "\n" << r.out;
+  }
+  EXPECT_EQ(r.out.find("--lat"), std::string::npos);
+}
+
+TEST_F(CliServeOptionsTest, TopLevelHelpAndMessagesListServe) {
+  const Outcome help = run({"--help"});
+  EXPECT_EQ(help.cmd.exit_code, 0);
+  EXPECT_NE(help.out.find("serve"), std::string::npos) << help.out;
+  EXPECT_NE(help.out.find("cloudsvc serve --help"), std::string::npos) << help.out;
+
+  EXPECT_EQ(run({"bogus"}).cmd.error,
+            "cloudsvc: bogus: unknown sub-command (expected render, demo or serve)");
+  const Outcome none = run({});
+  EXPECT_EQ(none.cmd.exit_code, 2);
+  EXPECT_EQ(none.cmd.error, "cloudsvc: missing sub-command (expected render, demo or serve)");
+  EXPECT_NE(none.err.find("serve"), std::string::npos);
+}
+
+TEST_F(CliServeOptionsTest, HelpWinsOverBadValues) {
+  EXPECT_EQ(run({"serve", "--listen", "bogus", "--help"}).cmd.exit_code, 0);
+}
+
+// ---- --listen ----------------------------------------------------------------------------
+
+TEST_F(CliServeOptionsTest, TcpAddresses) {
+  const ListenAddress v4 = single_listen("tcp://192.168.1.20:8000");
+  EXPECT_EQ(v4.kind, ListenAddress::Kind::Tcp);
+  EXPECT_EQ(v4.host, "192.168.1.20");
+  EXPECT_EQ(v4.port, 8000);
+  EXPECT_EQ(v4.text, "tcp://192.168.1.20:8000");
+
+  const ListenAddress v6 = single_listen("tcp://[::1]:1");
+  EXPECT_EQ(v6.host, "::1");
+  EXPECT_EQ(v6.port, 1);
+  EXPECT_EQ(single_listen("tcp://[0:0:0:0:0:0:0:1]:65535").host, "::1") << "canonical form";
+  EXPECT_EQ(single_listen("tcp://[0:0:0:0:0:0:0:1]:65535").port, 65535);
+
+  const ListenAddress local = single_listen("tcp://localhost:7421");
+  EXPECT_EQ(local.host, "127.0.0.1");
+  EXPECT_EQ(local.port, 7421);
+  EXPECT_EQ(local.text, "tcp://localhost:7421");
+
+  // Not loopback: allowed (documented as exposing the service), nothing printed.
+  EXPECT_EQ(single_listen("tcp://0.0.0.0:7420").host, "0.0.0.0");
+  EXPECT_EQ(single_listen("tcp://[::]:7420").host, "::");
+}
+
+TEST_F(CliServeOptionsTest, UnixAddresses) {
+  const std::string sock = path("svc.sock");
+  const ListenAddress a = single_listen("unix:" + sock);
+  EXPECT_EQ(a.kind, ListenAddress::Kind::Unix);
+  EXPECT_EQ(a.path, sock);
+  EXPECT_EQ(a.text, "unix:" + sock);
+  EXPECT_FALSE(fs::exists(sock)) << "validation must not create the socket";
+
+  const std::string longest = path_of_length(107);
+  EXPECT_EQ(single_listen("unix:" + longest).path, longest);
+
+  const std::string stale = path("stale.sock");
+  make_socket_file(stale);
+  EXPECT_EQ(single_listen("unix:" + stale).path, stale) << "an existing socket may be replaced";
+}
+
+TEST_F(CliServeOptionsTest, SeveralAddressesKeepTheirOrder) {
+  const std::string sock = path("a.sock");
+  const ServeOptions o = serve_with({"--listen", "tcp://127.0.0.1:7420", "--listen",
+                                     "unix:" + sock, "--listen=tcp://[::1]:7420", "--listen",
+                                     "tcp://0.0.0.0:7421"});
+  ASSERT_EQ(o.listen.size(), 4u);
+  EXPECT_EQ(o.listen[0].host, "127.0.0.1");
+  EXPECT_EQ(o.listen[1].kind, ListenAddress::Kind::Unix);
+  EXPECT_EQ(o.listen[1].path, sock);
+  EXPECT_EQ(o.listen[2].host, "::1");
+  EXPECT_EQ(o.listen[2].port, 7420);
+  EXPECT_EQ(o.listen[3].port, 7421);
+  // Different families on the same port do not overlap.
+  EXPECT_EQ(serve_with({"--listen", "tcp://0.0.0.0:7420", "--listen", "tcp://[::]:7420"})
+                .listen.size(),
+            2u);
+}
+
+TEST_F(CliServeOptionsTest, BadSchemes) {
+  for (const char* address : {"http://127.0.0.1:7420", "TCP://127.0.0.1:7420", "127.0.0.1:7420",
+                              "tcp:/127.0.0.1:7420", "udp://127.0.0.1:7420", "/tmp/x.sock",
+                              "unix/tmp/x.sock"}) {
+    expect_listen_rejected(address);
+  }
+  expect_serve_rejected({"--listen", ""}, "--listen", "\"\"");
+  expect_serve_rejected({"--listen"}, "--listen");
+  expect_serve_rejected({"--listen="}, "--listen");
+}
+
+TEST_F(CliServeOptionsTest, BadPorts) {
+  for (const char* address :
+       {"tcp://127.0.0.1:0", "tcp://127.0.0.1:65536", "tcp://127.0.0.1:abc", "tcp://127.0.0.1",
+        "tcp://127.0.0.1:", "tcp://127.0.0.1:-1", "tcp://127.0.0.1:+80", "tcp://127.0.0.1:80.5",
+        "tcp://127.0.0.1:99999999999", "tcp://[::1]", "tcp://[::1]:", "tcp://[::1]80",
+        "tcp://[::1]:0"}) {
+    expect_listen_rejected(address);
+  }
+  const Outcome r = run({"serve", "--listen", "tcp://127.0.0.1:65536"});
+  EXPECT_EQ(r.cmd.error,
+            "cloudsvc serve: --listen tcp://127.0.0.1:65536: port 65536 out of range [1, 65535]");
+}
+
+TEST_F(CliServeOptionsTest, HostsMustBeNumericOrLocalhost) {
+  for (const char* address :
+       {"tcp://example.com:7420", "tcp://my-host:7420", "tcp://LOCALHOST.:7420",
+        "tcp://localhost.localdomain:7420", "tcp://:7420", "tcp://[]:7420", "tcp://::1:7420",
+        "tcp://[127.0.0.1]:7420", "tcp://[localhost]:7420", "tcp://1.2.3:7420",
+        "tcp://256.0.0.1:7420", "tcp://01.2.3.4:7420", "tcp://[::1:7420", "tcp://[fe80::1%lo]:7420",
+        "tcp://127.0.0.1 :7420"}) {
+    expect_listen_rejected(address);
+  }
+}
+
+TEST_F(CliServeOptionsTest, BadUnixPaths) {
+  expect_listen_rejected("unix:");
+  expect_listen_rejected("unix:" + path_of_length(108));
+  expect_listen_rejected("unix:" + path("missing/dir/x.sock"));
+  const std::string file = write_file("plain.txt", "x");
+  expect_listen_rejected("unix:" + file);           // exists, not a socket
+  expect_listen_rejected("unix:" + file + "/x.sock");  // parent is a file
+  expect_listen_rejected("unix:" + dir_.string());  // a directory
+  expect_listen_rejected("unix:" + dir_.string() + "/");
+  expect_listen_rejected("unix:/proc/cloudsvc.sock");  // not writable
+  const Outcome r = run({"serve", "--listen", "unix:" + path_of_length(108)});
+  EXPECT_NE(r.cmd.error.find("108 bytes, at most 107"), std::string::npos) << r.cmd.error;
+}
+
+TEST_F(CliServeOptionsTest, DuplicateAddresses) {
+  const auto expect_pair_rejected = [](const std::string& first, const std::string& second) {
+    expect_serve_rejected({"--listen", first, "--listen", second}, "--listen", second);
+  };
+  expect_pair_rejected("tcp://127.0.0.1:7420", "tcp://127.0.0.1:7420");
+  expect_pair_rejected("tcp://localhost:7420", "tcp://127.0.0.1:7420");
+  expect_pair_rejected("tcp://[::1]:7420", "tcp://[0::1]:7420");
+  expect_pair_rejected("tcp://0.0.0.0:7420", "tcp://127.0.0.1:7420");  // wildcard covers it
+  expect_pair_rejected("tcp://[::1]:9000", "tcp://[::]:9000");
+  expect_pair_rejected("unix:" + path("a.sock"), "unix:" + path("a.sock"));
+  expect_pair_rejected("unix:" + path("a.sock"), "unix:" + path("sub/../a.sock"));
+  const Outcome r = run({"serve", "--listen", "tcp://localhost:7420", "--listen",
+                         "tcp://127.0.0.1:7420"});
+  EXPECT_EQ(r.cmd.error,
+            "cloudsvc serve: --listen tcp://127.0.0.1:7420: same address as --listen "
+            "tcp://localhost:7420 (each address at most once)");
+}
+
+// ---- shared memory, window, files --------------------------------------------------------
+
+TEST_F(CliServeOptionsTest, SinkFlags) {
+  const std::string nested = path("frames/a/b");
+  const ServeOptions o = serve_with({"--shm", "Cloud_svc-1.frames", "--shm-max-size", "8192x1",
+                                     "--size", "640x1", "--window", "--out-dir", nested});
+  EXPECT_EQ(o.shm_name, "Cloud_svc-1.frames");
+  EXPECT_EQ(o.shm_max_width, 8192);
+  EXPECT_EQ(o.shm_max_height, 1);
+  EXPECT_TRUE(o.window);
+  EXPECT_EQ(o.out_dir, nested);
+  EXPECT_FALSE(fs::exists(nested)) << "the service, not the parser, creates the directory";
+
+  EXPECT_EQ(serve_with({"--shm", std::string(200, 'n')}).shm_name, std::string(200, 'n'));
+  EXPECT_EQ(serve_with({"--shm", "x"}).shm_max_width, 1920);
+  EXPECT_EQ(serve_with({"--out-dir", dir_.string()}).out_dir, dir_.string());
+  EXPECT_EQ(serve_with({"--shm", "ring", "--shm-max-size", "640x360"}).shm_max_height, 360);
+}
+
+TEST_F(CliServeOptionsTest, BadShmNames) {
+  for (const std::string& name : {std::string(""), std::string("."), std::string(".."),
+                                 std::string("a/b"), std::string("/frames"),
+                                 std::string("a b"), std::string("caf\xc3\xa9"),
+                                 std::string("x*"), std::string(201, 'n')}) {
+    expect_serve_rejected({"--shm", name}, "--shm", name.empty() ? "\"\"" : name);
+  }
+}
+
+TEST_F(CliServeOptionsTest, BadShmSizes) {
+  for (const char* value : {"0x0", "8193x100", "100x8193", "640", "axb", "-5x5", "1.5x2"}) {
+    expect_serve_rejected({"--shm", "ring", "--shm-max-size", value}, "--shm-max-size", value);
+  }
+  expect_serve_rejected({"--shm-max-size", "640x360"}, "--shm-max-size", "640x360");  // no --shm
+  // The initial view must fit the ring.
+  expect_serve_rejected({"--shm", "ring", "--size", "1921x100"}, "--size", "1921x100");
+  expect_serve_rejected({"--shm", "ring", "--shm-max-size", "320x200"}, "--shm-max-size",
+                        "320x200");
+}
+
+TEST_F(CliServeOptionsTest, BadOutputDirectories) {
+  const std::string file = write_file("file.txt", "x");
+  expect_serve_rejected({"--out-dir", file}, "--out-dir", file);
+  expect_serve_rejected({"--out-dir", file + "/sub"}, "--out-dir", file + "/sub");
+  expect_serve_rejected({"--out-dir", "/proc/cloudsvc-frames"}, "--out-dir");
+  expect_serve_rejected({"--out-dir", ""}, "--out-dir");
+}
+
+// ---- scene and limits ------------------------------------------------------------------
+
+TEST_F(CliServeOptionsTest, SceneFlags) {
+  const ServeOptions o = serve_with({"--time", "2026-03-01T12:30:00+02:00", "--size", "1280x720",
+                                     "--fov", "170", "--weather", "overcast-stratus"});
+  EXPECT_EQ(o.time_text, "2026-03-01T12:30:00+02:00");
+  EXPECT_DOUBLE_EQ(o.unix_time_s, 1772361000.0);
+  EXPECT_EQ(o.width, 1280);
+  EXPECT_EQ(o.height, 720);
+  EXPECT_DOUBLE_EQ(o.fov_deg, 170.0);
+  EXPECT_EQ(o.weather_arg, "overcast-stratus");
+  EXPECT_EQ(o.weather.layers.size(), weather::preset("overcast-stratus")->layers.size());
+
+  const auto cb = weather::preset("cumulonimbus");
+  ASSERT_TRUE(cb.has_value());
+  const std::string file = write_file("sky.json", weather::to_json(*cb));
+  const ServeOptions f = serve_with({"--weather", file});
+  ASSERT_EQ(f.weather.layers.size(), cb->layers.size());
+  ASSERT_FALSE(f.weather.layers.empty());
+  EXPECT_DOUBLE_EQ(f.weather.layers[0].base_m, cb->layers[0].base_m);
+}
+
+TEST_F(CliServeOptionsTest, LimitFlags) {
+  EXPECT_EQ(serve_with({"--max-clients", "1"}).max_clients, 1);
+  EXPECT_EQ(serve_with({"--max-clients", "1024"}).max_clients, 1024);
+  EXPECT_EQ(serve_with({"--exit-after-frames", "0"}).exit_after_frames, 0);
+  EXPECT_EQ(serve_with({"--exit-after-frames", "300"}).exit_after_frames, 300);
+}
+
+TEST_F(CliServeOptionsTest, BadSceneValues) {
+  for (const char* value : {"2026-13-01T00:00Z", "yesterday", "2026-06-21", ""}) {
+    expect_serve_rejected({"--time", value}, "--time");
+  }
+  expect_serve_rejected({"--weather", "no-such-preset"}, "--weather", "no-such-preset");
+  expect_serve_rejected({"--weather", path("missing.json")}, "--weather", path("missing.json"));
+  const std::string broken = write_file("broken.json", "{ \"layers\": [ {");
+  expect_serve_rejected({"--weather", broken}, "--weather", broken);
+  for (const char* value : {"0x0", "8193x100", "640", "axb"}) {
+    expect_serve_rejected({"--size", value}, "--size", value);
+  }
+  for (const char* value : {"0", "170.01", "nan", "abc", ""}) {
+    expect_serve_rejected({"--fov", value}, "--fov");
+  }
+}
+
+TEST_F(CliServeOptionsTest, BadLimits) {
+  for (const char* value : {"0", "1025", "-1", "abc", "1.5", "", "99999999999"}) {
+    expect_serve_rejected({"--max-clients", value}, "--max-clients");
+  }
+  EXPECT_EQ(run({"serve", "--max-clients", "0"}).cmd.error,
+            "cloudsvc serve: --max-clients 0: out of range [1, 1024] (clients)");
+  for (const char* value : {"-1", "2.5", "abc", "", "99999999999"}) {
+    expect_serve_rejected({"--exit-after-frames", value}, "--exit-after-frames");
+  }
+}
+
+TEST_F(CliServeOptionsTest, UnknownRepeatedAndStrayArguments) {
+  expect_serve_rejected({"--lat", "1"}, "--lat");
+  expect_serve_rejected({"--shm", "a", "--shm", "b"}, "--shm", "a b");
+  expect_serve_rejected({"--max-clients", "2", "--max-clients", "3"}, "more than once");
+  expect_serve_rejected({"--listen", "tcp://127.0.0.1:1", "stray"}, "stray");
+  EXPECT_EQ(run({"serve", "--foo"}).cmd.error, "cloudsvc serve: --foo: unknown flag");
+}
+
+}  // namespace
+}  // namespace cloudsvc

@@ -11,7 +11,7 @@ struct CloudLayerGpu {
   glm::vec4 optics;         // sigma_t max 1/m, g_HG, g_D, alpha
   glm::vec4 optics2;        // w_D, 1/base period, 1/detail period, detail erosion
   glm::vec4 profile;        // bottom ramp, top ramp, top weight, noise vertical scale
-  glm::vec4 base_offset;    // base noise offset (tile units)
+  glm::vec4 base_offset;    // base noise offset (tile units), w = stratiform flag
   glm::vec4 detail_offset;  // detail noise offset (tile units)
   glm::mat4 noise_rotation;  // local ENU -> ECEF axes of the wind-rotated cloud field
 };

@@ -125,6 +125,7 @@ FrameUniforms make_frame_uniforms(const ViewRequest& view, const weather::Weathe
     g.profile = glm::vec4(tr.profile.bottom_ramp, tr.profile.top_ramp, tr.profile.top_weight,
                           static_cast<float>(tr.noise_vertical_scale));
     g.base_offset = wrapped_offset(cam_field, base_period);
+    g.base_offset.w = tr.stratiform ? 1.0f : 0.0f;
     g.detail_offset = wrapped_offset(cam_field, detail_period);
     g.noise_rotation = glm::mat4(glm::mat3(rot * enu_to_ecef));
   }

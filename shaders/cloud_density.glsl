@@ -67,8 +67,9 @@ float cloud_extinction(int li, vec3 p, float alt, bool detail, out float coverag
   vec4 w = weather_at(p);
   coverage = local_coverage(L, w);
   if (coverage <= 0.0) return 0.0;
-  // vertical development: 0.5 = full layer depth, less = lower tops
-  float depth_fraction = clamp(0.5 + w.g, 0.3, 1.0);
+  // vertical development: 0.5 = full layer depth, less = lower tops; stratiform sheets
+  // (base_offset.w = 1) are not driven by it (weather/cloud_layer.h)
+  float depth_fraction = L.base_offset.w > 0.5 ? 1.0 : clamp(0.5 + w.g, 0.3, 1.0);
   float profile = height_profile(L.profile, f / depth_fraction) * step(f, depth_fraction);
   if (profile <= 0.0) return 0.0;
   // Noise space f(X) = X + (k - 1) a(X) n(X): altitude a scaled by k along the local up

@@ -8,7 +8,7 @@ struct CloudLayerGpu {
   vec4 optics;         // x sigma_t max (1/m), y g_HG, z g_D, w Draine alpha
   vec4 optics2;        // x w_D, y 1/base noise period (1/m), z 1/detail period (1/m), w detail erosion
   vec4 profile;        // x bottom ramp, y top ramp, z top weight, w noise vertical scale k
-  vec4 base_offset;    // xyz offset of the base noise in tile units (ECEF axes), wrapped
+  vec4 base_offset;    // xyz offset of the base noise in tile units (ECEF axes), wrapped; w stratiform (1/0)
   vec4 detail_offset;  // xyz offset of the detail noise in tile units, wrapped
   mat4 noise_rotation; // upper 3x3: local ENU -> ECEF axes of the wind-rotated field (renderer/wind_drift.h)
 };

@@ -29,7 +29,9 @@ void main() {
   ivec2 px = ivec2(gl_GlobalInvocationID.xy);
   ivec2 size = imageSize(out_lut);
   if (any(greaterThanEqual(px, size))) return;
-  vec2 uv = (vec2(px) + 0.5) / vec2(size);
+  // Unit parameters at px / (n - 1): multiscatter() in atmosphere_lookup.glsl reads
+  // texel centres with the same mapping.
+  vec2 uv = vec2(px) / vec2(size - 1);
   float mu_sun = uv.x * 2.0 - 1.0;
   float r = ATMO_BOTTOM + clamp(uv.y * (ATMO_TOP - ATMO_BOTTOM), 1.0, ATMO_TOP - ATMO_BOTTOM - 1.0);
   vec3 sun = vec3(sqrt(max(0.0, 1.0 - mu_sun * mu_sun)), 0.0, mu_sun);

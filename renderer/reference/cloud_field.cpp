@@ -1,0 +1,73 @@
+// Cloud density field of the reference (see cloud_field.h).
+#include "renderer/reference/cloud_field.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "renderer/reference/texture_sampling.h"
+
+namespace cloudsvc::reference {
+
+namespace {
+
+double saturate(double x) { return std::clamp(x, 0.0, 1.0); }
+
+// GLSL smoothstep(e0, e1, x): t = clamp((x - e0) / (e1 - e0), 0, 1), t^2 (3 - 2 t).
+double smoothstep(double e0, double e1, double x) {
+  const double t = saturate((x - e0) / (e1 - e0));
+  return t * t * (3.0 - 2.0 * t);
+}
+
+}  // namespace
+
+CloudField::CloudField(const ReferenceScene& scene, const ReferenceInputs& inputs, bool honour_stratiform)
+    : scene_(scene), inputs_(inputs), honour_stratiform_(honour_stratiform),
+      centre_to_camera_ecef_(scene.shell.enu_to_ecef[2] * (scene.shell.radius_m + scene.shell.camera_alt_m)) {}
+
+glm::dvec4 CloudField::weather_at(const glm::dvec3& p) const {
+  // Direction from the shell centre in ECEF axes: E (p + (0, 0, R + h)) = E p + (R + h) up_camera.
+  const glm::dvec3 q = scene_.shell.enu_to_ecef * p + centre_to_camera_ecef_;
+  const double lat = std::atan2(q.z, std::sqrt(q.x * q.x + q.y * q.y));  // |q| ~ 6.4e6 m: no overflow
+  const double lon = std::atan2(q.y, q.x);
+  return sample_weather_map(inputs_.weather_map, inputs_.pole_south, inputs_.pole_north, lat, lon);
+}
+
+double CloudField::height_profile(const ReferenceLayer& l, double x) {
+  const double bottom = smoothstep(0.0, std::max(l.bottom_ramp, 1e-3), x);
+  const double top = 1.0 - smoothstep(1.0 - std::max(l.top_ramp, 1e-3), 1.0, x);
+  return bottom * top * (1.0 + (x - 1.0) * l.top_weight);  // mix(1, x, top_weight)
+}
+
+CloudSample CloudField::sample(int li, const glm::dvec3& p, double alt, bool detail, std::uint64_t& evals) const {
+  CloudSample out;
+  const ReferenceLayer& L = scene_.layers[static_cast<std::size_t>(li)];
+  const double f = (alt - L.base_m) / (L.top_m - L.base_m);
+  if (!(f > 0.0 && f < 1.0)) return out;
+  ++evals;
+  const glm::dvec4 w = weather_at(p);
+  const double c = L.coverage;
+  out.coverage = std::clamp(c + 1.2 * std::min(c, 1.0 - c) * (2.0 * w.r - 1.0), 0.0, 1.0);
+  if (out.coverage <= 0.0) return out;
+  const double depth_fraction = (honour_stratiform_ && L.stratiform) ? 1.0 : std::clamp(0.5 + w.g, 0.3, 1.0);
+  if (f > depth_fraction) return out;
+  const double profile = height_profile(L, f / depth_fraction);
+  if (profile <= 0.0) return out;
+  // m, wind-rotated ECEF axes, altitude scaled by k along the local up
+  const glm::dvec3 stretched =
+      L.noise_vertical_scale == 1.0 ? p : p + (L.noise_vertical_scale - 1.0) * alt * scene_.shell.up_at(p);
+  const glm::dvec3 field = L.camera_field + L.field_from_local * stretched;
+  const double shape = sample_r8_trilinear_repeat(inputs_.base_noise, field / L.base_period_m);
+  const double threshold = interpolate_quantile(inputs_.base_quantiles, 1.0 - out.coverage);
+  double d = saturate((shape * profile - threshold) / kCoverageEdge);
+  if (d <= 0.0) return out;
+  if (detail && d < 1.0) {
+    const double dn = sample_r8_trilinear_repeat(inputs_.detail_noise, field / L.detail_period_m);
+    const double floor_value = dn * L.erosion;
+    d = saturate((d - floor_value) / (1.0 - floor_value));
+  }
+  const double density_modulation = std::exp2(2.0 * (w.b - 0.5));
+  out.sigma_t = d * L.density_scale * density_modulation * L.sigma_max_per_m;
+  return out;
+}
+
+}  // namespace cloudsvc::reference

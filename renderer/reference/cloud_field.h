@@ -1,0 +1,63 @@
+// The cloud density field of the model (docs/RENDERING.md "Cloud density"; Schneider 2015
+// / Nubis, seeds 002-004), evaluated in double precision from the shared inputs with
+// emulated GL sampling (texture_sampling.h). For a local point p at altitude a inside
+// layer L (base b, top t), f = (a - b) / (t - b):
+//   1. weather map w at the latitude/longitude of p's direction from the shell centre
+//      (ECEF axes; atan2 for both angles), with the pole blend;
+//      local coverage c = clamp(c_L + 1.2 min(c_L, 1 - c_L)(2 w.r - 1), 0, 1);
+//   2. depth fraction f_v = clamp(0.5 + w.g, 0.3, 1) (see honour_stratiform below),
+//      profile P = H(f / f_v) [f <= f_v], H(x) = smoothstep(0, r_b, x)
+//      (1 - smoothstep(1 - r_t, 1, x)) mix(1, x, top_weight), ramps floored at 1e-3;
+//   3. base shape S = trilinear base noise at (field position) / base period, where the
+//      field position is the wind-rotated ECEF position with the altitude scaled by the
+//      type's noise vertical scale k: R (X + (k - 1) a n), n the shell's up at the point
+//      (k < 1 stretches features upwards: convective towers);
+//      d = saturate((S P - Q(1 - c)) / 0.12), Q the base noise's quantile function;
+//   4. where 0 < d < 1 and detail is wanted: D = trilinear detail noise at
+//      (field position) / detail period, d = saturate((d - D e) / (1 - D e)), e = erosion;
+//   5. sigma_t = d * density_scale * 2^(2 (w.b - 0.5)) * sigma_max (1/m).
+#pragma once
+
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+#include "renderer/reference/reference_inputs.h"
+#include "renderer/reference/reference_scene.h"
+
+namespace cloudsvc::reference {
+
+constexpr double kCoverageEdge = 0.12;  // soft edge of the coverage threshold, base-noise units
+
+struct CloudSample {
+  double sigma_t = 0.0;   // extinction, 1/m
+  double coverage = 0.0;  // local coverage c (0 outside the layer or where the map clears it)
+};
+
+class CloudField {
+ public:
+  // honour_stratiform: when true (the model's definition, as in the shader), stratiform
+  // layers ignore the weather map's vertical-development channel (f_v = 1), as
+  // weather/cloud_layer.h and docs/WEATHER.md describe them; false applies f_v to every
+  // layer (an older shader did; kept for comparisons).
+  CloudField(const ReferenceScene& scene, const ReferenceInputs& inputs, bool honour_stratiform = true);
+
+  // Extinction of layer li at local point p with altitude alt (above the shell sphere).
+  // Increments evals when the point lies inside the layer's altitude range (the same
+  // counting rule as the GPU's density_evals).
+  CloudSample sample(int li, const glm::dvec3& p, double alt, bool detail, std::uint64_t& evals) const;
+
+  // The pieces, for tests: weather map value at p; the vertical profile at height fraction x.
+  glm::dvec4 weather_at(const glm::dvec3& p) const;
+  static double height_profile(const ReferenceLayer& layer, double x);
+
+  const ReferenceScene& scene() const { return scene_; }
+
+ private:
+  const ReferenceScene& scene_;
+  const ReferenceInputs& inputs_;
+  bool honour_stratiform_;
+  glm::dvec3 centre_to_camera_ecef_;  // shell centre -> camera, ECEF axes, m
+};
+
+}  // namespace cloudsvc::reference

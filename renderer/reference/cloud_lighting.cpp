@@ -1,0 +1,102 @@
+// Converged cloud lighting pieces (see cloud_lighting.h).
+#include "renderer/reference/cloud_lighting.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "renderer/reference/shell_crossings.h"
+
+namespace cloudsvc::reference {
+
+namespace {
+constexpr double kCumulusPeriod_m = 8000.0;
+constexpr double kCumulusPeakSigma_per_m = 0.15;  // 0.1885 /m (d = 20 um) * 0.40 * 2
+}  // namespace
+
+double layer_step_scale(const ReferenceLayer& layer) {
+  const double peak_sigma = layer.sigma_max_per_m * layer.density_scale * 2.0;
+  // k > 1 would make the features vertically smaller than the period says (none does yet).
+  const double by_features = layer.base_period_m / kCumulusPeriod_m / std::max(layer.noise_vertical_scale, 1.0);
+  const double by_optics = peak_sigma > 0.0 ? kCumulusPeakSigma_per_m / peak_sigma : 8.0;
+  return std::clamp(std::min(by_features, by_optics), 1.0, 8.0);
+}
+
+double light_optical_depth(const CloudField& field, int li, const glm::dvec3& p, double alt, const glm::dvec3& sun,
+                           double mu_s, double step_m, double tau_stop, std::uint64_t& evals) {
+  const ShellFrame& s = field.scene().shell;
+  const ReferenceLayer& L = field.scene().layers[static_cast<std::size_t>(li)];
+  double len = 0.0;
+  if (const auto top = sphere_crossings(s.radius_m, alt, L.top_m, mu_s); top && top->t1 > 0.0) len = top->t1;
+  if (const auto base = sphere_crossings(s.radius_m, alt, L.base_m, mu_s); base && base->t0 > 0.0)
+    len = std::min(len, base->t0);
+  len = std::min(len, kLightMarchCap_m);
+  if (len <= 0.0) return 0.0;
+  const int n = std::max(1, static_cast<int>(std::ceil(len / step_m)));
+  const double dt = len / n;
+  double tau = 0.0;
+  for (int j = 0; j < n && tau < tau_stop; ++j) {
+    const glm::dvec3 x = p + sun * ((j + 0.5) * dt);
+    tau += field.sample(li, x, s.altitude_of(x), false, evals).sigma_t * dt;
+  }
+  return tau;
+}
+
+double ground_shadow_optical_depth(const CloudField& field, const glm::dvec3& p, double ground_alt,
+                                   const glm::dvec3& sun, double mu_s, double light_step_m, std::uint64_t& evals) {
+  const ShellFrame& s = field.scene().shell;
+  double tau = 0.0;
+  for (std::size_t li = 0; li < field.scene().layers.size(); ++li) {
+    const ReferenceLayer& L = field.scene().layers[li];
+    const auto top = sphere_crossings(s.radius_m, ground_alt, L.top_m, mu_s);
+    if (!top || top->t1 <= 0.0) continue;
+    const auto base = sphere_crossings(s.radius_m, ground_alt, L.base_m, mu_s);
+    const double t_base = (base && base->t1 > 0.0) ? base->t1 : 0.0;
+    const double t_top = top->t1;
+    if (t_top <= t_base) continue;
+    const double step = light_step_m * layer_step_scale(L);
+    const int n = std::max(1, static_cast<int>(std::ceil((t_top - t_base) / step)));
+    const double dt = (t_top - t_base) / n;
+    for (int j = 0; j < n; ++j) {
+      const glm::dvec3 x = p + sun * (t_base + (j + 0.5) * dt);
+      tau += field.sample(static_cast<int>(li), x, s.altitude_of(x), false, evals).sigma_t * dt;
+    }
+  }
+  return tau;
+}
+
+double octave_phase_sum(const model::JdDParams& phase, double cos_view_sun, double tau, int octaves, double a,
+                        double b, double c) {
+  double sum = 0.0, ai = 1.0, bi = 1.0, ci = 1.0;
+  for (int o = 0; o < octaves; ++o) {
+    const double p = (1.0 - phase.w_d) * model::hg_phase(cos_view_sun, phase.g_hg * ci) +
+                     phase.w_d * model::draine_phase(cos_view_sun, phase.g_d * ci, phase.alpha);
+    sum += bi * p * std::exp(-ai * tau);
+    ai *= a;
+    bi *= b;
+    ci *= c;
+  }
+  return sum;
+}
+
+double slab_diffuse_transmittance(double tau) { return 1.0 / (1.0 + 0.75 * (1.0 - kTwoStreamMeanCosine) * tau); }
+
+glm::dvec3 two_stream_diffuse(const ReferenceLayer& L, double alt, double mu_s, double coverage,
+                              const glm::dvec3& e_sun, const glm::dvec3& t_atm, const glm::dvec3& e_sky_here,
+                              const glm::dvec3& t_atm_ground, const glm::dvec3& e_sky_ground,
+                              const glm::dvec3& ground_albedo) {
+  const double sigma_nominal = L.sigma_max_per_m * L.density_scale * coverage;
+  const double tau_above = sigma_nominal * std::max(L.top_m - alt, 0.0);
+  const double tau_below = sigma_nominal * std::max(alt - L.base_m, 0.0);
+  const double Ta = slab_diffuse_transmittance(tau_above), Tb = slab_diffuse_transmittance(tau_below);
+  const double mu_pos = std::max(mu_s, 0.0);
+  const glm::dvec3 F_sun = e_sun * t_atm * mu_pos;        // direct solar flux on a horizontal surface above the layer
+  const glm::dvec3 E_sky = e_sun * e_sky_here;
+  const glm::dvec3 E_ground = ground_albedo * e_sun * (t_atm_ground * mu_pos + e_sky_ground);
+  const double direct_above = mu_pos > 0.0 ? std::exp(-tau_above / std::max(mu_pos, 0.05)) : 0.0;
+  const glm::dvec3 F_down = F_sun * std::max(Ta - direct_above, 0.0) + E_sky * Ta;
+  const glm::dvec3 F_up = (F_sun + E_sky) * Ta * (1.0 - Tb) + E_ground * Tb;
+  return (F_down + F_up) / (2.0 * std::numbers::pi);
+}
+
+}  // namespace cloudsvc::reference

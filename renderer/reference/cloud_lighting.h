@@ -1,0 +1,68 @@
+// Light in the clouds (docs/RENDERING.md "Light"), converged: the sun through a fine light
+// march with Wrenninge octaves, the two-stream diffuse term, and cloud shadows on the
+// ground through a fine march of every layer. Frames and units as in reference_scene.h;
+// optical depths dimensionless; radiances in the units of the solar irradiance given.
+#pragma once
+
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+#include "renderer/reference/cloud_field.h"
+
+namespace cloudsvc::reference {
+
+// The model's cap on the light march (m): the sun's optical depth is accumulated from the
+// sample to the layer top (or base, when the sun is below the horizontal) but over at most
+// 4 km (shaders/scene.comp LIGHT_MAX_DIST). It is part of the model definition: a long
+// grazing path through a sheet stops there.
+constexpr double kLightMarchCap_m = 4000.0;
+// Droplet phase mean cosine used by the two-stream terms (scene.comp MEAN_COSINE).
+constexpr double kTwoStreamMeanCosine = 0.86;
+
+// Step scale of a layer: cloud_step_m and light_step_m are for cumulus (8 km noise period,
+// peak extinction ~0.15 /m). A layer whose noise features are larger (period / 8 km,
+// divided by the noise vertical scale where it exceeds 1) gets
+// proportionally longer steps unless its peak extinction sigma_max * density_scale * 2
+// (the weather map doubles density at most) would then make a step optically thicker than
+// a cumulus step. Clamped to [1, 8]: optically denser layers (cumulonimbus, peak 0.3 /m)
+// keep the base steps (docs/REFERENCE.md shows they converge there too). Halving the base
+// steps halves every layer's steps, so convergence tests apply.
+double layer_step_scale(const ReferenceLayer& layer);
+
+// Sun optical depth of layer li from local point p (altitude alt, sun zenith cosine mu_s
+// there) along the sun direction: midpoint rule with steps <= step_m over
+// [0, min(exit through the top, entry through the base, 4 km)], without detail erosion
+// (the model's light march uses the base shape only). Stops early once the depth exceeds
+// tau_stop (beyond it every octave's e^{-a^i tau} is negligible).
+double light_optical_depth(const CloudField& field, int li, const glm::dvec3& p, double alt, const glm::dvec3& sun,
+                           double mu_s, double step_m, double tau_stop, std::uint64_t& evals);
+
+// Optical depth of all layers from a ground point (local p, altitude ground_alt) towards
+// the sun, midpoint rule with each layer's step (light_step_m * layer_step_scale) between
+// the sun ray's crossings of the layer's base and top; no detail erosion.
+double ground_shadow_optical_depth(const CloudField& field, const glm::dvec3& p, double ground_alt,
+                                   const glm::dvec3& sun, double mu_s, double light_step_m, std::uint64_t& evals);
+
+// Wrenninge et al. 2013 octave sum: sum_{i < n} b^i p(nu; g c^i) e^{-a^i tau}, p the
+// Jendersie-d'Eon HG + Draine blend with both asymmetries scaled by c^i (sr^-1).
+double octave_phase_sum(const model::JdDParams& phase, double cos_view_sun, double tau, int octaves, double a,
+                        double b, double c);
+
+// Two-stream diffuse transmittance of a conservative slab (Bohren 1987):
+// T(tau) = 1 / (1 + 3/4 (1 - g) tau), g = kTwoStreamMeanCosine.
+double slab_diffuse_transmittance(double tau);
+
+// Diffuse in-scattered radiance per unit scattering at altitude alt inside layer L
+// (docs/RENDERING.md): vertical optical depths above/below from the nominal extinction
+// sigma_max * density_scale * coverage, F_down = F_sun (T_a - e^{-tau_a / max(mu_s, 0.05)})^+
+// + E_sky T_a, F_up = (F_sun + E_sky) T_a (1 - T_b) + E_ground T_b, result (F_down + F_up) / 2 pi.
+// Inputs per unit solar irradiance except e_sun: t_atm = sun transmittance at the point,
+// e_sky_here = sky irradiance at the point, t_atm_ground / e_sky_ground at ground level
+// for the same mu_s; ground_albedo rgb.
+glm::dvec3 two_stream_diffuse(const ReferenceLayer& L, double alt, double mu_s, double coverage,
+                              const glm::dvec3& e_sun, const glm::dvec3& t_atm, const glm::dvec3& e_sky_here,
+                              const glm::dvec3& t_atm_ground, const glm::dvec3& e_sky_ground,
+                              const glm::dvec3& ground_albedo);
+
+}  // namespace cloudsvc::reference

@@ -1,0 +1,29 @@
+// Error metrics between two frames on linear radiance (DESIGN.md §7), rgb channels only:
+//   RMSE      = sqrt(mean over pixels and channels of (test - ref)^2)   (W m^-2 sr^-1 nm^-1)
+//   relative  = RMSE / mean over pixels and channels of ref
+//   PSNR      = 10 log10(peak^2 / MSE) dB, peak = the reference's largest rgb value
+//               (so a frame with the sun disk in view would score high: compare views
+//               without it, or pass a fixed peak)
+//   max error = largest |test - ref| of any channel, and where it is
+// plus the RMSE of the opacity channel (a).
+#pragma once
+
+#include "renderer/render_types.h"
+
+namespace cloudsvc::reference {
+
+struct ImageDifference {
+  double rmse = 0.0;
+  double relative_rmse = 0.0;
+  double psnr_db = 0.0;
+  double peak = 0.0;           // peak used for the PSNR
+  double mean_reference = 0.0;
+  double max_error = 0.0;
+  int max_error_x = 0, max_error_y = 0;
+  double opacity_rmse = 0.0;
+};
+
+// Images must have the same size. fixed_peak > 0 replaces the reference's peak.
+ImageDifference compare_images(const FrameImage& test, const FrameImage& reference, double fixed_peak = 0.0);
+
+}  // namespace cloudsvc::reference

@@ -1,0 +1,72 @@
+// CPU reference renderer (issue "Accuracy", DESIGN.md §7): the same physical model as the
+// GPU renderer (docs/RENDERING.md), evaluated independently in double precision at
+// converged settings. It shares only the inputs with the GPU path (weather module data,
+// geodesy, model constants and the model's CPU twins in renderer/model/); every line of
+// evaluation code (camera, shell geometry, texture sampling, density, light, atmosphere)
+// is its own. See docs/REFERENCE.md for what it can and cannot catch and its convergence.
+//
+// Per pixel (ray through the pixel centre, no jitter):
+//   clouds: march every layer interval with steps of cloud_step_m (scaled per layer,
+//     cloud_lighting.h) until the cloud transmittance falls below min_transmittance;
+//     at each sample with sigma_t > 0: sun = E_sun T_atm sum_i b^i p_i e^{-a^i tau} with tau
+//     from a light march with light_step_m steps (4 km cap), plus the two-stream diffuse
+//     term; energy-conserving accumulation (Hillaire 2016, albedo 1).
+//   background: sky (single scattering integrated along the ray + Psi_ms, sun disk, night
+//     sky radiance) or ground (Lambertian, sun through a fine shadow march of every layer,
+//     sky irradiance, aerial perspective integrated along the ray to the ground).
+//   aerial perspective on the clouds: integrated along the ray to the transmittance-
+//     weighted mean cloud depth (the model's definition).
+#pragma once
+
+#include "renderer/reference/atmosphere_tables.h"
+#include "renderer/reference/reference_inputs.h"
+#include "renderer/render_types.h"
+#include "renderer/wind_drift.h"  // WindAnchor (plain struct)
+#include "weather/cloud_layer.h"
+
+namespace cloudsvc::reference {
+
+struct ReferenceSettings {
+  // Cloud march
+  double cloud_step_m = 5.0;         // primary step inside cloud layers for cumulus (scaled per layer)
+  double light_step_m = 10.0;        // light-march and ground-shadow step for cumulus (scaled per layer)
+  double min_transmittance = 1e-4;   // the primary march stops below this cloud transmittance (GPU: 1e-3),
+                                     // and the background behind is then not evaluated: what is left
+                                     // behind contributes < 1e-4 of its own radiance
+  double light_cutoff = 1e-4;        // light march stops once every octave's e^{-a^i tau} < this (relative
+                                     // to the unshadowed sun term of the sample)
+  // Model parameters: RenderQuality's defaults (the GPU's model)
+  int ms_octaves = 3;                // Wrenninge octaves
+  double ms_a = 0.4, ms_b = 0.5, ms_c = 0.6;
+  // Atmosphere
+  double atmosphere_step_m = 500.0;  // base step of the per-pixel atmosphere integrations (atmo::altitude_step):
+                                     // sun transmittance, sky and aerial-perspective single scattering
+  double atmosphere_max_step_factor = 20.0;  // longest step along view rays = factor * atmosphere_step_m
+  AtmosphereTableSettings tables;    // Psi_ms / E_sky tables: their own quadrature and step (convergence in
+                                     // tests/reference_atmosphere_test.cpp); threads are set from `threads`
+  // Model variant (see cloud_field.h); false = the shader's definition
+  bool honour_stratiform = true;
+  // Shared inputs (sizes and seeds as RendererConfig's defaults)
+  InputConfig inputs;
+  int threads = 2;
+};
+
+// Solar spectral irradiance at the top of the atmosphere at 680, 550, 440 nm
+// (W m^-2 nm^-1; the extraterrestrial spectrum of Bruneton's precomputed-scattering demo),
+// the sun's angular radius, the ground albedo and the night-sky radiance: the model
+// constants of docs/RENDERING.md, stated here for the reference (the accuracy test checks
+// them against the GPU path's renderer/scene_setup.h).
+inline constexpr double kSolarIrradiance[3] = {1.474, 1.8504, 1.91198};
+inline constexpr double kSunAngularRadiusDeg = 0.2667;
+inline constexpr double kNightSkyRadiance = 2.0e-9;  // W m^-2 sr^-1 nm^-1, airglow + starlight
+
+// Renders the view (rgba float, rows from the top; rgb radiance in W m^-2 sr^-1 nm^-1 at
+// 680/550/440 nm, a = cloud opacity). Stats: render_ms (wall clock, including the first
+// call's table and input generation), sun position, cloud_pixels (opacity > 0.01),
+// density_evals_per_pixel (all cloud density evaluations: primary, light, ground shadow),
+// nonfinite_pixels (pixels zeroed because of NaN/Inf/negative values; must stay 0).
+// wind_anchor: where/when the cloud fields are undisplaced; nullptr = this view.
+FrameImage render_reference(const ViewRequest& view, const weather::Weather& weather,
+                            const ReferenceSettings& settings = {}, const WindAnchor* wind_anchor = nullptr);
+
+}  // namespace cloudsvc::reference

@@ -1,0 +1,97 @@
+// `sim_client watch --shm NAME`: follows the service's shared-memory frame ring and prints,
+// once a second, how many frames arrived, the frame rate, the newest frame and gaps.
+#include <CLI/CLI.hpp>
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <memory>
+#include <thread>
+
+#include "sim_client/cli_values.h"
+#include "sim_client/commands.h"
+#include "sim_client/shm_frame_reader.h"
+#include "sim_client/watch_stats.h"
+
+namespace cloudsvc::sim {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+constexpr const char* kName = "watch";
+constexpr std::chrono::milliseconds kPollInterval{1};  // latest_frame() is one atomic load
+constexpr std::chrono::seconds kReportInterval{1};
+
+std::atomic<bool> g_interrupted{false};
+extern "C" void on_interrupt(int) { g_interrupted = true; }
+
+struct WatchArgs {
+  std::string shm, seconds;
+};
+
+struct WatchOptions {
+  std::string shm;
+  double seconds = 0.0;  // 0 = until interrupted
+};
+
+WatchOptions validate(const WatchArgs& a) {
+  WatchOptions o;
+  if (a.shm.empty()) fail_flag("--shm", a.shm, "required: the ring name given to cloudsvc serve --shm");
+  if (a.shm.find('/') != std::string::npos) fail_flag("--shm", a.shm, "give the name without '/'");
+  o.shm = a.shm;
+  if (!a.seconds.empty()) o.seconds = parse_flag_number("--seconds", a.seconds, NumberRange{0.0, 31536000.0, true, "seconds"});
+  return o;
+}
+
+int run_watch(const WatchOptions& o) {
+  std::unique_ptr<client::ShmFrameReader> reader;
+  try {
+    reader = std::make_unique<client::ShmFrameReader>(o.shm);
+  } catch (const std::exception& e) {
+    throw RunError("--shm " + o.shm + ": " + e.what());
+  }
+  std::signal(SIGINT, on_interrupt);
+  std::signal(SIGTERM, on_interrupt);
+  const auto start = Clock::now();
+  WatchStats stats(reader->latest_frame());
+  auto next_report = start + kReportInterval;
+  client::ShmFrame frame;
+  std::uint64_t described = 0;  // frame number whose slot header `frame` holds
+  for (;;) {
+    const auto now = Clock::now();
+    const double t = std::chrono::duration<double>(now - start).count();
+    const bool done = g_interrupted || (o.seconds > 0.0 && t >= o.seconds);
+    stats.observe(reader->latest_frame(), t);
+    if (now >= next_report || done) {
+      // One copy per report for size and format (the counters need no copy).
+      if (stats.newest() > described && reader->read_latest(described, frame)) described = frame.info.frame_number;
+      std::printf("%s\n", stats.report_line(t, described ? &frame.info : nullptr).c_str());
+      std::fflush(stdout);
+      stats.start_interval(t);
+      next_report += kReportInterval;
+    }
+    if (done) break;
+    std::this_thread::sleep_for(kPollInterval);
+  }
+  std::printf("%s\n", stats.summary_line(std::chrono::duration<double>(Clock::now() - start).count()).c_str());
+  std::fflush(stdout);
+  return kExitOk;
+}
+
+}  // namespace
+
+Command add_watch_command(CLI::App& app) {
+  auto args = std::make_shared<WatchArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      kName, "Follow the service's shared-memory frame ring: once a second print frames received, frame rate, newest "
+             "frame number, size and format, frames skipped and the age of the newest frame");
+  cmd->add_option("--shm", args->shm, "Name of the ring, as given to cloudsvc serve --shm (without '/'); required")
+      ->type_name("NAME");
+  cmd->add_option("--seconds", args->seconds, "Stop after this many seconds, (0, 31536000]; default: until Ctrl-C")
+      ->type_name("S");
+  cmd->footer(std::string(kExitCodesHelp) + "\nExample: sim_client watch --shm cloudsvc-frames --seconds 10");
+  return {cmd, [args]() -> int { return run_watch(validate(*args)); }};
+}
+
+}  // namespace cloudsvc::sim

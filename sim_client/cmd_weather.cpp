@@ -1,0 +1,189 @@
+// `sim_client weather`: sends cloud layers (a weather file or preset) and/or a weather map
+// image split into protocol tiles, then reports whether the service accepted them.
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <memory>
+#include <thread>
+
+#include "geodesy/utc_time.h"
+#include "protocol/validate.h"
+#include "protocol/weather_conversion.h"
+#include "sim_client/cli_values.h"
+#include "sim_client/client_session.h"
+#include "sim_client/commands.h"
+#include "sim_client/map_image.h"
+#include "sim_client/map_tiles.h"
+#include "weather/presets.h"
+#include "weather/weather_json.h"
+
+namespace cloudsvc::sim {
+
+namespace {
+
+constexpr const char* kName = "weather";
+
+struct WeatherArgs {
+  std::string connect = kDefaultAddress, layers, preset, map, bounds, valid_at, channels = "coverage", quiet_ms = "500";
+};
+
+struct WeatherOptions {
+  std::string address;
+  std::optional<weather::Weather> layers;  // from --layers or --preset
+  std::string layers_label;
+  std::string map;                         // image path; empty = none
+  GeoBounds bounds;
+  double valid_at_utc_s = 0.0;
+  std::vector<std::uint8_t> channels;
+  std::chrono::milliseconds quiet{500};
+};
+
+std::string preset_list() {
+  std::string out;
+  for (const std::string& n : weather::preset_names()) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
+WeatherOptions validate(const WeatherArgs& a) {
+  WeatherOptions o;
+  check_address("--connect", a.connect);
+  o.address = a.connect;
+  if (!a.layers.empty() && !a.preset.empty()) fail_flag("--preset", a.preset, "give either --layers or --preset, not both");
+  if (a.layers.empty() && a.preset.empty() && a.map.empty())
+    throw UsageError("nothing to send: give --layers FILE.json, --preset NAME or --map IMAGE");
+  if (!a.preset.empty()) {
+    o.layers = weather::preset(a.preset);
+    if (!o.layers) fail_flag("--preset", a.preset, "unknown preset (expected one of " + preset_list() + ")");
+    o.layers_label = "preset " + a.preset;
+  }
+  if (!a.layers.empty()) {
+    try {
+      o.layers = weather::load_weather_json(a.layers);
+    } catch (const weather::WeatherFileError& e) {
+      throw UsageError(std::string("--layers ") + e.what());
+    }
+    o.layers_label = "layers from " + a.layers;
+  }
+  if (a.map.empty()) {
+    for (const auto& [flag, value] : {std::pair{"--bounds", &a.bounds}, std::pair{"--valid-at", &a.valid_at}})
+      if (!value->empty()) fail_flag(flag, *value, "only with --map");
+  } else {
+    if (a.bounds.empty()) fail_flag("--bounds", a.bounds, "required with --map: lat_min,lon_min,lat_max,lon_max in degrees");
+    if (a.valid_at.empty()) fail_flag("--valid-at", a.valid_at, "required with --map: the UTC time the map is valid at");
+    o.map = a.map;
+    o.bounds = parse_flag_bounds("--bounds", a.bounds);
+    o.valid_at_utc_s = parse_flag_time("--valid-at", a.valid_at);
+    o.channels = parse_flag_channels("--channels", a.channels);
+  }
+  o.quiet = std::chrono::milliseconds(parse_flag_integer("--quiet-ms", a.quiet_ms, 0, 60000, "milliseconds"));
+  return o;
+}
+
+// What was sent, for matching Errors to it.
+struct Sent {
+  std::uint64_t seq = 0;
+  std::string what;
+};
+
+int run_weather(const WeatherOptions& o) {
+  // Read and check everything before connecting.
+  std::vector<protocol::WeatherMapTile> tiles;
+  MapRaster raster;
+  if (!o.map.empty()) raster = read_map_image(o.map, o.channels);
+
+  ClientSession session(o.address, "sim_client weather");
+  std::vector<Sent> sent;
+  if (o.layers) {
+    const protocol::WeatherLayers m = to_message(*o.layers);
+    if (m.layers.size() > session.welcome().limits.max_layers)
+      throw RunError(o.layers_label + ": " + std::to_string(m.layers.size()) + " layers, the service takes at most " +
+                     std::to_string(session.welcome().limits.max_layers));
+    sent.push_back({session.send(m), o.layers_label});
+  }
+  if (!o.map.empty()) {
+    if (!session.offers(protocol::capability::kWeatherTiles))
+      throw RunError("the service does not accept weather map tiles (no WeatherTiles capability)");
+    const std::uint32_t side = tile_side_for(session.welcome().limits, static_cast<int>(o.channels.size()));
+    tiles = split_into_tiles(raster, o.bounds, o.valid_at_utc_s, side);
+    for (std::size_t i = 0; i < tiles.size(); ++i) {
+      if (auto problem = protocol::validate(protocol::Message(tiles[i])))
+        throw RunError("tile " + std::to_string(i + 1) + " of " + o.map + ": " + *problem);
+      sent.push_back({session.send(tiles[i]), "tile " + std::to_string(i + 1) + "/" + std::to_string(tiles.size()) +
+                                                  " (" + std::to_string(tiles[i].width) + "x" +
+                                                  std::to_string(tiles[i].height) + " texels)"});
+    }
+  }
+  // Errors from decoding and validation come before the Stats answer; errors from applying
+  // a tile on the render thread may come a little later: listen for a quiet period too.
+  std::vector<protocol::Error> errors = session.sync(std::chrono::milliseconds(30000));
+  const auto quiet_end = Clock::now() + o.quiet;
+  while (Clock::now() < quiet_end)
+    if (auto m = session.next(quiet_end))
+      if (auto* e = std::get_if<protocol::Error>(&*m)) errors.push_back(*e);
+
+  for (const protocol::Error& e : errors) {
+    std::string about = "a message";
+    for (const Sent& s : sent)
+      if (s.seq == e.answers_seq) about = s.what;
+    warn(kName, "service error about " + about + ": " + describe_error(e));
+  }
+  if (o.layers) std::printf("weather: sent %s (%zu layer%s)\n", o.layers_label.c_str(), o.layers->layers.size(),
+                            o.layers->layers.size() == 1 ? "" : "s");
+  if (!o.map.empty()) {
+    std::string names;
+    for (std::uint8_t c : o.channels) names += (names.empty() ? "" : ",") + channel_name(c);
+    std::printf("weather: sent %s as %zu tiles (%dx%d texels, channels %s, bounds %s,%s,%s,%s, valid at %s)\n",
+                o.map.c_str(), tiles.size(), raster.width, raster.height, names.c_str(),
+                number_text(o.bounds.lat_min_deg).c_str(), number_text(o.bounds.lon_min_deg).c_str(),
+                number_text(o.bounds.lat_max_deg).c_str(), number_text(o.bounds.lon_max_deg).c_str(),
+                geo::format_utc_iso8601(o.valid_at_utc_s).c_str());
+  }
+  std::printf(errors.empty() ? "weather: accepted (no error from the service)\n"
+                             : "weather: %zu error(s) from the service\n",
+              errors.size());
+  std::fflush(stdout);
+  return errors.empty() ? kExitOk : kExitFailure;
+}
+
+}  // namespace
+
+Command add_weather_command(CLI::App& app) {
+  auto args = std::make_shared<WeatherArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      kName, "Send cloud layers (--layers or --preset) and/or a weather map image (--map) to the service and report "
+             "whether it accepted them");
+  cmd->add_option("--connect", args->connect, connect_help())->type_name("ADDR");
+  cmd->add_option("--layers", args->layers, "Weather file (docs/WEATHER.md) whose layers replace the service's layer stack")
+      ->type_name("FILE.json");
+  cmd->add_option("--preset", args->preset, "Weather preset whose layers replace the service's: " + preset_list())
+      ->type_name("NAME");
+  cmd->add_option("--map", args->map,
+                  "Weather map image (EXR, TIFF, PNG, ... read by OpenImageIO): top row = north edge, values in [0, 1] "
+                  "(integer images scale to [0, 1]); its first N channels are the N --channels; sent as tiles of at "
+                  "most 1024x1024 texels")
+      ->type_name("IMAGE");
+  cmd->add_option("--bounds", args->bounds,
+                  "With --map: area the image covers, lat_min,lon_min,lat_max,lon_max in degrees (WGS84); "
+                  "lon_max > 180 crosses the antimeridian")
+      ->type_name("S,W,N,E");
+  cmd->add_option("--valid-at", args->valid_at,
+                  "With --map: UTC time the map is valid at, ISO 8601 (e.g. 2026-06-21T12:00Z); the service blends "
+                  "between map states in time")
+      ->type_name("UTC");
+  cmd->add_option("--channels", args->channels,
+                  "With --map: comma-separated map channels of the image's channels in order: coverage, development "
+                  "(vertical development), density, precipitation (0.5 = the layer's own value; precipitation 0 = "
+                  "none); default coverage")
+      ->type_name("LIST");
+  cmd->add_option("--quiet-ms", args->quiet_ms,
+                  "After the service has taken every message, listen this long for late errors, milliseconds, "
+                  "[0, 60000]; default 500")
+      ->type_name("MS");
+  cmd->footer(std::string(kExitCodesHelp) +
+              "\nExamples: sim_client weather --preset overcast-stratus --connect unix:/tmp/cloudsvc.sock\n"
+              "          sim_client weather --map coverage.exr --bounds 40,0,50,20 --valid-at 2026-06-21T12:00Z "
+              "--channels coverage,density --connect unix:/tmp/cloudsvc.sock");
+  return {cmd, [args]() -> int { return run_weather(validate(*args)); }};
+}
+
+}  // namespace cloudsvc::sim

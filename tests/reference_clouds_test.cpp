@@ -1,0 +1,228 @@
+// The reference's cloud pieces: the scene set-up (wind rotation, camera, shell), the
+// density field and the lighting terms, against hand-computed values and limits.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "renderer/model/phase_function.h"
+#include "renderer/reference/cloud_field.h"
+#include "renderer/reference/cloud_lighting.h"
+#include "renderer/reference/reference_scene.h"
+
+namespace cloudsvc::reference {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+TEST(ReferenceScene, CalmWindIsIdentityAndTheFieldMovesWithTheWind) {
+  const WindAnchor anchor{{47.45, 8.56, 1500.0}, 1.7e9};
+  const glm::dmat3 calm = field_rotation({0.0, 0.0}, anchor, anchor.unix_time_s + 3600.0);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) EXPECT_EQ(calm[i][j], i == j ? 1.0 : 0.0);
+  // One minute of 10 m/s wind from the west: the field point now 600 m downwind of the
+  // anchor (along the sphere) samples what was at the anchor.
+  const weather::Wind west{10.0, 0.0};
+  const glm::dmat3 r = field_rotation(west, anchor, anchor.unix_time_s + 60.0);
+  const glm::dvec3 p0 = geo::geodetic_to_ecef(anchor.position);
+  const glm::dvec3 east = geo::enu_to_ecef(47.45, 8.56)[0];
+  const glm::dvec3 axis = glm::normalize(glm::cross(p0, east));
+  const double angle = 600.0 / glm::length(p0);
+  // p0 rotated by +angle about the axis (Rodrigues), i.e. carried 600 m along the wind.
+  const glm::dvec3 moved = p0 * std::cos(angle) + glm::cross(axis, p0) * std::sin(angle) +
+                           axis * glm::dot(axis, p0) * (1.0 - std::cos(angle));
+  EXPECT_LT(glm::length(r * moved - p0), 1e-6) << "metres";
+  EXPECT_NEAR(glm::length(moved - p0), 600.0, 0.01);
+  // Orthonormal after 30 days.
+  const glm::dmat3 month = field_rotation({35.0, -12.0}, anchor, anchor.unix_time_s + 30.0 * 86400.0);
+  const glm::dmat3 rtr = glm::transpose(month) * month;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) EXPECT_NEAR(rtr[i][j], i == j ? 1.0 : 0.0, 1e-12);
+}
+
+ViewRequest level_view(double lat, double alt) {
+  ViewRequest v;
+  v.position = {lat, 8.0, alt};
+  v.attitude = {90.0, 0.0, 0.0};  // east, level
+  v.unix_time_s = 1.78e9;
+  v.width = 100;
+  v.height = 50;
+  v.fov_deg = 90.0;
+  return v;
+}
+
+TEST(ReferenceScene, CameraRaysAndShellGeometry) {
+  const ReferenceScene s = make_reference_scene(level_view(47.45, 2000.0), weather::Weather{});
+  // The centre of the image looks east (rows from the top: pixel (0, 0) is up-left).
+  const glm::dvec3 c = glm::normalize(s.camera.pixel_ray(49, 24) + s.camera.pixel_ray(50, 25));
+  EXPECT_NEAR(c.x, 1.0, 1e-9);
+  const glm::dvec3 top_left = s.camera.pixel_ray(0, 0);
+  EXPECT_GT(top_left.y, 0.0);        // left of east is north
+  EXPECT_GT(top_left.z, 0.0);        // top row looks up
+  EXPECT_NEAR(s.camera.tan_half_h, 1.0, 1e-12);
+  EXPECT_NEAR(s.camera.tan_half_v, 0.5, 1e-12);
+  // Osculating radius sqrt(M N) at 47.45 deg, camera at 2 km above it, ground at 0.
+  EXPECT_NEAR(s.shell.radius_m, std::sqrt(geo::meridional_radius(47.45) * geo::prime_vertical_radius(47.45)), 1e-6);
+  EXPECT_NEAR(s.shell.altitude_of(glm::dvec3(0.0)), 2000.0, 1e-6);
+  EXPECT_EQ(s.shell.ground_alt_m, 0.0);
+  // 10 km east, level: the sphere drops away by d^2 / 2R ~ 7.85 m.
+  EXPECT_NEAR(s.shell.altitude_of({10000.0, 0.0, 0.0}) - 2000.0, 1.0e8 / (2.0 * (s.shell.radius_m + 2000.0)), 1e-3);
+  // A camera below the ellipsoid puts the ground 1 m below it.
+  EXPECT_EQ(make_reference_scene(level_view(10.0, -30.0), weather::Weather{}).shell.ground_alt_m, -31.0);
+}
+
+weather::Weather one_layer(weather::CloudType type, double base, double top, double coverage) {
+  weather::Weather w;
+  weather::CloudLayer l = weather::default_layer(type);
+  l.base_m = base;
+  l.top_m = top;
+  l.coverage = coverage;
+  w.layers.push_back(l);
+  w.map_seed = 11;
+  return w;
+}
+
+TEST(ReferenceClouds, HeightProfileByHand) {
+  ReferenceLayer sc;
+  sc.bottom_ramp = 0.15;
+  sc.top_ramp = 0.3;
+  sc.top_weight = 0.0;
+  EXPECT_EQ(CloudField::height_profile(sc, 0.0), 0.0);
+  EXPECT_EQ(CloudField::height_profile(sc, 1.0), 0.0);
+  EXPECT_DOUBLE_EQ(CloudField::height_profile(sc, 0.5), 1.0);
+  // Half-way up the bottom ramp: smoothstep(0.5) = 0.5.
+  EXPECT_NEAR(CloudField::height_profile(sc, 0.075), 0.5, 1e-12);
+  ReferenceLayer cb = sc;
+  cb.top_weight = 0.6;  // mix(1, x, 0.6) at x = 0.5: 0.7
+  EXPECT_NEAR(CloudField::height_profile(cb, 0.5), 0.7, 1e-12);
+}
+
+// Coverage is an area fraction: at mid-layer, where the profile is 1, the fraction of a
+// large horizontal area with cloud follows the local coverage (weather map included).
+TEST(ReferenceClouds, CoverageIsTheCloudyAreaFraction) {
+  for (double coverage : {0.3, 0.7}) {
+    const weather::Weather w = one_layer(weather::CloudType::Stratocumulus, 1000.0, 2000.0, coverage);
+    const ReferenceScene s = make_reference_scene(level_view(47.45, 1500.0), w);
+    const auto inputs = reference_inputs(InputConfig{}, w.map_seed);
+    const CloudField field(s, *inputs);
+    std::uint64_t evals = 0;
+    int cloudy = 0, n = 0;
+    double mean_local_coverage = 0.0;
+    for (int i = 0; i < 200; ++i)
+      for (int j = 0; j < 200; ++j) {
+        const glm::dvec3 p(-30000.0 + 300.0 * i + 7.0, -30000.0 + 300.0 * j + 3.0, 0.0);
+        const glm::dvec3 q = p + glm::dvec3(0.0, 0.0, 1500.0 - s.shell.altitude_of(p));  // at 1500 m
+        const CloudSample c = field.sample(0, q, s.shell.altitude_of(q), false, evals);  // base shape only
+        cloudy += c.sigma_t > 0.0;
+        mean_local_coverage += c.coverage;
+        ++n;
+      }
+    mean_local_coverage /= n;
+    const double fraction = static_cast<double>(cloudy) / n;
+    std::printf("coverage %.2f: local coverage %.3f, cloudy fraction at mid-layer %.3f\n", coverage,
+                mean_local_coverage, fraction);
+    EXPECT_NEAR(fraction, mean_local_coverage, 0.08);
+    EXPECT_EQ(evals, static_cast<std::uint64_t>(n));
+  }
+}
+
+TEST(ReferenceClouds, NothingOutsideTheLayerOrAtZeroCoverage) {
+  const weather::Weather w = one_layer(weather::CloudType::Stratus, 400.0, 900.0, 1.0);
+  const ReferenceScene s = make_reference_scene(level_view(47.45, 650.0), w);
+  const auto inputs = reference_inputs(InputConfig{}, w.map_seed);
+  const CloudField field(s, *inputs);
+  std::uint64_t evals = 0;
+  EXPECT_EQ(field.sample(0, {0, 0, 300.0}, 950.0, true, evals).sigma_t, 0.0);
+  EXPECT_EQ(field.sample(0, {0, 0, -300.0}, 350.0, true, evals).sigma_t, 0.0);
+  EXPECT_EQ(evals, 0u) << "points outside the layer are not density evaluations";
+  // Overcast stratus: the extinction at mid-layer is positive and bounded by the peak
+  // sigma_max * density_scale * 2.
+  const double peak = s.layers[0].sigma_max_per_m * s.layers[0].density_scale * 2.0;
+  const double sigma = field.sample(0, {0, 0, 0}, 650.0, true, evals).sigma_t;
+  EXPECT_GT(sigma, 0.0);
+  EXPECT_LE(sigma, peak);
+  ReferenceScene clear_scene = s;
+  clear_scene.layers[0].coverage = 0.0;
+  const CloudField clear(clear_scene, *inputs);
+  EXPECT_EQ(clear.sample(0, {0, 0, 0}, 650.0, true, evals).sigma_t, 0.0);
+}
+
+// The light march converges: 10 m steps agree with 1 m steps to 0.5 % in optical depth.
+TEST(ReferenceClouds, LightMarchConverges) {
+  const weather::Weather w = one_layer(weather::CloudType::Stratocumulus, 1200.0, 1800.0, 0.85);
+  const ReferenceScene s = make_reference_scene(level_view(47.45, 1300.0), w);
+  const auto inputs = reference_inputs(InputConfig{}, w.map_seed);
+  const CloudField field(s, *inputs);
+  std::uint64_t evals = 0;
+  const glm::dvec3 sun = glm::normalize(glm::dvec3(0.3, 0.2, 0.6));
+  double coarse_sum = 0.0, fine_sum = 0.0, worst = 0.0;
+  for (int i = 0; i < 20; ++i) {
+    const glm::dvec3 p(137.0 * i, -91.0 * i, 0.0);
+    const double alt = s.shell.altitude_of(p);
+    const double mu_s = glm::dot(s.shell.up_at(p), sun);
+    const double coarse = light_optical_depth(field, 0, p, alt, sun, mu_s, 10.0, 1e9, evals);
+    const double fine = light_optical_depth(field, 0, p, alt, sun, mu_s, 1.0, 1e9, evals);
+    coarse_sum += coarse;
+    fine_sum += fine;
+    if (fine > 1.0) worst = std::max(worst, std::abs(coarse / fine - 1.0));
+  }
+  std::printf("light optical depth, 10 m vs 1 m steps: mean %.3f vs %.3f, worst relative %.2e\n", coarse_sum / 20,
+              fine_sum / 20, worst);
+  EXPECT_GT(fine_sum, 20.0);
+  EXPECT_LT(worst, 0.005);
+}
+
+TEST(ReferenceClouds, OctaveSumLimits) {
+  const model::JdDParams p = model::jdd_params(20.0);
+  // One octave, no shadow: the phase function itself.
+  EXPECT_NEAR(octave_phase_sum(p, 0.3, 0.0, 1, 0.4, 0.5, 0.6), model::jdd_phase(0.3, p), 1e-12);
+  // Three octaves, no shadow: p(g) + 0.5 p(0.6 g) + 0.25 p(0.36 g).
+  const auto scaled = [&](double c) {
+    return (1 - p.w_d) * model::hg_phase(-0.2, p.g_hg * c) + p.w_d * model::draine_phase(-0.2, p.g_d * c, p.alpha);
+  };
+  EXPECT_NEAR(octave_phase_sum(p, -0.2, 0.0, 3, 0.4, 0.5, 0.6), scaled(1.0) + 0.5 * scaled(0.6) + 0.25 * scaled(0.36), 1e-12);
+  // Deep shadow: the last octave dominates, b^2 p(c^2 g) e^{-a^2 tau}.
+  const double tau = 50.0;
+  EXPECT_NEAR(octave_phase_sum(p, -0.2, tau, 3, 0.4, 0.5, 0.6) / (0.25 * scaled(0.36) * std::exp(-0.16 * tau)), 1.0, 1e-4);
+}
+
+TEST(ReferenceClouds, TwoStreamDiffuseByHand) {
+  ReferenceLayer L;
+  L.base_m = 1000.0;
+  L.top_m = 2000.0;
+  L.sigma_max_per_m = 0.05;
+  L.density_scale = 1.0;
+  const glm::dvec3 e_sun(2.0), t_atm(0.8), e_sky(0.1), t_ground(0.7), e_sky_ground(0.12), albedo(0.1);
+  const double mu_s = 0.5, coverage = 0.4, alt = 1500.0;
+  // sigma_nominal = 0.02 /m; tau above = tau below = 10; T(10) = 1 / (1 + 0.75 * 0.14 * 10).
+  const double T = 1.0 / (1.0 + 0.75 * 0.14 * 10.0);
+  const double F_sun = 2.0 * 0.8 * 0.5;
+  const double E_sky = 2.0 * 0.1;
+  const double E_ground = 0.1 * 2.0 * (0.7 * 0.5 + 0.12);
+  const double direct = std::exp(-10.0 / 0.5);
+  const double F_down = F_sun * (T - direct) + E_sky * T;
+  const double F_up = (F_sun + E_sky) * T * (1.0 - T) + E_ground * T;
+  const glm::dvec3 got = two_stream_diffuse(L, alt, mu_s, coverage, e_sun, t_atm, e_sky, t_ground, e_sky_ground, albedo);
+  EXPECT_NEAR(got.g, (F_down + F_up) / (2.0 * kPi), 1e-12);
+  // Sun below the horizon: no direct term, sky light only.
+  const glm::dvec3 night = two_stream_diffuse(L, alt, -0.1, coverage, e_sun, glm::dvec3(0.0), e_sky, glm::dvec3(0.0),
+                                              e_sky_ground, albedo);
+  EXPECT_NEAR(night.r, (E_sky * T + E_sky * T * (1.0 - T) + 0.1 * 2.0 * 0.12 * T) / (2.0 * kPi), 1e-12);
+}
+
+TEST(ReferenceClouds, LayerStepScale) {
+  const ReferenceScene s = make_reference_scene(
+      level_view(47.45, 0.0), [] {
+        weather::Weather w;
+        w.layers = {weather::default_layer(weather::CloudType::Cumulus), weather::default_layer(weather::CloudType::Cirrus)};
+        w.layers[1].base_m = 9000.0;
+        w.layers[1].top_m = 10000.0;
+        return w;
+      }());
+  EXPECT_NEAR(layer_step_scale(s.layers[0]), 1.0, 0.01);  // cumulus: the base steps
+  EXPECT_EQ(layer_step_scale(s.layers[1]), 5.0);           // cirrus: 40 km period, optically thin
+}
+
+}  // namespace
+}  // namespace cloudsvc::reference

@@ -1,0 +1,82 @@
+// Convergence of the reference renderer (renderer/reference/reference_renderer.h): halving
+// the cloud and light-march steps, and separately the atmosphere step, changes tiny images
+// of four kinds of scene by less than a stated tolerance (relative RMSE of linear radiance,
+// image_metrics.h). The numbers are printed; docs/REFERENCE.md quotes them. The clear sky
+// has no clouds to refine; the atmosphere tables (Psi_ms, E_sky) have their own convergence
+// test in reference_atmosphere_test.cpp and are not rebuilt here.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <string>
+
+#include "geodesy/utc_time.h"
+#include "renderer/reference/image_metrics.h"
+#include "renderer/reference/reference_renderer.h"
+#include "weather/presets.h"
+
+namespace cloudsvc::reference {
+namespace {
+
+constexpr int kWidth = 48, kHeight = 27;
+constexpr double kTolerance = 0.01;  // relative RMSE between a render and its half-step twin
+
+struct Scene {
+  const char* name;
+  const char* preset;
+  double alt_m, heading_deg, pitch_deg;
+  const char* time_utc;
+};
+
+// Zurich area, midsummer 2026 (solar noon ~11:26 UTC, sunset ~19:26 UTC). Headings keep
+// the sun disk out of the frame (a one-pixel disk would dominate any RMSE).
+const Scene kBrokenCumulusFromBelow{"broken cumulus from below", "broken-cumulus", 500.0, 200.0, 30.0,
+                                    "2026-06-21T11:30:00Z"};
+const Scene kInsideStratus{"inside stratus", "overcast-stratus", 650.0, 90.0, 0.0, "2026-06-21T11:30:00Z"};
+const Scene kAboveDeckAtSunset{"above stratocumulus deck, sunset", "stratocumulus-deck", 3000.0, 270.0, -12.0,
+                               "2026-06-21T19:05:00Z"};
+const Scene kClearSky{"clear sky", "clear", 500.0, 200.0, 10.0, "2026-06-21T11:30:00Z"};
+
+FrameImage render(const Scene& s, const ReferenceSettings& settings) {
+  ViewRequest v;
+  v.position = {47.45, 8.56, s.alt_m};
+  v.attitude = {s.heading_deg, s.pitch_deg, 0.0};
+  v.unix_time_s = *geo::parse_utc_iso8601(s.time_utc);
+  v.width = kWidth;
+  v.height = kHeight;
+  v.fov_deg = 60.0;
+  FrameImage img = render_reference(v, *weather::preset(s.preset), settings);
+  EXPECT_EQ(img.stats.nonfinite_pixels, 0) << s.name;
+  return img;
+}
+
+// Renders at the default settings and with the chosen steps halved; returns the relative RMSE.
+double halving_error(const Scene& s, bool clouds, bool atmosphere) {
+  const ReferenceSettings base;
+  ReferenceSettings half = base;
+  if (clouds) {
+    half.cloud_step_m *= 0.5;
+    half.light_step_m *= 0.5;
+  }
+  if (atmosphere) half.atmosphere_step_m *= 0.5;
+  const FrameImage a = render(s, base);
+  const FrameImage b = render(s, half);
+  const ImageDifference d = compare_images(a, b);
+  std::printf("%-36s halving %-10s: rel. RMSE %.2e  max |diff| %.2e at (%d, %d) (mean %.3e)  opacity RMSE %.1e  "
+              "%.1f / %.1f s, %.0f / %.0f density evals per pixel\n",
+              s.name, clouds ? "cloud+light" : "atmosphere", d.relative_rmse, d.max_error, d.max_error_x,
+              d.max_error_y, d.mean_reference, d.opacity_rmse, a.stats.render_ms / 1000.0, b.stats.render_ms / 1000.0,
+              a.stats.density_evals_per_pixel, b.stats.density_evals_per_pixel);
+  return d.relative_rmse;
+}
+
+// One test for all scenes: the atmosphere tables and inputs are built once per process.
+TEST(ReferenceConvergence, HalvingTheStepsChangesTheImageByLessThanOnePercent) {
+  EXPECT_LT(halving_error(kBrokenCumulusFromBelow, true, false), kTolerance) << kBrokenCumulusFromBelow.name;
+  EXPECT_LT(halving_error(kInsideStratus, true, false), kTolerance) << kInsideStratus.name;
+  EXPECT_LT(halving_error(kAboveDeckAtSunset, true, false), kTolerance) << kAboveDeckAtSunset.name;
+  EXPECT_LT(halving_error(kAboveDeckAtSunset, false, true), kTolerance) << kAboveDeckAtSunset.name;
+  EXPECT_LT(halving_error(kClearSky, false, true), kTolerance) << kClearSky.name;
+}
+
+}  // namespace
+}  // namespace cloudsvc::reference

@@ -1,30 +1,49 @@
 // `cloudsvc render` and `cloudsvc demo`: headless (EGL) rendering to files.
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <vector>
 
 #include "geodesy/utc_time.h"
 #include "renderer/cloud_renderer.h"
 #include "renderer/gl/egl_context.h"
 #include "renderer/image_output.h"
+#include "renderer/quality_presets.h"
+#include "renderer/reference/reference_renderer.h"
 #include "service/commands.h"
 #include "service/demo_scenes.h"
 #include "service/window_viewer.h"
 #include "weather/presets.h"
 
+
 namespace cloudsvc {
 
 namespace {
 
-// The one-line summary every render prints.
-void print_stats(const std::string& label, const FrameImage& img) {
+// The one-line summary every render prints; `suffix` is appended before the newline.
+void print_stats(const std::string& label, const FrameImage& img, const std::string& suffix = "") {
   const double total = static_cast<double>(img.width) * img.height;
   std::printf("%s: %dx%d in %.1f ms, sun elevation %.2f deg, %lld pixels with cloud (%.1f %%), "
-              "%.1f density evaluations/px\n",
+              "%.1f density evaluations/px%s\n",
               label.c_str(), img.width, img.height, img.stats.render_ms, img.stats.sun_elevation_deg,
               static_cast<long long>(img.stats.cloud_pixels), 100.0 * static_cast<double>(img.stats.cloud_pixels) / total,
-              img.stats.density_evals_per_pixel);
+              img.stats.density_evals_per_pixel, suffix.c_str());
   std::fflush(stdout);
+}
+
+// Reference renders above this many pixels take minutes on 2 cores (docs/REFERENCE.md).
+constexpr long kReferenceWarnPixels = 320L * 180L;
+
+// " frame_ms=<median ms of frames 2..N, or frame 1 if N = 1> evals_per_px=<last frame's>".
+std::string timing_suffix(std::vector<double> frame_ms, const FrameImage& last) {
+  if (frame_ms.size() > 1) frame_ms.erase(frame_ms.begin());  // frame 1 carries shader JIT / table setup
+  std::sort(frame_ms.begin(), frame_ms.end());
+  const std::size_t n = frame_ms.size();
+  const double median = n % 2 ? frame_ms[n / 2] : 0.5 * (frame_ms[n / 2 - 1] + frame_ms[n / 2]);
+  char text[96];
+  std::snprintf(text, sizeof text, " frame_ms=%.1f evals_per_px=%.1f", median, last.stats.density_evals_per_pixel);
+  return text;
 }
 
 ViewRequest view_from(const RenderOptions& o) {
@@ -42,12 +61,32 @@ ViewRequest view_from(const RenderOptions& o) {
 
 int run_render(const RenderOptions& opt) {
   if (opt.window) return run_window(opt);
-  gl::EglContext context;
-  CloudRenderer renderer;
-  renderer.set_weather(opt.weather);
-  const FrameImage img = renderer.render(view_from(opt));
+  ViewRequest view = view_from(opt);
+  std::vector<double> frame_ms;
+  FrameImage img;
+  if (opt.quality == "reference") {  // CPU, double precision: no GL context needed
+    if (static_cast<long>(opt.width) * opt.height > kReferenceWarnPixels) {
+      std::fprintf(stderr, "cloudsvc render: warning: --quality reference at %dx%d is slow (minutes above 320x180)\n",
+                   opt.width, opt.height);
+    }
+    for (int f = 0; f < opt.frames; ++f) {
+      view.frame_index = static_cast<std::uint32_t>(f);
+      img = reference::render_reference(view, opt.weather);
+      frame_ms.push_back(img.stats.render_ms);
+    }
+  } else {
+    const RenderQuality quality = *quality_preset(opt.quality);  // validated by the parser
+    gl::EglContext context;
+    CloudRenderer renderer;
+    renderer.set_weather(opt.weather);
+    for (int f = 0; f < opt.frames; ++f) {
+      view.frame_index = static_cast<std::uint32_t>(f);
+      img = renderer.render(view, quality);
+      frame_ms.push_back(img.stats.render_ms);
+    }
+  }
   write_image(opt.out_path, img, opt.exposure_ev);
-  print_stats(opt.out_path, img);
+  print_stats(opt.out_path, img, timing_suffix(frame_ms, img));
   return img.stats.nonfinite_pixels == 0 ? 0 : 1;
 }
 

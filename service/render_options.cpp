@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "geodesy/geodetic.h"
+#include "renderer/quality_presets.h"
 #include "service/option_values.h"
 
 namespace cloudsvc {
@@ -33,6 +34,7 @@ using cli::numeric_help;
 using cli::one_line;
 using cli::parse_frame_count;
 using cli::parse_image_size;
+using cli::parse_integer;
 using cli::parse_number;
 using cli::parse_time;
 using cli::Range;
@@ -48,6 +50,15 @@ const Range kHeading{-360.0, 360.0, false, "degrees"};
 const Range kPitch{-90.0, 90.0, false, "degrees"};
 const Range kRoll{-180.0, 180.0, false, "degrees"};
 const Range kExposure{-20.0, 20.0, false, "EV"};
+constexpr int kMaxFrames = 100000;  // --frames upper bound (a benchmark, not a stream)
+constexpr const char* kReferenceQuality = "reference";
+
+// "naive, low, medium, high, ultra, default, reference": the values of --quality.
+std::string quality_names_text() {
+  std::vector<std::string> names = quality_preset_names();
+  names.emplace_back(kReferenceQuality);
+  return cli::join(names, ", ");
+}
 
 // Wraps a heading in degrees into [0, 360).
 double wrap_heading_deg(double heading_deg) {
@@ -63,6 +74,7 @@ double wrap_heading_deg(double heading_deg) {
 struct RenderArgs {
   CLI::App* command = nullptr;
   std::string lat, lon, alt, heading, pitch, roll, time, fov, size, weather, out, frames, exposure;
+  std::string quality, render_frames;  // --quality, --frames
   bool window = false;
 };
 
@@ -133,6 +145,19 @@ void add_output_flags(CLI::App& cmd, RenderArgs& args, const RenderOptions& defa
       ->type_name("EV");
 }
 
+void add_quality_flags(CLI::App& cmd, RenderArgs& args, const RenderOptions& defaults) {
+  cmd.add_option("--quality", args.quality,
+                 "Ray-march quality preset: one of " + quality_names_text() +
+                     " (docs/ACCURACY.md: measured error and cost of each; reference = the CPU "
+                     "reference renderer, slow: minutes above 320x180); default " + defaults.quality)
+      ->type_name("PRESET");
+  cmd.add_option("--frames", args.render_frames,
+                 "Render the same view N times (frame_index 0..N-1, integer in [1, " +
+                     std::to_string(kMaxFrames) + "]) and write the last frame; the stats line's "
+                     "frame_ms is the median of frames 2..N; default " + std::to_string(defaults.frames))
+      ->type_name("N");
+}
+
 void add_render_command(CLI::App& app, RenderArgs& args) {
   const RenderOptions defaults;
   args.command = app.add_subcommand(
@@ -142,6 +167,7 @@ void add_render_command(CLI::App& app, RenderArgs& args) {
   add_attitude_flags(*args.command, args, defaults);
   add_view_flags(*args.command, args, defaults);
   add_output_flags(*args.command, args, defaults);
+  add_quality_flags(*args.command, args, defaults);
   args.command->footer(
       "Example:\n  cloudsvc render --lat 46.55 --lon 7.98 --alt 3500 --heading 180 "
       "--time 2026-06-21T16:00:00Z --weather scattered-cumulus --size 1280x720 --out view.exr\n"
@@ -210,6 +236,21 @@ void apply_image(const RenderArgs& a, RenderOptions& opt) {
   }
 }
 
+void apply_quality(const RenderArgs& a, RenderOptions& opt) {
+  const CLI::App& cmd = *a.command;
+  if (given(cmd, "--quality")) {
+    if (a.quality != kReferenceQuality && !quality_preset(a.quality)) {
+      fail("--quality", a.quality, "expected one of " + quality_names_text());
+    }
+    if (opt.window) fail("--quality", a.quality, "not valid with --window (file output only)");
+    opt.quality = a.quality;
+  }
+  if (given(cmd, "--frames")) {
+    opt.frames = parse_integer("--frames", a.render_frames, 1, kMaxFrames, "frames");
+    if (opt.window) fail("--frames", a.render_frames, "not valid with --window (use --window-frames)");
+  }
+}
+
 // --time, --weather and --out are resolved even when not given (their defaults are text).
 void apply_scene_and_output(const RenderArgs& a, RenderOptions& opt) {
   const CLI::App& cmd = *a.command;
@@ -230,6 +271,7 @@ RenderOptions validate_render(const RenderArgs& args) {
   RenderOptions opt;
   apply_geometry(args, opt);
   apply_image(args, opt);
+  apply_quality(args, opt);
   apply_scene_and_output(args, opt);
   return opt;
 }

@@ -27,6 +27,10 @@ struct RenderOptions {
   bool window = false;                           // --window: interactive GLFW window
   int window_frames = 0;                         // --window-frames N: close after N frames (0 = run until closed)
   double exposure_ev = 0.0;                      // --exposure: EV offset for PNG tone mapping
+  std::string quality = "default";               // --quality: a renderer/quality_presets.h name,
+                                                 // or "reference" (the CPU reference renderer)
+  int frames = 1;                                // --frames N >= 1: render the view N times
+                                                 // (frame_index 0..N-1), write the last frame
 };
 
 struct DemoOptions {

@@ -8,6 +8,7 @@
 
 #include "geodesy/utc_time.h"
 #include "sim_client/angles.h"
+#include "sim_client/csv_fields.h"
 #include "sim_client/flight_log_error.h"
 #include "sim_client/text_input.h"
 #include "sim_client/value_checks.h"
@@ -78,32 +79,12 @@ class CsvParser {
     return l.empty() || l.front() == '#';
   }
 
-  // RFC 4180 fields of one line (quoted fields may hold commas and doubled quotes).
+  // RFC 4180 fields of one line (csv_fields.h: quoted fields may hold commas and
+  // doubled quotes).
   std::vector<std::string> split_fields(std::size_t line, std::string_view l) const {
-    std::vector<std::string> fields(1);
-    bool quoted = false;
-    for (std::size_t i = 0; i < l.size(); ++i) {
-      const char c = l[i];
-      if (quoted) {
-        if (c == '"' && i + 1 < l.size() && l[i + 1] == '"') {
-          fields.back() += '"';
-          ++i;
-        } else if (c == '"') {
-          quoted = false;
-        } else {
-          fields.back() += c;
-        }
-      } else if (c == '"' && trim(fields.back()).empty()) {
-        fields.back().clear();
-        quoted = true;
-      } else if (c == ',') {
-        fields.emplace_back();
-      } else {
-        fields.back() += c;
-      }
-    }
-    if (quoted) fail(line, "malformed row: unterminated quoted field");
-    return fields;
+    auto fields = split_csv_fields(l);
+    if (!fields) fail(line, "malformed row: unterminated quoted field");
+    return *fields;
   }
 
   void read_header(std::size_t line, const std::vector<std::string>& names) {

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "accuracy_scenes.h"
 #include "render_test_support.h"
 #include "renderer/reference/image_metrics.h"
 #include "renderer/reference/reference_atmosphere.h"
@@ -26,37 +27,28 @@ namespace {
 
 constexpr int kWidth = 64, kHeight = 36;
 
+// PSNR floors per scene of tests/accuracy_scenes.h (same order): default GPU quality and
+// the fine GPU march (fine_quality below); measured value minus ~3 dB.
 struct Scene {
+  accuracy::AccuracyScene s;
+  double min_psnr_db;
+  double min_fine_psnr_db;
   const char* name;
-  const char* preset;
-  double alt_m, heading_deg, pitch_deg;
-  const char* time_utc;
-  double min_psnr_db;       // floor for the default GPU quality: measured value minus a margin
-  double min_fine_psnr_db;  // floor for the fine GPU march (fine_quality below)
 };
 
-// Zurich area, midsummer 2026 (solar noon ~11:26 UTC, sunset ~19:26 UTC); no view has the
-// sun disk in the frame (its single-pixel radiance would dominate every metric).
 const std::vector<Scene>& scenes() {
-  static const std::vector<Scene> s = {
-      // name, preset, altitude m, heading, pitch, time;  PSNR floors (default, fine): measured - 3 dB
-      {"clear", "clear", 500.0, 200.0, 10.0, "2026-06-21T11:30:00Z", 39.0, 39.0},
-      {"clear, 60 deg up, sun behind", "clear", 500.0, 20.0, 60.0, "2026-06-21T11:30:00Z", 41.5, 41.5},
-      {"clear, below the sun", "clear", 500.0, 181.0, 35.0, "2026-06-21T11:30:00Z", 40.5, 40.5},
-      {"scattered cumulus", "scattered-cumulus", 300.0, 200.0, 15.0, "2026-06-21T11:30:00Z", 36.0, 42.5},
-      {"broken cumulus", "broken-cumulus", 500.0, 200.0, 20.0, "2026-06-21T11:30:00Z", 39.0, 50.0},
-      {"overcast stratus from below", "overcast-stratus", 100.0, 90.0, 10.0, "2026-06-21T11:30:00Z", 40.0, 40.0},
-      {"inside a stratus deck", "overcast-stratus", 650.0, 90.0, 0.0, "2026-06-21T11:30:00Z", 48.0, 51.5},
-      {"above stratocumulus at sunset", "stratocumulus-deck", 3000.0, 270.0, -12.0, "2026-06-21T19:05:00Z", 30.5, 50.5},
-      {"cumulonimbus", "cumulonimbus", 13000.0, 135.0, -15.0, "2026-06-21T14:00:00Z", 21.5, 41.5},
-      {"from 30 km", "broken-cumulus", 30000.0, 180.0, -25.0, "2026-06-21T11:30:00Z", 30.5, 43.5},
-  };
+  static const std::vector<Scene> s = [] {
+    const double floors[][2] = {{39.0, 39.0}, {41.5, 41.5}, {40.5, 40.5}, {36.0, 42.5}, {39.0, 50.0},
+                                {40.0, 40.0}, {48.0, 51.5}, {30.5, 50.5}, {21.5, 41.5}, {30.5, 43.5}};
+    std::vector<Scene> out;
+    const auto& all = accuracy::accuracy_scenes();
+    for (std::size_t i = 0; i < all.size(); ++i) out.push_back({all[i], floors[i][0], floors[i][1], all[i].name});
+    return out;
+  }();
   return s;
 }
 
-ViewRequest scene_view(const Scene& s) {
-  return make_view(47.45, 8.56, s.alt_m, s.heading_deg, s.pitch_deg, s.time_utc, kWidth, kHeight, 60.0);
-}
+ViewRequest scene_view(const Scene& s) { return accuracy::accuracy_view(s.s, kWidth, kHeight); }
 
 void save_pair(const std::string& name, const FrameImage& gpu, const FrameImage& ref) {
   const char* dir = std::getenv("CLOUDSVC_TEST_IMAGES");
@@ -119,7 +111,7 @@ struct Row {
 TEST(AccuracyReferenceVsGpu, SceneSet) {
   std::vector<Row> rows;
   for (const Scene& s : scenes()) {
-    const weather::Weather w = *weather::preset(s.preset);
+    const weather::Weather w = *weather::preset(s.s.preset);
     const ViewRequest v = scene_view(s);
     const FrameImage gpu = render_weather(w, v);
     const FrameImage gpu_fine = render_weather(w, v, fine_quality());

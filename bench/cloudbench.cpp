@@ -1,0 +1,466 @@
+// cloudbench: error vs cost of the ray-march knobs against the CPU reference (issue
+// "Accuracy", part 2; DESIGN.md §7). For each scene of tests/accuracy_scenes.h (the eight
+// "core" ones) it renders the CPU reference once (cached as EXR under OUT/ref/, keyed by
+// scene and size), then for each march configuration renders a warm-up frame
+// (frame_index 0, whose error is measured) and N timed frames (frame_index 1..N, median
+// render_ms) with the GPU renderer.
+//
+// Sweep (not the full product): one knob at a time around the centre (the RenderQuality
+// defaults: 64 log steps, t_ref 1000 m, 6 light steps, 3 octaves) over
+//   primary steps {16, 24, 32, 48, 64, 96, 128, 192}, light steps {2, 3, 4, 6, 8, 12},
+//   octaves {1, 2, 3, 4}, step distribution {uniform, log t_ref 250/1000/4000 m},
+// a primary x light grid {24, 32, 48, 96} x {3, 4, 8}, the naive baseline (uniform 64
+// steps, 6 light steps) and the named presets (renderer/quality_presets.h).
+//
+// Metrics on linear radiance with renderer/reference/image_metrics.h (the definition of
+// tests/accuracy_reference_vs_gpu_test.cpp): RMSE, PSNR with the reference's peak rgb
+// value, max |error|. OpenImageIO's ImageBufAlgo::compare computes the same RMSE on the rgb
+// channels (checked on every row; the largest relative disagreement is reported), but its
+// PSNR uses a peak of 1.0, so it is not used for PSNR.
+//
+// Outputs in --out DIR (default bench-out): report.csv, report.md, pareto_<scene>.png
+// (log-log RMSE vs median ms, Pareto front joined).
+//
+// The error is measured at --size (the CPU reference costs ~40 ms per pixel on 2 cores
+// at 8000+ density evaluations per pixel), the cost at --time-size (larger, so that the
+// per-frame LUT work of ~20 ms does not hide the march cost).
+//
+// Usage: cloudbench [--size WxH (96x54)] [--time-size WxH (160x90)] [--out DIR] [--frames N (5)] [--quick]
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "../tests/accuracy_scenes.h"
+#include "renderer/atmosphere_luts.h"
+#include "renderer/cloud_renderer.h"
+#include "renderer/gl/egl_context.h"
+#include "renderer/quality_presets.h"
+#include "renderer/reference/image_metrics.h"
+#include "renderer/reference/reference_renderer.h"
+#include "weather/presets.h"
+
+namespace fs = std::filesystem;
+using namespace cloudsvc;
+
+namespace {
+
+struct Options {
+  int width = 96, height = 54;   // error: GPU vs reference at this size
+  int time_w = 160, time_h = 90;  // cost: the timed GPU frames are rendered at this size
+  fs::path out = "bench-out";
+  int frames = 5;
+  bool quick = false;
+  std::string command;
+};
+
+struct Config {
+  std::string label;  // e.g. "P64 L6 O3 log1000"
+  std::string group;  // centre, primary, light, octaves, distribution, grid, naive, preset:<name>
+  RenderQuality q;
+};
+
+struct Row {
+  std::string scene, label, group;
+  RenderQuality q;
+  double median_ms = 0, evals_px = 0, rmse = 0, rel_rmse = 0, psnr = 0, max_err = 0, oiio_rmse = 0;
+  double texture_bytes = 0;
+};
+
+std::string knob_label(const RenderQuality& q) {
+  char b[96];
+  if (q.step_growth_ref_m > 0)
+    std::snprintf(b, sizeof b, "P%d L%d O%d log%.0f", q.primary_steps, q.light_steps, q.ms_octaves, q.step_growth_ref_m);
+  else
+    std::snprintf(b, sizeof b, "P%d L%d O%d uniform", q.primary_steps, q.light_steps, q.ms_octaves);
+  return b;
+}
+
+RenderQuality knobs(int p, int l, int o, double tref) {
+  RenderQuality q;
+  q.primary_steps = p;
+  q.light_steps = l;
+  q.ms_octaves = o;
+  q.step_growth_ref_m = tref;
+  return q;
+}
+
+// The configurations, deduplicated by knobs (the first group that names a set wins; the
+// presets are always listed separately so the report shows them by name).
+std::vector<Config> sweep(bool quick) {
+  const RenderQuality c;  // centre = RenderQuality defaults
+  std::vector<Config> out;
+  std::set<std::string> seen;
+  auto add = [&](const std::string& group, const RenderQuality& q) {
+    const std::string l = knob_label(q);
+    if (seen.insert(l).second) out.push_back({l, group, q});
+  };
+  add("centre", c);
+  add("naive", knobs(64, 6, 3, 0.0));
+  const std::vector<int> primary = quick ? std::vector<int>{32, 128} : std::vector<int>{16, 24, 32, 48, 64, 96, 128, 192};
+  const std::vector<int> light = quick ? std::vector<int>{3} : std::vector<int>{2, 3, 4, 6, 8, 12};
+  const std::vector<int> octaves = quick ? std::vector<int>{1} : std::vector<int>{1, 2, 3, 4};
+  const std::vector<double> tref = quick ? std::vector<double>{0.0} : std::vector<double>{0.0, 250.0, 1000.0, 4000.0};
+  for (int p : primary) add("primary", knobs(p, c.light_steps, c.ms_octaves, c.step_growth_ref_m));
+  for (int l : light) add("light", knobs(c.primary_steps, l, c.ms_octaves, c.step_growth_ref_m));
+  for (int o : octaves) add("octaves", knobs(c.primary_steps, c.light_steps, o, c.step_growth_ref_m));
+  for (double t : tref) add("distribution", knobs(c.primary_steps, c.light_steps, c.ms_octaves, t));
+  if (!quick)
+    for (int p : {24, 32, 48, 96})
+      for (int l : {3, 4, 8}) add("grid", knobs(p, l, c.ms_octaves, c.step_growth_ref_m));
+  for (const std::string& name : quality_preset_names()) {
+    if (name == "naive") continue;
+    const RenderQuality q = *quality_preset(name);
+    out.push_back({knob_label(q), "preset:" + name, q});
+  }
+  return out;
+}
+
+// GPU memory of the technique (bytes): every texture the renderer allocates
+// (renderer/cloud_renderer.cpp, renderer/atmosphere_luts.cpp). The march knobs allocate
+// nothing, so this is the same for every configuration today.
+double texture_bytes(int w, int h) {
+  const RendererConfig rc;
+  using A = AtmosphereLuts;
+  const double rgba32f = 16.0;
+  double b = std::pow(rc.base_noise_size, 3) + std::pow(rc.detail_noise_size, 3);           // R8 volumes
+  b += 2.0 * rc.weather_map_width * rc.weather_map_height * rgba32f;                         // 2 weather keyframes
+  b += (A::kTransmittanceW * A::kTransmittanceH + 2.0 * A::kMultiscatterSize * A::kMultiscatterSize) * rgba32f;
+  b += (A::kSkyViewW * A::kSkyViewH + 2.0 * std::pow(A::kApSize, 3)) * rgba32f;  // sky view + AP volumes
+  b += static_cast<double>(w) * h * rgba32f;                                     // render target
+  return b;
+}
+
+std::string slug(const std::string& s) {
+  std::string o;
+  for (char ch : s) o += std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
+  return o;
+}
+
+// ---- reference cache -------------------------------------------------------------------
+
+struct Reference {
+  FrameImage img;
+  double seconds = 0;  // time of the reference render (from the cache if cached)
+  double evals_px = 0;
+  bool cached = false;
+};
+
+bool read_exr(const fs::path& p, Reference& r) {
+  OIIO::ImageBuf buf(p.string());
+  if (!buf.read(0, 0, true, OIIO::TypeDesc::FLOAT) || buf.nchannels() != 4) return false;
+  const OIIO::ImageSpec& s = buf.spec();
+  r.img.width = s.width;
+  r.img.height = s.height;
+  r.img.rgba.resize(static_cast<size_t>(s.width) * s.height * 4);
+  buf.get_pixels(OIIO::ROI(0, s.width, 0, s.height, 0, 1, 0, 4), OIIO::TypeDesc::FLOAT, r.img.rgba.data());
+  r.seconds = s.get_float_attribute("cloudbench:reference_s", 0.0f);
+  r.evals_px = s.get_float_attribute("cloudbench:evals_per_px", 0.0f);
+  r.cached = true;
+  return true;
+}
+
+void write_exr(const fs::path& p, const Reference& r) {
+  OIIO::ImageSpec spec(r.img.width, r.img.height, 4, OIIO::TypeDesc::FLOAT);  // full float: it is the truth
+  spec.attribute("cloudbench:reference_s", static_cast<float>(r.seconds));
+  spec.attribute("cloudbench:evals_per_px", static_cast<float>(r.evals_px));
+  OIIO::ImageBuf buf(spec, const_cast<float*>(r.img.rgba.data()));
+  if (!buf.write(p.string())) std::fprintf(stderr, "cloudbench: cannot write %s\n", p.string().c_str());
+}
+
+Reference reference_for(const accuracy::AccuracyScene& s, const Options& o) {
+  const fs::path dir = o.out / "ref";
+  fs::create_directories(dir);
+  const fs::path file = dir / (slug(s.name) + "_" + std::to_string(o.width) + "x" + std::to_string(o.height) + ".exr");
+  Reference r;
+  if (fs::exists(file) && read_exr(file, r) && r.img.width == o.width && r.img.height == o.height) return r;
+  const ViewRequest v = accuracy::accuracy_view(s, o.width, o.height);
+  const auto t0 = std::chrono::steady_clock::now();
+  r.img = reference::render_reference(v, *weather::preset(s.preset));
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  r.evals_px = r.img.stats.density_evals_per_pixel;
+  r.cached = false;
+  write_exr(file, r);
+  return r;
+}
+
+// RMSE over the rgb channels computed by OpenImageIO, for the cross-check.
+double oiio_rmse(const FrameImage& a, const FrameImage& b) {
+  OIIO::ImageSpec spec(a.width, a.height, 4, OIIO::TypeDesc::FLOAT);
+  OIIO::ImageBuf A(spec, const_cast<float*>(a.rgba.data())), B(spec, const_cast<float*>(b.rgba.data()));
+  const auto cr = OIIO::ImageBufAlgo::compare(A, B, 0.0f, 0.0f, OIIO::ROI(0, a.width, 0, a.height, 0, 1, 0, 3));
+  return cr.rms_error;
+}
+
+// ---- Pareto front and plots ---------------------------------------------------------------
+
+// Indices of rows on the error-vs-time Pareto front (no other row is both faster and
+// more accurate), sorted by time.
+std::vector<size_t> pareto(const std::vector<const Row*>& rows) {
+  std::vector<size_t> idx(rows.size());
+  for (size_t i = 0; i < idx.size(); ++i) idx[i] = i;
+  std::sort(idx.begin(), idx.end(), [&](size_t a, size_t b) {
+    return rows[a]->median_ms != rows[b]->median_ms ? rows[a]->median_ms < rows[b]->median_ms : rows[a]->rmse < rows[b]->rmse;
+  });
+  std::vector<size_t> front;
+  double best = INFINITY;
+  for (size_t i : idx)
+    if (rows[i]->rmse < best * (1.0 - 1e-9)) { front.push_back(i); best = rows[i]->rmse; }
+  return front;
+}
+
+// Log-log scatter plot: x = median ms, y = RMSE; Pareto front joined; naive and the
+// presets labelled. 600x400 RGB PNG drawn with ImageBufAlgo.
+void plot(const fs::path& file, const std::string& title, const std::vector<const Row*>& rows,
+          const std::vector<size_t>& front) {
+  const int W = 600, H = 400, L = 70, R = 20, T = 30, B = 50;
+  OIIO::ImageBuf img(OIIO::ImageSpec(W, H, 3, OIIO::TypeDesc::FLOAT));
+  OIIO::ImageBufAlgo::fill(img, {1.0f, 1.0f, 1.0f});
+  double x0 = INFINITY, x1 = 0, y0 = INFINITY, y1 = 0;
+  for (const Row* r : rows) {
+    x0 = std::min(x0, r->median_ms); x1 = std::max(x1, r->median_ms);
+    y0 = std::min(y0, std::max(r->rmse, 1e-12)); y1 = std::max(y1, std::max(r->rmse, 1e-12));
+  }
+  auto decade_lo = [](double v) { return std::pow(10.0, std::floor(std::log10(v) * 4.0) / 4.0); };
+  auto decade_hi = [](double v) { return std::pow(10.0, std::ceil(std::log10(v) * 4.0 + 1e-9) / 4.0); };
+  x0 = decade_lo(x0); x1 = std::max(decade_hi(x1), x0 * 1.8);
+  y0 = decade_lo(y0); y1 = std::max(decade_hi(y1), y0 * 1.8);
+  auto px = [&](double v) { return L + static_cast<int>((std::log(v / x0) / std::log(x1 / x0)) * (W - L - R)); };
+  auto py = [&](double v) {
+    return H - B - static_cast<int>((std::log(std::max(v, 1e-12) / y0) / std::log(y1 / y0)) * (H - T - B));
+  };
+  const std::vector<float> black{0, 0, 0}, grey{0.8f, 0.8f, 0.8f}, blue{0.1f, 0.3f, 0.9f}, red{0.85f, 0.1f, 0.1f},
+      green{0.1f, 0.6f, 0.2f};
+  const std::string font = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+  auto text = [&](int x, int y, const std::string& s, int size, const std::vector<float>& col) {
+    OIIO::ImageBufAlgo::render_text(img, x, y, s, size, font, col);
+  };
+  // Grid lines at 1, 2, 5 x 10^k with labels.
+  for (int axis = 0; axis < 2; ++axis) {
+    const double lo = axis ? y0 : x0, hi = axis ? y1 : x1;
+    for (int k = static_cast<int>(std::floor(std::log10(lo))); k <= static_cast<int>(std::ceil(std::log10(hi))); ++k)
+      for (double m : {1.0, 2.0, 5.0}) {
+        const double v = m * std::pow(10.0, k);
+        if (v < lo * 0.999 || v > hi * 1.001) continue;
+        char lab[32];
+        std::snprintf(lab, sizeof lab, axis ? "%.0e" : "%g", v);
+        if (axis) {
+          OIIO::ImageBufAlgo::render_line(img, L, py(v), W - R, py(v), grey);
+          text(4, py(v) + 4, lab, 12, black);
+        } else {
+          OIIO::ImageBufAlgo::render_line(img, px(v), T, px(v), H - B, grey);
+          text(px(v) - 8, H - B + 16, lab, 12, black);
+        }
+      }
+  }
+  OIIO::ImageBufAlgo::render_box(img, L, T, W - R, H - B, black);
+  text(L, 20, title, 14, black);
+  text(W / 2 - 90, H - 10, "median ms/frame (log)", 13, black);
+  text(4, T - 12, "RMSE (log)", 12, black);
+  for (size_t i = 1; i < front.size(); ++i)
+    OIIO::ImageBufAlgo::render_line(img, px(rows[front[i - 1]]->median_ms), py(rows[front[i - 1]]->rmse),
+                                    px(rows[front[i]]->median_ms), py(rows[front[i]]->rmse), blue);
+  for (const Row* r : rows) {
+    const bool is_preset = r->group.rfind("preset:", 0) == 0, is_naive = r->group == "naive";
+    const auto& col = is_naive ? red : is_preset ? green : blue;
+    const int x = px(r->median_ms), y = py(r->rmse), s = is_preset || is_naive ? 4 : 2;
+    OIIO::ImageBufAlgo::render_box(img, x - s, y - s, x + s, y + s, col, is_preset || is_naive);
+    if (is_naive) text(x + 6, y - 4, "naive", 12, red);
+    if (is_preset && r->group != "preset:default") text(x + 6, y + 12, r->group.substr(7), 12, green);
+  }
+  if (!img.write(file.string())) std::fprintf(stderr, "cloudbench: cannot write %s\n", file.string().c_str());
+}
+
+// ---- main flow ---------------------------------------------------------------------------
+
+Options parse(int argc, char** argv) {
+  Options o;
+  for (int i = 0; i < argc; ++i) o.command += (i ? " " : "") + std::string(argv[i]);
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc) { std::fprintf(stderr, "cloudbench: %s needs a value\n", a.c_str()); std::exit(2); }
+      return argv[++i];
+    };
+    if (a == "--size") {
+      if (std::sscanf(value().c_str(), "%dx%d", &o.width, &o.height) != 2 || o.width < 1 || o.height < 1) {
+        std::fprintf(stderr, "cloudbench: --size expects WxH\n");
+        std::exit(2);
+      }
+    } else if (a == "--time-size") {
+      if (std::sscanf(value().c_str(), "%dx%d", &o.time_w, &o.time_h) != 2 || o.time_w < 1 || o.time_h < 1) {
+        std::fprintf(stderr, "cloudbench: --time-size expects WxH\n");
+        std::exit(2);
+      }
+    } else if (a == "--out") {
+      o.out = value();
+    } else if (a == "--frames") {
+      o.frames = std::atoi(value().c_str());
+      if (o.frames < 1) { std::fprintf(stderr, "cloudbench: --frames expects N >= 1\n"); std::exit(2); }
+    } else if (a == "--quick") {
+      o.quick = true;
+    } else {
+      std::fprintf(stderr, "usage: cloudbench [--size WxH] [--time-size WxH] [--out DIR] [--frames N] [--quick]\n");
+      std::exit(a == "--help" ? 0 : 2);
+    }
+  }
+  if (o.quick && o.frames == 5) o.frames = 2;
+  return o;
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+Row measure(CloudRenderer& renderer, const ViewRequest& base, const Config& c, const FrameImage& ref,
+            const Options& o) {
+  ViewRequest v = base;
+  v.frame_index = 0;
+  const FrameImage first = renderer.render(v, c.q);  // warm-up, and the frame whose error is measured
+  std::vector<double> ms;
+  v.width = o.time_w;
+  v.height = o.time_h;
+  renderer.render(v, c.q);  // warm-up at the timing size
+  for (int f = 1; f <= o.frames; ++f) {
+    v.frame_index = static_cast<std::uint32_t>(f);
+    ms.push_back(renderer.render(v, c.q).stats.render_ms);
+  }
+  const reference::ImageDifference d = reference::compare_images(first, ref);
+  Row r;
+  r.label = c.label;
+  r.group = c.group;
+  r.q = c.q;
+  r.median_ms = median(ms);
+  r.evals_px = first.stats.density_evals_per_pixel;
+  r.rmse = d.rmse;
+  r.rel_rmse = d.relative_rmse;
+  r.psnr = d.psnr_db;
+  r.max_err = d.max_error;
+  r.oiio_rmse = oiio_rmse(first, ref);
+  r.texture_bytes = texture_bytes(o.time_w, o.time_h);
+  if (first.stats.nonfinite_pixels) std::fprintf(stderr, "cloudbench: %s: non-finite pixels\n", c.label.c_str());
+  return r;
+}
+
+void write_csv(const fs::path& file, const std::vector<Row>& rows) {
+  std::ofstream f(file);
+  f << "scene,config,group,primary_steps,light_steps,ms_octaves,step_growth_ref_m,median_ms,density_evals_per_px,"
+       "texture_bytes,rmse,relative_rmse,psnr_db,max_abs_error,oiio_rmse\n";
+  for (const Row& r : rows)
+    f << '"' << r.scene << "\",\"" << r.label << "\"," << r.group << ',' << r.q.primary_steps << ',' << r.q.light_steps << ','
+      << r.q.ms_octaves << ',' << r.q.step_growth_ref_m << ',' << r.median_ms << ',' << r.evals_px << ','
+      << static_cast<long long>(r.texture_bytes) << ',' << r.rmse << ',' << r.rel_rmse << ',' << r.psnr << ','
+      << r.max_err << ',' << r.oiio_rmse << '\n';
+}
+
+std::string num(const char* f, double v) {
+  char b[64];
+  std::snprintf(b, sizeof b, f, v);
+  return b;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const Options o = parse(argc, argv);
+  fs::create_directories(o.out);
+  const auto t_start = std::chrono::steady_clock::now();
+  gl::EglContext context;
+  CloudRenderer renderer;
+  const std::vector<Config> configs = sweep(o.quick);
+  std::vector<Row> rows;
+  std::map<std::string, Reference> refs;
+  std::vector<std::string> scene_names;
+  double ref_seconds = 0;
+  for (const accuracy::AccuracyScene& s : accuracy::accuracy_scenes()) {
+    if (!s.core) continue;
+    scene_names.push_back(s.name);
+    Reference ref = reference_for(s, o);
+    std::printf("%-32s reference %s %.1f s, %.0f evals/px\n", s.name, ref.cached ? "(cached)" : "rendered", ref.seconds,
+                ref.evals_px);
+    std::fflush(stdout);
+    if (!ref.cached) ref_seconds += ref.seconds;
+    renderer.set_weather(*weather::preset(s.preset));
+    const ViewRequest v = accuracy::accuracy_view(s, o.width, o.height);
+    renderer.render(v);  // shader JIT and weather upload outside the timed frames
+    for (const Config& c : configs) {
+      Row r = measure(renderer, v, c, ref.img, o);
+      r.scene = s.name;
+      rows.push_back(r);
+    }
+    refs[s.name] = std::move(ref);
+  }
+  const double total_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
+  write_csv(o.out / "report.csv", rows);
+
+  // report.md
+  std::ostringstream md;
+  md << "# cloudbench report\n\nCommand: `" << o.command << "`  \n"
+     << "Error at " << o.width << "x" << o.height << ", cost (median ms) at " << o.time_w << "x" << o.time_h << ", " << configs.size() << " configurations x " << scene_names.size()
+     << " scenes, " << o.frames << " timed frames after a warm-up (median render_ms). Total wall time "
+     << num("%.1f", total_s) << " s, of which reference renders " << num("%.1f", ref_seconds)
+     << " s (0 = all cached in " << (o.out / "ref").string() << ").\n\n"
+     << "Error on linear radiance of the warm-up frame (frame_index 0) vs the CPU reference, "
+        "renderer/reference/image_metrics.h (PSNR peak = the reference's largest rgb value). "
+        "GPU memory: every texture the renderer allocates, "
+     << num("%.2f", texture_bytes(o.time_w, o.time_h) / 1048576.0)
+     << " MiB at this size, the same for every configuration (the march knobs allocate nothing).\n\n";
+  double worst_oiio = 0;
+  for (const Row& r : rows)
+    if (r.rmse > 0) worst_oiio = std::max(worst_oiio, std::abs(r.oiio_rmse - r.rmse) / r.rmse);
+  md << "OpenImageIO ImageBufAlgo::compare RMSE on rgb agrees with image_metrics RMSE to a relative "
+     << num("%.1e", worst_oiio) << " (largest over all rows).\n\n## References\n\n| scene | reference s | evals/px |\n|---|---:|---:|\n";
+  for (const auto& n : scene_names)
+    md << "| " << n << " | " << num("%.1f", refs[n].seconds) << " | " << num("%.0f", refs[n].evals_px) << " |\n";
+
+  // Aggregate over scenes: mean ms, mean evals, mean PSNR, worst PSNR.
+  md << "\n## All scenes (per configuration)\n\nms = sum of the scenes' median ms; PSNR mean and min over the "
+        "scenes; naive ms ratio = ms / naive ms.\n\n"
+        "| config | group | sum ms | ms / naive | evals/px mean | PSNR mean dB | PSNR min dB | RMSE mean |\n"
+        "|---|---|---:|---:|---:|---:|---:|---:|\n";
+  std::map<std::string, std::vector<const Row*>> by_config, by_scene;
+  for (const Row& r : rows) { by_config[r.group + "|" + r.label].push_back(&r); by_scene[r.scene].push_back(&r); }
+  double naive_ms = 0;
+  for (const Row& r : rows) if (r.group == "naive") naive_ms += r.median_ms;
+  for (const Config& c : configs) {
+    const auto& v = by_config[c.group + "|" + c.label];
+    double ms = 0, ev = 0, ps = 0, pmin = INFINITY, rm = 0;
+    for (const Row* r : v) { ms += r->median_ms; ev += r->evals_px; ps += r->psnr; pmin = std::min(pmin, r->psnr); rm += r->rmse; }
+    const double n = static_cast<double>(v.size());
+    md << "| " << c.label << " | " << c.group << " | " << num("%.0f", ms) << " | " << num("%.2f", ms / naive_ms) << " | "
+       << num("%.1f", ev / n) << " | " << num("%.2f", ps / n) << " | " << num("%.2f", pmin) << " | " << num("%.3e", rm / n)
+       << " |\n";
+  }
+  md << "\n## Per scene\n";
+  for (const auto& n : scene_names) {
+    const auto& v = by_scene[n];
+    const std::vector<size_t> front = pareto(v);
+    const std::string png = "pareto_" + slug(n) + ".png";
+    plot(o.out / png, n + " (" + std::to_string(o.width) + "x" + std::to_string(o.height) + ")", v, front);
+    md << "\n### " << n << "\n\n![" << n << "](" << png << ")\n\nPareto front (error vs median ms):\n\n"
+       << "| config | ms | evals/px | RMSE | PSNR dB | max err |\n|---|---:|---:|---:|---:|---:|\n";
+    for (size_t i : front)
+      md << "| " << v[i]->label << " | " << num("%.1f", v[i]->median_ms) << " | " << num("%.1f", v[i]->evals_px) << " | "
+         << num("%.3e", v[i]->rmse) << " | " << num("%.2f", v[i]->psnr) << " | " << num("%.3e", v[i]->max_err) << " |\n";
+    md << "\nAll configurations:\n\n| config | group | ms | evals/px | RMSE | PSNR dB | max err |\n|---|---|---:|---:|---:|---:|---:|\n";
+    for (const Row* r : v)
+      md << "| " << r->label << " | " << r->group << " | " << num("%.1f", r->median_ms) << " | " << num("%.1f", r->evals_px)
+         << " | " << num("%.3e", r->rmse) << " | " << num("%.2f", r->psnr) << " | " << num("%.3e", r->max_err) << " |\n";
+  }
+  std::ofstream(o.out / "report.md") << md.str();
+  std::printf("cloudbench: %zu rows in %.1f s -> %s\n", rows.size(), total_s, o.out.string().c_str());
+  return 0;
+}

@@ -1,0 +1,117 @@
+// Reduced numerical-stability sweep (issue "Accuracy" part 4; the full sweep is
+// bench/cloudbench_stability.cpp, docs/STABILITY.md): ~200 poses over the globe at 32x18,
+// 20 smoothness poses (1 cm / 0.001 deg steps) and the 30-day uptime check.
+#include <gtest/gtest.h>
+
+#include "bench/stability_sweep.h"
+#include "render_test_support.h"
+
+namespace cloudsvc::test {
+namespace {
+
+constexpr int kW = 32, kH = 18;  // pixels
+
+TEST(StabilitySweep, NoNonFiniteNegativeOrFailedFrameAnywhere) {
+  CloudRenderer& r = shared_renderer();
+  const std::vector<std::string> presets = weather::preset_names();
+  ASSERT_FALSE(presets.empty());
+  const int per_preset = 200 / static_cast<int>(presets.size()) + 1;
+  int frames = 0;
+  double sun_min = 1e9, sun_max = -1e9;
+  for (size_t p = 0; p < presets.size(); ++p) {
+    r.set_weather(*weather::preset(presets[p]));
+    for (const stab::Pose& pose : stab::make_poses(presets[p], per_preset, 4242 + p, kW, kH)) {
+      const stab::FrameCheck c = stab::check_frame(r, pose.view);
+      ++frames;
+      sun_min = std::min(sun_min, c.sun_elevation_deg);
+      sun_max = std::max(sun_max, c.sun_elevation_deg);
+      EXPECT_TRUE(c.ok()) << stab::describe(pose) << ": bad values " << c.bad_values << ", nonfinite "
+                          << c.nonfinite_stat << ", GL errors " << c.gl_errors << ", exception '" << c.exception << "'";
+    }
+  }
+  EXPECT_GE(frames, 200);
+  // The sweep really covers night and high sun.
+  EXPECT_LT(sun_min, -15.0);
+  EXPECT_GT(sun_max, 70.0);
+}
+
+// The pose generator hits the special values it promises (so the test above covers them).
+TEST(StabilitySweep, PosesIncludePolesAntimeridianAndLayerBoundaries) {
+  const weather::Weather wx = *weather::preset("broken-cumulus");
+  ASSERT_FALSE(wx.layers.empty());
+  const std::vector<stab::Pose> poses = stab::make_poses("broken-cumulus", 400, 7, kW, kH);
+  int pole = 0, anti = 0, boundary = 0, vertical = 0;
+  for (const stab::Pose& p : poses) {
+    pole += std::abs(p.view.position.lat_deg) == 90.0;
+    anti += std::abs(p.view.position.lon_deg) == 180.0;
+    boundary += p.view.position.alt_m == wx.layers[0].base_m || p.view.position.alt_m == wx.layers[0].top_m;
+    vertical += std::abs(p.view.attitude.pitch_deg) == 90.0;
+  }
+  EXPECT_GT(pole, 0);
+  EXPECT_GT(anti, 0);
+  EXPECT_GT(boundary, 0);
+  EXPECT_GT(vertical, 0);
+}
+
+// An unreachable target gives the closest elevation of the day (the noon maximum).
+TEST(StabilitySweep, SunElevationSolverHitsTarget) {
+  const double day = *geo::parse_utc_iso8601("2026-03-20T00:00:00Z");
+  for (double target : {-20.0, -5.0, 0.0, 30.0, 42.0}) {  // noon sun at 47.45 N on 20 March: 42.5 deg
+    const double t = stab::utc_for_sun_elevation(47.45, 8.56, day, target);
+    EXPECT_NEAR(geo::solar_position(t, 47.45, 8.56).elevation_deg, target, 1e-3) << target;
+  }
+  const double t = stab::utc_for_sun_elevation(47.45, 8.56, day, 60.0);
+  EXPECT_NEAR(geo::solar_position(t, 47.45, 8.56).elevation_deg, 42.5, 0.2);
+}
+
+TEST(StabilitySweep, CentimetreAndMillidegreeStepsAreSmooth) {
+  CloudRenderer& r = shared_renderer();
+  const std::vector<std::string> presets = weather::preset_names();
+  std::string current;
+  int pairs = 0;
+  for (const stab::Pose& pose : stab::make_smooth_poses(presets, 20, 99, kW, kH)) {
+    if (pose.preset != current) { r.set_weather(*weather::preset(pose.preset)); current = pose.preset; }
+    for (const stab::SmoothResult& s : stab::check_smoothness(r, pose.view)) {
+      ++pairs;
+      EXPECT_TRUE(s.ok) << s.what << ": mean change " << s.step.mean_rel << " (floor " << s.jitter.mean_rel
+                        << "), fraction > 1e-2 " << s.step.frac_above << " (floor " << s.jitter.frac_above
+                        << "), max " << s.step.max_rel << " | " << stab::describe(pose);
+    }
+  }
+  EXPECT_EQ(pairs, 20 * 6);
+}
+
+// A perturbation far larger than 1 cm must fail the same criterion: the check can fail.
+TEST(StabilitySweep, SmoothnessCriterionDetectsARealChange) {
+  CloudRenderer& r = shared_renderer();
+  r.set_weather(*weather::preset("broken-cumulus"));
+  ViewRequest v = make_view(47.45, 8.56, 800.0, 250.0, 8.0, "2026-06-21T11:30:00Z", kW, kH);
+  FrameImage a, b, jit;
+  ASSERT_TRUE(stab::check_frame(r, v, &a).ok());
+  ViewRequest vj = v;
+  vj.frame_index += 1;
+  ASSERT_TRUE(stab::check_frame(r, vj, &jit).ok());
+  ViewRequest moved = v;
+  moved.attitude.heading_deg += 5.0;  // 2.6 pixels
+  ASSERT_TRUE(stab::check_frame(r, moved, &b).ok());
+  const stab::ImageDiff step = stab::image_diff(a, b, 0.01), floor = stab::image_diff(a, jit, 0.01);
+  EXPECT_GT(step.mean_rel, std::max(floor.mean_rel, 1e-3));
+}
+
+// Wind offsets are wrapped: anchor T / view T + 600 s renders the same as both shifted by
+// ~30 days (the shift is chosen so the sun is within ~0.01 deg of where it was).
+TEST(StabilitySweep, ThirtyDaysOfUptimeChangeNothing) {
+  CloudRenderer& r = shared_renderer();
+  const ViewRequest v = make_view(47.45, 8.56, 2500.0, 250.0, 5.0, "2026-06-06T10:00:00Z", 128, 72);
+  for (const char* name : {"broken-cumulus", "cumulonimbus"}) {
+    const stab::UptimeResult u = stab::check_uptime(r, *weather::preset(name), v, 600.0);
+    EXPECT_LT(u.sun_mismatch_deg, 0.02) << name;
+    EXPECT_EQ(u.max_uniform_diff, 0.0) << name;  // offsets and wind rotation bit-identical
+    EXPECT_LT(u.image.mean_rel, 1e-3) << name;
+    EXPECT_LT(u.image.frac_above, 0.01) << name;
+    EXPECT_GT(u.drift.mean_rel, 10.0 * u.image.mean_rel) << name << ": the clouds must move in 600 s";
+  }
+}
+
+}  // namespace
+}  // namespace cloudsvc::test

@@ -1,5 +1,7 @@
 #include "renderer/atmosphere_luts.h"
 
+#include <cmath>
+
 namespace cloudsvc {
 
 void dispatch_2d(int w, int h, int d) {
@@ -40,7 +42,17 @@ AtmosphereLuts::AtmosphereLuts()
   }
 }
 
-void AtmosphereLuts::update_view_dependent() {
+bool AtmosphereLuts::same_view(const ViewKey& a, const ViewKey& b) {
+  const glm::vec3 sa(a.sun_dir), sb(b.sun_dir);
+  return a.camera_forward == b.camera_forward && a.camera_right == b.camera_right && a.camera_up == b.camera_up &&
+         a.view == b.view && std::abs(a.planet.y - b.planet.y) < 1.0f && glm::length(sa - sb) < 1e-4f &&
+         std::abs(a.ap_params.x - b.ap_params.x) < 1.0f;
+}
+
+bool AtmosphereLuts::update_view_dependent(const FrameUniforms& u) {
+  const ViewKey key{u.camera_forward, u.camera_right, u.camera_up, u.view, u.planet, u.sun_dir, u.ap_params};
+  if (last_view_ && same_view(*last_view_, key)) return false;
+  last_view_ = key;
   glBindTextureUnit(0, transmittance_.id());
   glBindTextureUnit(1, multiscatter_.id());
   glBindTextureUnit(2, irradiance_.id());
@@ -51,6 +63,7 @@ void AtmosphereLuts::update_view_dependent() {
   glBindImageTexture(0, ap_inscatter_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   glBindImageTexture(1, ap_transmittance_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   dispatch_2d(kApSize, kApSize);
+  return true;
 }
 
 void AtmosphereLuts::bind_for_scene() const {

@@ -6,6 +6,9 @@
 
 #include "renderer/gl/gl_objects.h"
 #include "renderer/gl/shader_program.h"
+#include "renderer/frame_uniforms.h"
+
+#include <optional>
 
 namespace cloudsvc {
 
@@ -19,13 +22,22 @@ class AtmosphereLuts {
 
   AtmosphereLuts();  // compiles the LUT programs and computes the static LUTs
 
-  // Recomputes the camera-dependent LUTs; the frame uniform buffer must be bound at 0.
-  void update_view_dependent();
+  // Recomputes the camera-dependent LUTs (the frame uniform buffer must be bound at 0)
+  // unless their inputs are unchanged since the last call: camera altitude within 1 m,
+  // sun direction within 1e-4 rad (0.006 deg, ~1.4 s of sun motion), camera axes, field
+  // of view and aerial-perspective reach unchanged. Returns true when it recomputed.
+  bool update_view_dependent(const FrameUniforms& u);
 
   // Binds the LUTs to the texture units the scene shader expects (0, 1, 2, 6, 7, 8).
   void bind_for_scene() const;
 
  private:
+  // The inputs the view-dependent LUTs were last computed for.
+  struct ViewKey {
+    glm::vec4 camera_forward, camera_right, camera_up, view, planet, sun_dir, ap_params;
+  };
+  static bool same_view(const ViewKey& a, const ViewKey& b);
+  std::optional<ViewKey> last_view_;
   gl::ShaderProgram sky_view_prog_, ap_prog_;
   gl::Texture transmittance_, multiscatter_, irradiance_, sky_view_, ap_inscatter_, ap_transmittance_;
 };

@@ -105,7 +105,7 @@ FrameImage CloudRenderer::render(const ViewRequest& view, const RenderQuality& q
   glNamedBufferSubData(counters_.id(), 0, sizeof(Counters), &zero);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, counters_.id());
 
-  atmosphere_.update_view_dependent();
+  const bool view_luts_recomputed = atmosphere_.update_view_dependent(u);
 
   scene_prog_.use();
   atmosphere_.bind_for_scene();
@@ -128,6 +128,7 @@ FrameImage CloudRenderer::render(const ViewRequest& view, const RenderQuality& q
   const auto end = std::chrono::steady_clock::now();
 
   const geo::SolarPosition sp = geo::solar_position(view.unix_time_s, view.position.lat_deg, view.position.lon_deg);
+  img.stats.view_luts_recomputed = view_luts_recomputed;
   img.stats.render_ms = std::chrono::duration<double, std::milli>(end - start).count();
   img.stats.sun_elevation_deg = sp.elevation_deg;
   img.stats.sun_azimuth_deg = sp.azimuth_deg;

@@ -42,6 +42,7 @@ struct FrameStats {
   std::int64_t cloud_pixels = 0;      // pixels with cloud opacity > 0.01
   double density_evals_per_pixel = 0.0;
   std::int64_t nonfinite_pixels = 0;  // pixels the shader had to clamp (must be 0)
+  bool view_luts_recomputed = true;   // sky-view LUT and aerial-perspective volume redone this frame
 };
 
 // A rendered frame: linear spectral radiance at 680/550/440 nm in W m^-2 sr^-1 nm^-1

@@ -172,5 +172,26 @@ TEST(RenderImage, PolesRenderCleanlyAndContinuously) {
   EXPECT_LT(diff / sum, 0.05);
 }
 
+// View-dependent LUTs (sky view, aerial perspective) are recomputed only when their
+// inputs change; reusing them gives exactly the image a recomputation would.
+TEST(RenderImage, ViewLutsAreReusedOnlyWhenTheViewIsUnchanged) {
+  CloudRenderer& r = shared_renderer();
+  r.set_weather(*weather::preset("broken-cumulus"));
+  const ViewRequest v = make_view(47.45, 8.56, 500.0, 90.0, 10.0, kNoonZurich, 64, 36);
+  const FrameImage first = r.render(v);
+  const FrameImage again = r.render(v);
+  EXPECT_FALSE(again.stats.view_luts_recomputed);
+  EXPECT_EQ(first.rgba, again.rgba);
+  ViewRequest turned = v;
+  turned.attitude.heading_deg += 0.5;
+  EXPECT_TRUE(r.render(turned).stats.view_luts_recomputed);
+  ViewRequest later = v;
+  later.unix_time_s += 60.0;  // the sun moves 0.25 deg
+  EXPECT_TRUE(r.render(later).stats.view_luts_recomputed);
+  const FrameImage back = r.render(v);  // recomputed for v again: same as the first frame
+  EXPECT_TRUE(back.stats.view_luts_recomputed);
+  EXPECT_EQ(first.rgba, back.rgba);
+}
+
 }  // namespace
 }  // namespace cloudsvc::test

@@ -7,7 +7,7 @@ PACKAGES=(
   g++ cmake make pkgconf
   libglfw3-dev libglm-dev libgeographiclib-dev
   libepoxy-dev libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
-  libopenimageio-dev openimageio-tools
+  libopenimageio-dev openimageio-tools libimath-dev fonts-dejavu-core
   libgtest-dev libgmock-dev
   libcli11-dev nlohmann-json3-dev libspdlog-dev libfmt-dev
   libflatbuffers-dev flatbuffers-compiler libasio-dev

@@ -43,6 +43,7 @@
 #include <vector>
 
 #include "../tests/accuracy_scenes.h"
+#include "bench/stability_command.h"
 #include "renderer/atmosphere_luts.h"
 #include "renderer/cloud_renderer.h"
 #include "renderer/gl/egl_context.h"
@@ -375,6 +376,12 @@ std::string num(const char* f, double v) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // `cloudbench --stability ...`: the numerical-stability sweep (bench/stability_command.h).
+  if (argc > 1 && std::string(argv[1]) == "--stability") {
+    std::vector<char*> rest = {argv[0]};
+    for (int i = 2; i < argc; ++i) rest.push_back(argv[i]);
+    return cloudsvc::stability_command::run(static_cast<int>(rest.size()), rest.data());
+  }
   const Options o = parse(argc, argv);
   fs::create_directories(o.out);
   const auto t_start = std::chrono::steady_clock::now();

@@ -1,0 +1,159 @@
+// `cloudbench --stability` (also built as `cloudbench_stability`): the numerical-stability
+// stress sweep of issue "Accuracy" part 4 (docs/STABILITY.md).
+// Renders --poses tiny frames over the globe (all presets), checks every pixel, then
+// --smooth poses for 1 cm / 0.001 deg smoothness, then the 30-day uptime check.
+// Prints a Markdown summary on stdout; exit status 1 if any check failed.
+//
+//   build/bin/cloudbench --stability [--poses 10000] [--smooth 200] [--size 32x18] [--seed 1]
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "bench/stability_sweep.h"
+#include "renderer/gl/egl_context.h"
+
+namespace cloudsvc::stability_command {
+
+using Clock = std::chrono::steady_clock;
+
+inline double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+// The whole sweep; argv as for a program (argv[0] is a name). Returns the exit status.
+inline int run(int argc, char** argv) {
+  CLI::App app{"Numerical-stability stress sweep of the GPU renderer (cloudbench --stability)"};
+  int poses = 10000, smooth = 200, max_listed = 20;
+  std::uint64_t seed = 1;
+  std::string size = "32x18";
+  app.add_option("--poses", poses, "frames of the globe sweep (split over all presets)")->check(CLI::Range(1, 10000000));
+  app.add_option("--smooth", smooth, "poses of the smoothness check (8 renders each)")->check(CLI::Range(0, 100000));
+  app.add_option("--size", size, "frame size WxH");
+  app.add_option("--seed", seed, "pose generator seed");
+  app.add_option("--list", max_listed, "failures listed in full");
+  CLI11_PARSE(app, argc, argv);
+  int w = 0, h = 0;
+  if (std::sscanf(size.c_str(), "%dx%d", &w, &h) != 2 || w <= 0 || h <= 0 || w > 4096 || h > 4096) {
+    std::fprintf(stderr, "--size: expected WxH, got %s\n", size.c_str());
+    return 2;
+  }
+
+  const auto t_start = Clock::now();
+  gl::EglContext context;
+  CloudRenderer renderer;
+  const std::vector<std::string> presets = weather::preset_names();
+  bool all_ok = true;
+
+  // ---- 1. globe sweep
+  std::int64_t frames = 0, failed = 0, bad_values = 0, nonfinite = 0, gl_errors = 0, exceptions = 0;
+  double sun_min = 1e9, sun_max = -1e9, ms_sum = 0.0;
+  int sun_bins[12] = {};  // sun elevation histogram, 10 deg bins from -30
+  std::vector<std::string> failures;
+  const auto t1 = Clock::now();
+  for (size_t p = 0; p < presets.size(); ++p) {
+    const int n = poses / static_cast<int>(presets.size()) + (static_cast<int>(p) < poses % static_cast<int>(presets.size()) ? 1 : 0);
+    renderer.set_weather(*weather::preset(presets[p]));
+    for (const stab::Pose& pose : stab::make_poses(presets[p], n, seed * 1000 + p, w, h)) {
+      const stab::FrameCheck c = stab::check_frame(renderer, pose.view);
+      ++frames;
+      bad_values += c.bad_values;
+      nonfinite += c.nonfinite_stat;
+      gl_errors += c.gl_errors;
+      exceptions += c.exception.empty() ? 0 : 1;
+      ms_sum += c.render_ms;
+      sun_min = std::min(sun_min, c.sun_elevation_deg);
+      sun_max = std::max(sun_max, c.sun_elevation_deg);
+      sun_bins[std::clamp(static_cast<int>(std::floor((c.sun_elevation_deg + 30.0) / 10.0)), 0, 11)]++;
+      if (!c.ok()) {
+        ++failed;
+        char buf[160];
+        std::snprintf(buf, sizeof buf, " | bad %lld, nonfinite %lld, gl %d, %s", static_cast<long long>(c.bad_values),
+                      static_cast<long long>(c.nonfinite_stat), c.gl_errors, c.exception.c_str());
+        failures.push_back(stab::describe(pose) + buf);
+      }
+      if (frames % 500 == 0)
+        std::fprintf(stderr, "sweep %lld frames, %lld failed, %.0f s\n", static_cast<long long>(frames),
+                     static_cast<long long>(failed), seconds_since(t1));
+    }
+  }
+  const double sweep_s = seconds_since(t1);
+  all_ok = all_ok && failed == 0;
+
+  std::printf("# cloudbench_stability (`cloudbench --stability`)\n\n");
+  std::printf("Frame size %dx%d, seed %llu, %zu presets, default quality.\n\n", w, h, static_cast<unsigned long long>(seed),
+              presets.size());
+  std::printf("## 1. Globe sweep\n\n| frames | failed | bad pixel values | stats.nonfinite_pixels | GL errors | exceptions | "
+              "sun elevation range | mean ms/frame | wall s |\n|---|---|---|---|---|---|---|---|---|\n");
+  std::printf("| %lld | %lld | %lld | %lld | %lld | %lld | %.2f .. %.2f deg | %.1f | %.0f |\n\n", static_cast<long long>(frames),
+              static_cast<long long>(failed), static_cast<long long>(bad_values), static_cast<long long>(nonfinite),
+              static_cast<long long>(gl_errors), static_cast<long long>(exceptions), sun_min, sun_max,
+              ms_sum / std::max<std::int64_t>(frames, 1), sweep_s);
+  std::printf("Sun elevation histogram (frames per 10 deg bin from -30 deg):");
+  for (int b : sun_bins) std::printf(" %d", b);
+  std::printf("\n\n");
+  for (size_t i = 0; i < failures.size() && static_cast<int>(i) < max_listed; ++i) std::printf("- FAIL %s\n", failures[i].c_str());
+
+  // ---- 2. smoothness
+  const auto t2 = Clock::now();
+  int pairs = 0, pair_fail = 0;
+  double worst_step = 0.0, worst_frac = 0.0, worst_mean = 0.0, worst_ratio = 0.0, sum_jitter = 0.0;
+  std::string worst_pose;
+  std::vector<std::string> smooth_fail;
+  const std::vector<stab::Pose> sp = stab::make_smooth_poses(presets, smooth, seed * 7 + 3, w, h);
+  std::string current;
+  for (const stab::Pose& pose : sp) {
+    if (pose.preset != current) { renderer.set_weather(*weather::preset(pose.preset)); current = pose.preset; }
+    for (const stab::SmoothResult& r : stab::check_smoothness(renderer, pose.view)) {
+      ++pairs;
+      sum_jitter += r.jitter.mean_rel;
+      if (r.step.max_rel > worst_step) { worst_step = r.step.max_rel; worst_pose = r.what + ": " + stab::describe(pose); }
+      worst_frac = std::max(worst_frac, r.step.frac_above);
+      worst_mean = std::max(worst_mean, r.step.mean_rel);
+      if (std::getenv("STAB_VERBOSE")) std::fprintf(stderr, "pair %s max %.3g frac %.4f mean %.3g jitter %.3g\n", r.what.c_str(), r.step.max_rel, r.step.frac_above, r.step.mean_rel, r.jitter.max_rel);
+      if (r.jitter.mean_rel > 0) worst_ratio = std::max(worst_ratio, r.step.mean_rel / r.jitter.mean_rel);
+      if (!r.ok) {
+        ++pair_fail;
+        char buf[240];
+        std::snprintf(buf, sizeof buf, "%s: mean %.3g (floor %.3g), frac>1e-2 %.4f (floor %.4f), max %.3g | ", r.what.c_str(),
+                      r.step.mean_rel, r.jitter.mean_rel, r.step.frac_above, r.jitter.frac_above, r.step.max_rel);
+        smooth_fail.push_back(buf + stab::describe(pose));
+      }
+    }
+  }
+  all_ok = all_ok && pair_fail == 0;
+  std::printf("\n## 2. Smoothness (1 cm east/north/up, 0.001 deg heading/pitch/roll)\n\n");
+  std::printf("| poses | pairs | failed | worst max rel change | worst fraction > 1e-2 | worst image-mean rel change | worst step/jitter mean ratio | average jitter-floor mean | wall s |\n"
+              "|---|---|---|---|---|---|---|---|---|\n| %zu | %d | %d | %.3g | %.4f | %.3g | %.3g | %.3g | %.0f |\n\n",
+              sp.size(), pairs, pair_fail, worst_step, worst_frac, worst_mean, worst_ratio, sum_jitter / std::max(pairs, 1),
+              seconds_since(t2));
+  std::printf("Worst step: %s\n\n", worst_pose.c_str());
+  for (size_t i = 0; i < smooth_fail.size() && static_cast<int>(i) < max_listed; ++i) std::printf("- FAIL %s\n", smooth_fail[i].c_str());
+
+  // ---- 3. uptime
+  ViewRequest v;
+  v.position = {47.45, 8.56, 2500.0};
+  v.attitude = {250.0, 5.0, 0.0};
+  v.unix_time_s = *geo::parse_utc_iso8601("2026-06-06T10:00:00Z");
+  v.width = 4 * w;
+  v.height = 4 * h;
+  std::printf("\n## 3. Uptime (anchor T, view T + 600 s vs both shifted by S ~ 30 days)\n\n"
+              "| preset | S - 30 d (s) | sun mismatch deg | max wind-uniform diff | image max rel | frac > 1e-2 | image mean rel | control: drift over 600 s, mean rel | ok |\n"
+              "|---|---|---|---|---|---|---|---|---|\n");
+  for (const std::string& name : presets) {
+    const weather::Weather wx = *weather::preset(name);
+    const stab::UptimeResult u = stab::check_uptime(renderer, wx, v, 600.0);
+    const bool ok = u.max_uniform_diff == 0.0 && u.image.mean_rel <= 1e-3 && u.image.frac_above <= 0.01 && u.drift.mean_rel > 10.0 * u.image.mean_rel;
+    all_ok = all_ok && ok;
+    std::printf("| %s | %.1f | %.4f | %.3g | %.3g | %.4f | %.3g | %.3g | %s |\n", name.c_str(), u.shift_s - 30 * stab::kDay,
+                u.sun_mismatch_deg, u.max_uniform_diff, u.image.max_rel, u.image.frac_above, u.image.mean_rel, u.drift.mean_rel,
+                ok ? "yes" : "NO");
+  }
+  std::printf("\nTotal wall time %.0f s. Result: %s\n", seconds_since(t_start), all_ok ? "PASS" : "FAIL");
+  return all_ok ? 0 : 1;
+}
+
+}  // namespace cloudsvc::stability_command

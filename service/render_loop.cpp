@@ -9,6 +9,7 @@
 #include "renderer/cloud_renderer.h"
 #include "renderer/gl/egl_context.h"
 #include "renderer/image_output.h"
+#include "renderer/quality_presets.h"
 #include "service/frame_encoding.h"
 #include "protocol/weather_conversion.h"
 #include "service/shm_frame_writer.h"
@@ -94,7 +95,8 @@ void RenderLoop::run() {
     const double utc = clock.utc_for(p.pose);
     FrameImage img;
     try {
-      img = renderer.render(view_request(p.pose, utc, view, frame));
+      const std::string preset = view.quality_preset.empty() ? "default" : view.quality_preset;
+      img = renderer.render(view_request(p.pose, utc, view, frame), *quality_preset(preset));  // checked by check_view
     } catch (const std::exception& e) {
       notify_(reply_to, protocol::Error{protocol::ErrorCode::RenderFailed, e.what(), 0});
       return;

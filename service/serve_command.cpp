@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "protocol/limits.h"
+#include "renderer/quality_presets.h"
 #include "service/commands.h"
 #include "service/frame_mailbox.h"
 #include "service/network_server.h"
@@ -47,8 +48,11 @@ std::string check_view(const protocol::SetView& v, const ServeOptions& opt) {
     if (v.file_dir.empty() || !std::filesystem::is_directory(v.file_dir, ec) || ::access(v.file_dir.c_str(), W_OK) != 0)
       return "SetView.file_dir '" + v.file_dir + "': not a writable directory on the service's machine";
   }
-  if (!v.quality_preset.empty() && v.quality_preset != "default")
-    return "SetView.quality_preset '" + v.quality_preset + "': unknown (available: default)";
+  if (!v.quality_preset.empty() && !quality_preset(v.quality_preset)) {
+    std::string names;
+    for (const std::string& n : quality_preset_names()) names += (names.empty() ? "" : ", ") + n;
+    return "SetView.quality_preset '" + v.quality_preset + "': unknown (available: " + names + ")";
+  }
   return {};
 }
 

@@ -17,29 +17,15 @@
 #include "service/render_options.h"
 #include "weather/presets.h"
 #include "weather/weather_json.h"
+#include "cli_test_support.h"
 
 namespace cloudsvc {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Outcome {
-  ParsedCommand cmd;
-  std::string out;  // stdout
-  std::string err;  // stderr
-};
-
-Outcome run(const std::vector<std::string>& args) {
-  std::vector<const char*> argv{"cloudsvc"};
-  for (const std::string& a : args) argv.push_back(a.c_str());
-  testing::internal::CaptureStdout();
-  testing::internal::CaptureStderr();
-  Outcome r;
-  r.cmd = parse_command_line(static_cast<int>(argv.size()), argv.data());
-  r.err = testing::internal::GetCapturedStderr();
-  r.out = testing::internal::GetCapturedStdout();
-  return r;
-}
+using test::Outcome;
+using test::run;
 
 std::string joined(const std::vector<std::string>& args) {
   std::string text = "cloudsvc";

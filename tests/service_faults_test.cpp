@@ -274,5 +274,24 @@ TEST_F(ServiceFaults, BadWeatherIsRejectedGoodWeatherApplies) {
   EXPECT_EQ(ready.pose.lat_deg, 18.0);
 }
 
+// SetView.quality_preset: a known preset is applied, an unknown one is refused and the
+// view stays as it was.
+TEST_F(ServiceFaults, QualityPresetsAreCheckedAndApplied) {
+  ServiceConnection c(svc_->address(), "presets");
+  protocol::SetView v;
+  v.width = 64;
+  v.height = 36;
+  v.sinks = protocol::sink::kShm;
+  v.quality_preset = "no-such-preset";
+  const std::uint64_t seq = c.send(v);
+  const auto err = c.receive_until<protocol::Error>(10s);
+  EXPECT_EQ(err.code, protocol::ErrorCode::UnknownPreset);
+  EXPECT_EQ(err.answers_seq, seq);
+  v.quality_preset = "low";
+  c.send(v);
+  c.send(pose_at(19.0));
+  EXPECT_EQ(c.receive_until<protocol::FrameReady>(60s).pose.lat_deg, 19.0);
+}
+
 }  // namespace
 }  // namespace cloudsvc::test

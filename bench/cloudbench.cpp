@@ -43,6 +43,7 @@
 #include <vector>
 
 #include "../tests/accuracy_scenes.h"
+#include "bench/sequence_command.h"
 #include "bench/stability_command.h"
 #include "renderer/atmosphere_luts.h"
 #include "renderer/cloud_renderer.h"
@@ -80,12 +81,18 @@ struct Row {
 };
 
 std::string knob_label(const RenderQuality& q) {
-  char b[96];
+  char b[128];
   if (q.step_growth_ref_m > 0)
     std::snprintf(b, sizeof b, "P%d L%d O%d log%.0f", q.primary_steps, q.light_steps, q.ms_octaves, q.step_growth_ref_m);
   else
     std::snprintf(b, sizeof b, "P%d L%d O%d uniform", q.primary_steps, q.light_steps, q.ms_octaves);
-  return b;
+  std::string l = b;
+  if (!q.ground_shadow_map) l += " shadows/px";
+  if (q.long_step_factor > 1) l += " long" + std::to_string(q.long_step_factor);
+  if (q.level_of_detail) l += " LOD";
+  if (q.cloud_resolution_divisor > 1) l += " res1/" + std::to_string(q.cloud_resolution_divisor);
+  if (q.temporal_reuse) l += " T1/" + std::to_string(q.temporal_stride * q.temporal_stride);
+  return l;
 }
 
 RenderQuality knobs(int p, int l, int o, double tref) {
@@ -95,6 +102,33 @@ RenderQuality knobs(int p, int l, int o, double tref) {
   q.ms_octaves = o;
   q.step_growth_ref_m = tref;
   return q;
+}
+
+// The skips of issue 5, each alone on top of the centre, then combined.
+std::vector<std::pair<std::string, RenderQuality>> skip_configs() {
+  std::vector<std::pair<std::string, RenderQuality>> v;
+  RenderQuality c;  // the centre march without skips
+  c.long_step_factor = 1;
+  c.ground_shadow_map = false;
+  auto with = [&](auto f) { RenderQuality q = c; f(q); return q; };
+  v.push_back({"none", c});
+  v.push_back({"ground shadow map", with([](RenderQuality& q) { q.ground_shadow_map = true; })});
+  v.push_back({"long steps x2", with([](RenderQuality& q) { q.long_step_factor = 2; })});
+  v.push_back({"long steps x4", with([](RenderQuality& q) { q.long_step_factor = 4; })});
+  v.push_back({"LOD", with([](RenderQuality& q) { q.level_of_detail = true; })});
+  v.push_back({"half resolution", with([](RenderQuality& q) { q.cloud_resolution_divisor = 2; })});
+  v.push_back({"temporal 1/1 (accumulate)", with([](RenderQuality& q) { q.temporal_reuse = true; q.temporal_stride = 1; })});
+  v.push_back({"temporal 1/4", with([](RenderQuality& q) { q.temporal_reuse = true; q.temporal_stride = 2; })});
+  v.push_back({"temporal 1/16", with([](RenderQuality& q) { q.temporal_reuse = true; q.temporal_stride = 4; })});
+  v.push_back({"shadow map + long x2 + temporal 1/16", with([](RenderQuality& q) {
+                 q.ground_shadow_map = true; q.long_step_factor = 2; q.temporal_reuse = true; q.temporal_stride = 4; })});
+  v.push_back({"long x4 + LOD + half res + temporal 1/4", with([](RenderQuality& q) {
+                 q.ground_shadow_map = true; q.long_step_factor = 4; q.level_of_detail = true;
+                 q.cloud_resolution_divisor = 2; q.temporal_reuse = true; q.temporal_stride = 2; })});
+  v.push_back({"long x4 + LOD + half res + temporal 1/16", with([](RenderQuality& q) {
+                 q.ground_shadow_map = true; q.long_step_factor = 4; q.level_of_detail = true;
+                 q.cloud_resolution_divisor = 2; q.temporal_reuse = true; q.temporal_stride = 4; })});
+  return v;
 }
 
 // The configurations, deduplicated by knobs (the first group that names a set wins; the
@@ -108,7 +142,7 @@ std::vector<Config> sweep(bool quick) {
     if (seen.insert(l).second) out.push_back({l, group, q});
   };
   add("centre", c);
-  add("naive", knobs(64, 6, 3, 0.0));
+  add("naive", *quality_preset("naive"));
   const std::vector<int> primary = quick ? std::vector<int>{32, 128} : std::vector<int>{16, 24, 32, 48, 64, 96, 128, 192};
   const std::vector<int> light = quick ? std::vector<int>{3} : std::vector<int>{2, 3, 4, 6, 8, 12};
   const std::vector<int> octaves = quick ? std::vector<int>{1} : std::vector<int>{1, 2, 3, 4};
@@ -120,27 +154,14 @@ std::vector<Config> sweep(bool quick) {
   if (!quick)
     for (int p : {24, 32, 48, 96})
       for (int l : {3, 4, 8}) add("grid", knobs(p, l, c.ms_octaves, c.step_growth_ref_m));
+  for (const auto& [name, q] : skip_configs()) out.push_back({knob_label(q), "skip:" + name, q});
+  // (labels of the skip rows repeat the knobs; the group names the skip)
   for (const std::string& name : quality_preset_names()) {
     if (name == "naive") continue;
     const RenderQuality q = *quality_preset(name);
     out.push_back({knob_label(q), "preset:" + name, q});
   }
   return out;
-}
-
-// GPU memory of the technique (bytes): every texture the renderer allocates
-// (renderer/cloud_renderer.cpp, renderer/atmosphere_luts.cpp). The march knobs allocate
-// nothing, so this is the same for every configuration today.
-double texture_bytes(int w, int h) {
-  const RendererConfig rc;
-  using A = AtmosphereLuts;
-  const double rgba32f = 16.0;
-  double b = std::pow(rc.base_noise_size, 3) + std::pow(rc.detail_noise_size, 3);           // R8 volumes
-  b += 2.0 * rc.weather_map_width * rc.weather_map_height * rgba32f;                         // 2 weather keyframes
-  b += (A::kTransmittanceW * A::kTransmittanceH + 2.0 * A::kMultiscatterSize * A::kMultiscatterSize) * rgba32f;
-  b += (A::kSkyViewW * A::kSkyViewH + 2.0 * std::pow(A::kApSize, 3)) * rgba32f;  // sky view + AP volumes
-  b += static_cast<double>(w) * h * rgba32f;                                     // render target
-  return b;
 }
 
 std::string slug(const std::string& s) {
@@ -326,33 +347,51 @@ double median(std::vector<double> v) {
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
+// One configuration on one scene: the view held still for kStillFrames frames (a
+// temporal configuration converges over one 16-frame cycle; the others march every frame
+// in full), error of the last frame at the error size; cost = median render_ms of
+// o.frames frames after a first (full) frame at the time size, i.e. amortised.
+constexpr int kStillFrames = 17;
+
 Row measure(CloudRenderer& renderer, const ViewRequest& base, const Config& c, const FrameImage& ref,
             const Options& o) {
   ViewRequest v = base;
-  v.frame_index = 0;
-  const FrameImage first = renderer.render(v, c.q);  // warm-up, and the frame whose error is measured
+  v.reset_history = true;
+  FrameImage last;
+  for (int f = 0; f < kStillFrames; ++f) {
+    v.frame_index = static_cast<std::uint32_t>(f);
+    last = renderer.render(v, c.q);
+    v.reset_history = false;
+  }
   std::vector<double> ms;
+  double evals = 0, bytes = 0;
   v.width = o.time_w;
   v.height = o.time_h;
-  renderer.render(v, c.q);  // warm-up at the timing size
+  v.reset_history = true;
+  v.frame_index = 0;
+  renderer.render(v, c.q);  // first frame at the timing size: full march, shadow map
+  v.reset_history = false;
   for (int f = 1; f <= o.frames; ++f) {
     v.frame_index = static_cast<std::uint32_t>(f);
-    ms.push_back(renderer.render(v, c.q).stats.render_ms);
+    const FrameImage img = renderer.render(v, c.q);
+    ms.push_back(img.stats.render_ms);
+    evals += img.stats.density_evals_per_pixel;
+    bytes = static_cast<double>(img.stats.gpu_memory_bytes);
   }
-  const reference::ImageDifference d = reference::compare_images(first, ref);
+  const reference::ImageDifference d = reference::compare_images(last, ref);
   Row r;
   r.label = c.label;
   r.group = c.group;
   r.q = c.q;
   r.median_ms = median(ms);
-  r.evals_px = first.stats.density_evals_per_pixel;
+  r.evals_px = evals / o.frames;
   r.rmse = d.rmse;
   r.rel_rmse = d.relative_rmse;
   r.psnr = d.psnr_db;
   r.max_err = d.max_error;
-  r.oiio_rmse = oiio_rmse(first, ref);
-  r.texture_bytes = texture_bytes(o.time_w, o.time_h);
-  if (first.stats.nonfinite_pixels) std::fprintf(stderr, "cloudbench: %s: non-finite pixels\n", c.label.c_str());
+  r.oiio_rmse = oiio_rmse(last, ref);
+  r.texture_bytes = bytes;
+  if (last.stats.nonfinite_pixels) std::fprintf(stderr, "cloudbench: %s: non-finite pixels\n", c.label.c_str());
   return r;
 }
 
@@ -381,6 +420,12 @@ int main(int argc, char** argv) {
     std::vector<char*> rest = {argv[0]};
     for (int i = 2; i < argc; ++i) rest.push_back(argv[i]);
     return cloudsvc::stability_command::run(static_cast<int>(rest.size()), rest.data());
+  }
+  // `cloudbench --sequence ...`: temporal reuse on a flying camera (bench/sequence_command.h).
+  if (argc > 1 && std::string(argv[1]) == "--sequence") {
+    std::vector<char*> rest = {argv[0]};
+    for (int i = 2; i < argc; ++i) rest.push_back(argv[i]);
+    return cloudsvc::sequence_command::run(static_cast<int>(rest.size()), rest.data());
   }
   const Options o = parse(argc, argv);
   fs::create_directories(o.out);
@@ -420,11 +465,11 @@ int main(int argc, char** argv) {
      << " scenes, " << o.frames << " timed frames after a warm-up (median render_ms). Total wall time "
      << num("%.1f", total_s) << " s, of which reference renders " << num("%.1f", ref_seconds)
      << " s (0 = all cached in " << (o.out / "ref").string() << ").\n\n"
-     << "Error on linear radiance of the warm-up frame (frame_index 0) vs the CPU reference, "
-        "renderer/reference/image_metrics.h (PSNR peak = the reference's largest rgb value). "
-        "GPU memory: every texture the renderer allocates, "
-     << num("%.2f", texture_bytes(o.time_w, o.time_h) / 1048576.0)
-     << " MiB at this size, the same for every configuration (the march knobs allocate nothing).\n\n";
+     << "Error on linear radiance of the last of " << kStillFrames
+     << " frames of the still view (temporal configurations have converged by then; the others march every "
+        "frame in full) vs the CPU reference, renderer/reference/image_metrics.h (PSNR peak = the reference's "
+        "largest rgb value). Cost: median render_ms of the frames after the first, so temporal reuse is "
+        "amortised. GPU memory: every texture the renderer holds at the timing size (FrameStats::gpu_memory_bytes).\n\n";
   double worst_oiio = 0;
   for (const Row& r : rows)
     if (r.rmse > 0) worst_oiio = std::max(worst_oiio, std::abs(r.oiio_rmse - r.rmse) / r.rmse);
@@ -436,20 +481,49 @@ int main(int argc, char** argv) {
   // Aggregate over scenes: mean ms, mean evals, mean PSNR, worst PSNR.
   md << "\n## All scenes (per configuration)\n\nms = sum of the scenes' median ms; PSNR mean and min over the "
         "scenes; naive ms ratio = ms / naive ms.\n\n"
-        "| config | group | sum ms | ms / naive | evals/px mean | PSNR mean dB | PSNR min dB | RMSE mean |\n"
-        "|---|---|---:|---:|---:|---:|---:|---:|\n";
+        "| config | group | sum ms | ms / naive | evals/px mean | PSNR mean dB | PSNR min dB | RMSE mean | GPU MiB |\n"
+        "|---|---|---:|---:|---:|---:|---:|---:|---:|\n";
   std::map<std::string, std::vector<const Row*>> by_config, by_scene;
   for (const Row& r : rows) { by_config[r.group + "|" + r.label].push_back(&r); by_scene[r.scene].push_back(&r); }
   double naive_ms = 0;
   for (const Row& r : rows) if (r.group == "naive") naive_ms += r.median_ms;
   for (const Config& c : configs) {
     const auto& v = by_config[c.group + "|" + c.label];
-    double ms = 0, ev = 0, ps = 0, pmin = INFINITY, rm = 0;
-    for (const Row* r : v) { ms += r->median_ms; ev += r->evals_px; ps += r->psnr; pmin = std::min(pmin, r->psnr); rm += r->rmse; }
+    double ms = 0, ev = 0, ps = 0, pmin = INFINITY, rm = 0, mib = 0;
+    for (const Row* r : v) {
+      ms += r->median_ms; ev += r->evals_px; ps += r->psnr; pmin = std::min(pmin, r->psnr); rm += r->rmse;
+      mib = std::max(mib, r->texture_bytes / 1048576.0);
+    }
     const double n = static_cast<double>(v.size());
     md << "| " << c.label << " | " << c.group << " | " << num("%.0f", ms) << " | " << num("%.2f", ms / naive_ms) << " | "
        << num("%.1f", ev / n) << " | " << num("%.2f", ps / n) << " | " << num("%.2f", pmin) << " | " << num("%.3e", rm / n)
-       << " |\n";
+       << " | " << num("%.1f", mib) << " |\n";
+  }
+
+  // Skips (issue 5): each against the centre configuration, per scene then summed.
+  auto totals = [&](const std::string& key) {
+    double ms = 0, rm = 0;
+    for (const Row* r : by_config[key]) { ms += r->median_ms; rm += r->rmse; }
+    return std::pair<double, double>(ms, rm / std::max<size_t>(1, by_config[key].size()));
+  };
+  const std::string none_key = "skip:none|" + knob_label(skip_configs().front().second);
+  const auto centre = totals(none_key);
+  const auto naive = totals("naive|" + knob_label(*quality_preset("naive")));
+  md << "\n## Skips\n\nEach skip of issue 5 on top of the march without skips (" << knob_label(skip_configs().front().second)
+     << ", shadows marched per ground pixel), then combined. Cost saved = 1 - sum ms / its sum ms (" << num("%.0f", centre.first)
+     << " ms); error added = mean RMSE / its mean RMSE - 1; ×naive = naive sum ms / sum ms, RMSE vs naive = "
+        "mean RMSE / naive mean RMSE.\n\n"
+        "| skip | sum ms | cost saved | error added | ×naive speed | RMSE / naive RMSE | PSNR min dB |\n"
+        "|---|---:|---:|---:|---:|---:|---:|\n";
+  for (const Config& c : configs) {
+    if (c.group.rfind("skip:", 0) != 0 && c.group.rfind("preset:", 0) != 0) continue;
+    const auto t = totals(c.group + "|" + c.label);
+    double pmin = INFINITY;
+    for (const Row* r : by_config[c.group + "|" + c.label]) pmin = std::min(pmin, r->psnr);
+    md << "| " << c.group.substr(c.group.find(':') + 1) << (c.group[0] == 'p' ? " (preset)" : "") << " | "
+       << num("%.0f", t.first) << " | " << num("%+.0f%%", 100.0 * (1.0 - t.first / centre.first)) << " | "
+       << num("%+.1f%%", 100.0 * (t.second / centre.second - 1.0)) << " | " << num("%.1f", naive.first / t.first)
+       << " | " << num("%.2f", t.second / naive.second) << " | " << num("%.2f", pmin) << " |\n";
   }
   md << "\n## Per scene\n";
   for (const auto& n : scene_names) {

@@ -2,7 +2,7 @@
 // and 640x360 (llvmpipe on CPU-only machines), plus density evaluations per pixel.
 // Prints a Markdown table (docs/PERFORMANCE.md is generated from it).
 //
-//   build/bin/render_bench [--frames 5] [--sizes 320x180,640x360]
+//   build/bin/render_bench [--frames 5] [--sizes 320x180,640x360] [--quality default]
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -13,6 +13,7 @@
 
 #include "geodesy/utc_time.h"
 #include "renderer/cloud_renderer.h"
+#include "renderer/quality_presets.h"
 #include "renderer/gl/egl_context.h"
 #include "weather/presets.h"
 
@@ -38,10 +39,12 @@ std::vector<Size> parse_sizes(const std::string& text) {
 int main(int argc, char** argv) {
   CLI::App app{"Median frame time of each weather preset (standard view: 300 m, below every layer, looking 10 deg up, 14:00 UTC)"};
   int frames = 5;
-  std::string sizes_text = "320x180,640x360";
+  std::string sizes_text = "320x180,640x360", quality_name = "default";
   app.add_option("--frames", frames, "frames per measurement (median; the first, with shader JIT, is dropped)")
       ->check(CLI::Range(2, 1000));
   app.add_option("--sizes", sizes_text, "comma-separated image sizes WxH");
+  app.add_option("--quality", quality_name, "quality preset (renderer/quality_presets.h); with temporal reuse "
+                                            "the frames after the first are amortised");
   CLI11_PARSE(app, argc, argv);
   std::vector<Size> sizes;
   try {
@@ -50,16 +53,26 @@ int main(int argc, char** argv) {
     return app.exit(e);
   }
 
+  const auto quality = cloudsvc::quality_preset(quality_name);
+  if (!quality) {
+    std::fprintf(stderr, "render_bench: unknown --quality %s\n", quality_name.c_str());
+    return 2;
+  }
   cloudsvc::gl::EglContext context;
   cloudsvc::CloudRenderer renderer;
-  std::printf("# render_bench on %s\n\n", context.description().c_str());
+  std::printf("# render_bench on %s, quality %s\n\n", context.description().c_str(), quality_name.c_str());
   std::printf("| preset | size | median ms | min ms | density evals/px | cloud px %% |\n");
   std::printf("|---|---|---:|---:|---:|---:|\n");
-  for (const std::string& name : cloudsvc::weather::preset_names()) {
+  // every preset from the standard view, then above the overcast deck looking up (no ray
+  // meets a layer: no cloud march at all)
+  std::vector<std::pair<std::string, double>> rows;
+  for (const std::string& name : cloudsvc::weather::preset_names()) rows.push_back({name, 300.0});
+  rows.push_back({"overcast-stratus", 3000.0});
+  for (const auto& [name, alt] : rows) {
     renderer.set_weather(*cloudsvc::weather::preset(name));
     for (const Size& s : sizes) {
       cloudsvc::ViewRequest v;
-      v.position = {47.45, 8.56, 300.0};
+      v.position = {47.45, 8.56, alt};
       v.attitude = {135.0, 10.0, 0.0};
       v.unix_time_s = *cloudsvc::geo::parse_utc_iso8601("2026-06-21T14:00:00Z");
       v.fov_deg = 75.0;
@@ -69,13 +82,15 @@ int main(int argc, char** argv) {
       double evals = 0.0, cloud = 0.0;
       for (int i = 0; i < frames; ++i) {
         v.frame_index = static_cast<std::uint32_t>(i);
-        const cloudsvc::FrameImage img = renderer.render(v);
+        v.reset_history = i == 0;
+        const cloudsvc::FrameImage img = renderer.render(v, *quality);
         if (i > 0) ms.push_back(img.stats.render_ms);
         evals = img.stats.density_evals_per_pixel;
         cloud = 100.0 * static_cast<double>(img.stats.cloud_pixels) / (double(s.w) * s.h);
       }
       std::sort(ms.begin(), ms.end());
-      std::printf("| %s | %dx%d | %.1f | %.1f | %.1f | %.1f |\n", name.c_str(), s.w, s.h, ms[ms.size() / 2], ms.front(),
+      const std::string label = alt > 1000.0 ? name + " (above it, looking up)" : name;
+      std::printf("| %s | %dx%d | %.1f | %.1f | %.1f | %.1f |\n", label.c_str(), s.w, s.h, ms[ms.size() / 2], ms.front(),
                   evals, cloud);
       std::fflush(stdout);
     }

@@ -8,6 +8,7 @@
 #include "renderer/gl/shader_program.h"
 #include "renderer/frame_uniforms.h"
 
+#include <cstddef>
 #include <optional>
 
 namespace cloudsvc {
@@ -21,6 +22,12 @@ class AtmosphereLuts {
   static constexpr int kApSize = 32;  // 32 x 32 directions x 32 depth slices
 
   AtmosphereLuts();  // compiles the LUT programs and computes the static LUTs
+
+  // GPU memory of all the LUTs (RGBA32F texels).
+  static constexpr std::size_t gpu_bytes() {
+    return 16u * (kTransmittanceW * kTransmittanceH + kMultiscatterSize * kMultiscatterSize +
+                  kIrradianceSize * kIrradianceSize + kSkyViewW * kSkyViewH + 2 * kApSize * kApSize * kApSize);
+  }
 
   // Recomputes the camera-dependent LUTs (the frame uniform buffer must be bound at 0)
   // unless their inputs are unchanged since the last call: camera altitude within 1 m,

@@ -1,11 +1,14 @@
 #include "renderer/cloud_renderer.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 
 #include "geodesy/solar_position.h"
 #include "renderer/frame_uniforms.h"
 #include "renderer/scene_setup.h"
+#include "renderer/temporal_reprojection.h"
 #include "weather/noise_volumes.h"
 #include "weather/weather_map.h"
 
@@ -30,13 +33,23 @@ struct Counters {
 
 CloudRenderer::CloudRenderer(const RendererConfig& config)
     : config_(config),
+      march_prog_(gl::ShaderProgram::compute("cloud_march.comp")),
+      resolve_prog_(gl::ShaderProgram::compute("cloud_resolve.comp")),
       scene_prog_(gl::ShaderProgram::compute("scene.comp")),
-      detail_noise_(upload_noise(weather::make_detail_noise(config.detail_noise_size, config.noise_seed + 1))),
       uniforms_(gl::make_buffer(sizeof(FrameUniforms), nullptr, GL_DYNAMIC_DRAW)),
+      temporal_uniforms_(gl::make_buffer(sizeof(TemporalUniforms), nullptr, GL_DYNAMIC_DRAW)),
       counters_(gl::make_buffer(sizeof(Counters), nullptr, GL_DYNAMIC_READ)) {
   const weather::NoiseVolume base = weather::make_base_shape_noise(config.base_noise_size, config.noise_seed);
   facts_.base_quantiles = noise_quantiles(base);
   base_noise_ = upload_noise(base);
+  const weather::NoiseVolume detail = weather::make_detail_noise(config.detail_noise_size, config.noise_seed + 1);
+  double sum = 0.0;
+  for (std::uint8_t v : detail.data) sum += v;
+  facts_.detail_mean = static_cast<float>(sum / (255.0 * static_cast<double>(detail.data.size())));
+  detail_noise_ = upload_noise(detail);
+  static_gpu_bytes_ = base.data.size() + detail.data.size() +
+                      2 * static_cast<std::size_t>(config.weather_map_width) * config.weather_map_height * 16 +
+                      AtmosphereLuts::gpu_bytes() + GroundShadowMap::gpu_bytes();
   set_weather(weather::Weather{});
 }
 
@@ -52,6 +65,12 @@ void CloudRenderer::update_weather_textures(double utc_s) {
     if (!weather_maps_[k]) weather_maps_[k] = gl::make_texture_2d(GL_RGBA32F, m.width, m.height, GL_REPEAT, GL_CLAMP_TO_EDGE);
     glTextureSubImage2D(weather_maps_[k].id(), 0, 0, 0, m.width, m.height, GL_RGBA, GL_FLOAT, m.rgba.data());
     uploaded_version_[k] = versions[k];
+    ++weather_generation_;
+  }
+  // a fading keyframe changes the clouds slowly: count steps of 2 % of the blend
+  if (std::abs(b.weight - uploaded_blend_) > 0.02f) {
+    uploaded_blend_ = static_cast<float>(b.weight);
+    ++weather_generation_;
   }
   float south[2][4], north[2][4];
   for (int k = 0; k < 2; ++k) {
@@ -76,7 +95,9 @@ void CloudRenderer::set_weather(const weather::Weather& w) {
   const std::string problem = weather::validate(w);
   if (!problem.empty()) throw std::invalid_argument("invalid weather: " + problem);
   weather_ = w;
+  ++weather_generation_;
   wind_anchor_.reset();
+  prev_view_.reset();  // new clouds: nothing to reuse
   if (!map_valid_ || map_seed_ != w.map_seed) {
     timeline_.reset(weather::generate_procedural_map(w.map_seed, config_.weather_map_width, config_.weather_map_height));
     map_seed_ = w.map_seed;
@@ -84,17 +105,79 @@ void CloudRenderer::set_weather(const weather::Weather& w) {
   }
 }
 
-void CloudRenderer::ensure_target(int w, int h) {
-  if (target_ && w == target_w_ && h == target_h_) return;
-  target_ = gl::make_texture_2d(GL_RGBA32F, w, h, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE);
-  target_w_ = w;
-  target_h_ = h;
+void CloudRenderer::ensure_targets(int w, int h, int divisor) {
+  if (!target_ || w != target_w_ || h != target_h_) {
+    target_ = gl::make_texture_2d(GL_RGBA32F, w, h, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE);
+    target_w_ = w;
+    target_h_ = h;
+  }
+  const glm::ivec2 c = cloud_buffer_size(w, h, divisor);
+  if (fresh_a_ && c.x == cloud_w_ && c.y == cloud_h_) return;
+  auto make = [&] { return gl::make_texture_2d(GL_RGBA32F, c.x, c.y, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE); };
+  fresh_a_ = make();
+  fresh_b_ = make();
+  for (int k = 0; k < 2; ++k) {
+    cloud_a_[k] = make();
+    cloud_b_[k] = make();
+  }
+  cloud_w_ = c.x;
+  cloud_h_ = c.y;
+  prev_view_.reset();
+}
+
+// The cloud march over this frame's fresh cloud pixels, then the temporal resolve into
+// cloud_a_/cloud_b_[history_] (the frame and temporal uniforms must be bound).
+TemporalUniforms CloudRenderer::march_and_resolve(const ViewRequest& view, const RenderQuality& quality) {
+  const bool history = prev_view_ && history_usable(*prev_view_, prev_quality_, view, quality);
+  std::optional<Reprojection> rep;
+  if (history) rep = make_reprojection(*prev_view_, view, weather_, *wind_anchor_);
+  const TemporalUniforms tu = make_temporal_uniforms(view, quality, history, rep ? &*rep : nullptr,
+                                                     history ? &*prev_view_ : nullptr);
+  glNamedBufferSubData(temporal_uniforms_.id(), 0, sizeof(TemporalUniforms), &tu);
+  glBindBufferBase(GL_UNIFORM_BUFFER, 1, temporal_uniforms_.id());
+
+  const int prev = history_, next = 1 - history_;
+  history_ = next;
+  prev_view_ = view;
+  prev_view_->reset_history = false;
+  prev_quality_ = quality;
+  if (weather_.layers.empty()) {
+    // No cloud layer: no march and nothing to resolve. Empty cloud buffer: no in-scatter,
+    // transmittance 1, no cloud shadow on the ground.
+    const float empty_a[4] = {0.0f, 0.0f, 0.0f, 1.0f}, empty_b[4] = {1e7f, 0.0f, -1.0f, 0.0f};
+    glClearTexImage(cloud_a_[next].id(), 0, GL_RGBA, GL_FLOAT, empty_a);
+    glClearTexImage(cloud_b_[next].id(), 0, GL_RGBA, GL_FLOAT, empty_b);
+    TemporalUniforms skipped = tu;
+    skipped.grid.x = 0;  // nothing marched
+    return skipped;
+  }
+
+  const int stride = tu.grid.x;
+  march_prog_.use();
+  glBindImageTexture(0, fresh_a_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  glBindImageTexture(1, fresh_b_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  timer_.begin(1);
+  dispatch_2d((cloud_w_ + stride - 1) / stride, (cloud_h_ + stride - 1) / stride);
+  timer_.end();
+
+  resolve_prog_.use();
+  glBindTextureUnit(10, fresh_a_.id());
+  glBindTextureUnit(11, fresh_b_.id());
+  glBindTextureUnit(12, cloud_a_[prev].id());
+  glBindTextureUnit(13, cloud_b_[prev].id());
+  glBindImageTexture(0, cloud_a_[next].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  glBindImageTexture(1, cloud_b_[next].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  timer_.begin(2);
+  dispatch_2d(cloud_w_, cloud_h_);
+  timer_.end();
+  return tu;
 }
 
 FrameImage CloudRenderer::render(const ViewRequest& view, const RenderQuality& quality) {
   if (view.width <= 0 || view.height <= 0) throw std::invalid_argument("render: empty image size");
   const auto start = std::chrono::steady_clock::now();
-  ensure_target(view.width, view.height);
+  const int divisor = std::clamp(quality.cloud_resolution_divisor, 1, 8);
+  ensure_targets(view.width, view.height, divisor);
 
   if (!wind_anchor_) wind_anchor_ = WindAnchor{view.position, view.unix_time_s};
   update_weather_textures(view.unix_time_s);
@@ -105,19 +188,32 @@ FrameImage CloudRenderer::render(const ViewRequest& view, const RenderQuality& q
   glNamedBufferSubData(counters_.id(), 0, sizeof(Counters), &zero);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, counters_.id());
 
+  timer_.reset();
+  timer_.begin(0);
   const bool view_luts_recomputed = atmosphere_.update_view_dependent(u);
-
-  scene_prog_.use();
+  timer_.end();
   atmosphere_.bind_for_scene();
   glBindTextureUnit(3, base_noise_.id());
   glBindTextureUnit(4, detail_noise_.id());
   glBindTextureUnit(5, weather_maps_[0].id());
   glBindTextureUnit(9, weather_maps_[1].id());
-  glBindImageTexture(0, target_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-  dispatch_2d(view.width, view.height);
-  glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  timer_.begin(4);
+  if (view.reset_history) shadow_map_.invalidate();  // a teleport starts from nothing
+  const bool shadow_rebuilt = shadow_map_.update(view, u, weather_, *wind_anchor_, weather_generation_,
+                                                   !quality.ground_shadow_map);
+  timer_.end();
+  const TemporalUniforms tu = march_and_resolve(view, quality);
 
+  scene_prog_.use();
+  glBindTextureUnit(12, cloud_a_[history_].id());
+  glBindTextureUnit(13, cloud_b_[history_].id());
+  glBindImageTexture(0, target_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  timer_.begin(3);
+  dispatch_2d(view.width, view.height);
+  timer_.end();
+  glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   FrameImage img;
+  const auto readback_start = std::chrono::steady_clock::now();
   img.width = view.width;
   img.height = view.height;
   img.rgba.resize(static_cast<size_t>(view.width) * view.height * 4);
@@ -129,7 +225,19 @@ FrameImage CloudRenderer::render(const ViewRequest& view, const RenderQuality& q
 
   const geo::SolarPosition sp = geo::solar_position(view.unix_time_s, view.position.lat_deg, view.position.lon_deg);
   img.stats.view_luts_recomputed = view_luts_recomputed;
+  img.stats.history_used = tu.grid.w != 0;
+  img.stats.shadow_map_rebuilt = shadow_rebuilt;
+  img.stats.shadow_map_ms = timer_.ms(4);
+  img.stats.marched_fraction = tu.grid.x == 0 ? 0.0 : 1.0 / (static_cast<double>(tu.grid.x) * tu.grid.x);
+  img.stats.gpu_memory_bytes = static_cast<std::int64_t>(
+      static_gpu_bytes_ + static_cast<std::size_t>(target_w_) * target_h_ * 16 +
+      6 * static_cast<std::size_t>(cloud_w_) * cloud_h_ * 16);
   img.stats.render_ms = std::chrono::duration<double, std::milli>(end - start).count();
+  img.stats.readback_ms = std::chrono::duration<double, std::milli>(end - readback_start).count();
+  img.stats.luts_ms = timer_.ms(0);
+  img.stats.march_ms = timer_.ms(1);
+  img.stats.resolve_ms = timer_.ms(2);
+  img.stats.composite_ms = timer_.ms(3);
   img.stats.sun_elevation_deg = sp.elevation_deg;
   img.stats.sun_azimuth_deg = sp.azimuth_deg;
   img.stats.cloud_pixels = c.cloud_pixels;

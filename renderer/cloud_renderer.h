@@ -9,9 +9,12 @@
 
 #include "renderer/atmosphere_luts.h"
 #include "renderer/gl/gl_objects.h"
+#include "renderer/ground_shadow_map.h"
+#include "renderer/gl/pass_timer.h"
 #include "renderer/gl/shader_program.h"
 #include "renderer/render_types.h"
 #include "renderer/scene_setup.h"
+#include "renderer/temporal_uniforms.h"
 #include "weather/cloud_layer.h"
 #include "weather/weather_timeline.h"
 
@@ -39,26 +42,43 @@ class CloudRenderer {
   void apply_tile(const weather::MapTile& tile, double now_utc_s);
   std::size_t weather_keyframes() const { return timeline_.keyframe_count(); }
 
-  // Renders one view and reads it back (rows from the top).
+  // Renders one view and reads it back (rows from the top). Consecutive views reuse the
+  // cloud buffer of the previous one when quality.temporal_stride > 1 and the history is
+  // usable (renderer/temporal_reprojection.h).
   FrameImage render(const ViewRequest& view, const RenderQuality& quality = {});
+
+  // Drops the temporal history: the next frame marches every cloud pixel.
+  void reset_history() { prev_view_.reset(); }
 
  private:
   void update_weather_textures(double utc_s);
-  void ensure_target(int w, int h);
+  void ensure_targets(int w, int h, int divisor);
+  TemporalUniforms march_and_resolve(const ViewRequest& view, const RenderQuality& quality);
 
   RendererConfig config_;
   weather::Weather weather_;
   std::uint32_t map_seed_ = 0;
   bool map_valid_ = false;
   AtmosphereLuts atmosphere_;
-  gl::ShaderProgram scene_prog_;
+  GroundShadowMap shadow_map_;
+  std::uint64_t weather_generation_ = 0;  // bumped by every change of the cloud field's inputs
+  float uploaded_blend_ = -1.0f;          // keyframe blend weight the shadow map saw
+  gl::ShaderProgram march_prog_, resolve_prog_, scene_prog_;
   ResourceFacts facts_{};
   std::optional<WindAnchor> wind_anchor_;  // latched at the first view after set_weather
   weather::WeatherTimeline timeline_;
   std::uint64_t uploaded_version_[2] = {0, 0};  // keyframe versions in weather_maps_[0], [1]
   gl::Texture base_noise_, detail_noise_, weather_maps_[2], target_;
-  gl::Buffer uniforms_, counters_;
-  int target_w_ = 0, target_h_ = 0;
+  // Cloud buffer (shaders/temporal_uniforms.glsl): this frame's fresh samples and the
+  // resolved buffer of the previous and the current frame (ping-pong, index history_).
+  gl::Texture fresh_a_, fresh_b_, cloud_a_[2], cloud_b_[2];
+  int history_ = 0;
+  std::optional<ViewRequest> prev_view_;  // the last frame, while its buffer may be reused
+  RenderQuality prev_quality_;
+  gl::Buffer uniforms_, temporal_uniforms_, counters_;
+  int target_w_ = 0, target_h_ = 0, cloud_w_ = 0, cloud_h_ = 0;
+  gl::PassTimer timer_;  // passes: 0 LUTs, 1 march, 2 resolve, 3 composite, 4 shadow map
+  std::size_t static_gpu_bytes_ = 0;  // noise volumes, weather maps, atmosphere LUTs
 };
 
 }  // namespace cloudsvc

@@ -31,6 +31,7 @@ struct FrameUniforms {
   glm::vec4 quality;
   glm::vec4 ms_params;
   glm::vec4 ap_params;
+  glm::vec4 march;   // long-step factor, LOD on, pixel angle (rad), mean detail-noise value
   glm::ivec4 counts;
   glm::vec4 noise_quantiles[4];  // base-noise quantiles at p = i / 15, i = 0..15
   glm::vec4 weather_pole_south;  // weather map value at the south pole (row mean)
@@ -39,6 +40,6 @@ struct FrameUniforms {
 };
 
 static_assert(sizeof(CloudLayerGpu) == 10 * 16, "std140 layout");
-static_assert(sizeof(FrameUniforms) == 64 + 18 * 16 + kGpuMaxLayers * 10 * 16, "std140 layout");
+static_assert(sizeof(FrameUniforms) == 64 + 19 * 16 + kGpuMaxLayers * 10 * 16, "std140 layout");
 
 }  // namespace cloudsvc

@@ -1,15 +1,15 @@
-// Quality presets, chosen from the Pareto front of bench/cloudbench.cpp (first run,
-// docs/ACCURACY.md: error at 32x18 vs the CPU reference, cost at 160x90, summed over the
-// 8 benchmark scenes; ms on llvmpipe, 2 cores; PSNR mean / worst scene):
-//   naive   uniform 64 primary, 6 light, 3 octaves   1123 ms  39.1 / 25.0 dB  (baseline)
-//   low     24 primary (log), 3 light                  731 ms  33.2 / 20.5 dB  (0.65x naive)
-//   medium  64 primary (log), 4 light                 1102 ms  39.7 / 25.7 dB  (naive's cost, +0.7 dB)
-//   default 64 primary (log), 6 light                 1274 ms  40.8 / 25.7 dB  (RenderQuality{})
-//   high    96 primary (log), 8 light                 1751 ms  43.0 / 26.2 dB
-//   ultra   192 primary (log), 12 light               3312 ms  46.9 / 29.8 dB
-// Log steps: uniform in ln(1 + t / 1 km). Fewer than 3 light steps or other octave counts
-// leave the front (2 light steps: worst scene 14 dB). Skipping and temporal reuse (issue 5)
-// will move the whole front; re-run cloudbench and re-choose then.
+// Quality presets, chosen from the Pareto front of bench/cloudbench.cpp (docs/ACCURACY.md,
+// docs/PERFORMANCE.md: error at 96x54 vs the CPU reference after 17 frames of a still view,
+// amortised cost at 160x90, summed over the 8 benchmark scenes; llvmpipe, 2 cores):
+//   naive    uniform 64 primary, 6 light, 3 octaves, no skips      (the baseline)
+//   low      + long steps x4, LOD, half resolution, 1/16 px per frame: ~11x faster, RMSE ~2.8x naive
+//   medium   64 log, 4 light, long steps x2, 1/16 px per frame
+//   default  64 log, 6 light, long steps x2, 1/16 px per frame: ~6x faster, RMSE below naive
+//   high     96 log, 8 light, long steps x2, 1/4 px per frame
+//   ultra    192 log, 12 light, long steps x2, every pixel every frame, accumulated while still
+// Log steps: uniform in ln(1 + t / 1 km). A single frame (or the first after a teleport)
+// has no history and marches every pixel: the default preset's first frame is exactly
+// RenderQuality{}'s march, the one the accuracy floors cover.
 #include "renderer/quality_presets.h"
 
 namespace cloudsvc {
@@ -24,6 +24,27 @@ RenderQuality march(int primary, int light, int octaves, double step_growth_ref_
   return q;
 }
 
+RenderQuality reuse(RenderQuality q, int stride) {
+  q.temporal_reuse = true;
+  q.temporal_stride = stride;
+  return q;
+}
+
+RenderQuality naive() {
+  RenderQuality q = march(64, 6, 3, 0.0);
+  q.long_step_factor = 1;
+  q.ground_shadow_map = false;
+  return q;
+}
+
+RenderQuality low() {
+  RenderQuality q = reuse(march(64, 6, 3, 1000.0), 4);
+  q.long_step_factor = 4;
+  q.level_of_detail = true;
+  q.cloud_resolution_divisor = 2;
+  return q;
+}
+
 struct Named {
   const char* name;
   RenderQuality quality;
@@ -31,12 +52,12 @@ struct Named {
 
 const std::vector<Named>& presets() {
   static const std::vector<Named> p = {
-      {"naive", march(64, 6, 3, 0.0)},
-      {"low", march(24, 3, 3, 1000.0)},
-      {"medium", march(64, 4, 3, 1000.0)},
-      {"high", march(96, 8, 3, 1000.0)},
-      {"ultra", march(192, 12, 3, 1000.0)},
-      {"default", march(64, 6, 3, 1000.0)},
+      {"naive", naive()},
+      {"low", low()},
+      {"medium", reuse(march(64, 4, 3, 1000.0), 4)},
+      {"high", reuse(march(96, 8, 3, 1000.0), 2)},
+      {"ultra", reuse(march(192, 12, 3, 1000.0), 1)},
+      {"default", reuse(RenderQuality{}, 4)},
   };
   return p;
 }

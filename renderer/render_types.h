@@ -16,7 +16,8 @@ struct ViewRequest {
   double fov_deg = 60.0;       // horizontal field of view
   int width = 640;
   int height = 360;
-  std::uint32_t frame_index = 0;  // varies the per-pixel jitter between frames
+  std::uint32_t frame_index = 0;  // varies the per-pixel jitter and the temporally marched pixels
+  bool reset_history = false;     // a teleport or sim reset: reuse nothing from earlier frames
 };
 
 // Quality knobs of the ray march. The march code is the same for every preset; presets
@@ -32,6 +33,28 @@ struct RenderQuality {
   // Primary steps are uniform in ln(1 + t / t_ref): step length grows with distance t
   // like the pixel footprint. 0 = uniform steps in t (the naive march).
   double step_growth_ref_m = 1000.0;
+  // Ground cloud shadows from the ground shadow map (renderer/ground_shadow_map.h: built
+  // once, reused while the sun, weather and camera region hold) or marched per ground
+  // pixel every frame (exact, ground_shadow_steps per layer per pixel).
+  bool ground_shadow_map = true;
+  // Skips (issue 5; each is switchable and measured by bench/cloudbench --skips):
+  // In empty air, probe with steps this many times longer (base shape only) and step back
+  // on finding cloud; 1 = every step evaluated in full.
+  int long_step_factor = 2;
+  // Level of detail by the pixel footprint: detail noise replaced by its mean, and fewer
+  // light steps, once a pixel spans several noise texels.
+  bool level_of_detail = false;
+  // Clouds drawn into a buffer of 1/divisor of the frame in each axis, upsampled with
+  // depth-aware weights (1 = full resolution).
+  int cloud_resolution_divisor = 1;
+  // Temporal reuse: each frame marches one cloud pixel in stride x stride (1 = all of
+  // them, 2 = 1/4, 4 = 1/16) and reprojects the rest from the previous frame; fresh
+  // samples of a still camera are averaged with their history. Off: every frame is
+  // marched in full and nothing is kept.
+  bool temporal_reuse = false;
+  int temporal_stride = 1;
+  double history_blend_min = 0.2;  // least weight of a fresh sample against its history
+  bool neighbourhood_clamp = true;  // limit moved history to the range of fresh neighbours
   bool count_density_evaluations = true;
 };
 
@@ -43,6 +66,12 @@ struct FrameStats {
   double density_evals_per_pixel = 0.0;
   std::int64_t nonfinite_pixels = 0;  // pixels the shader had to clamp (must be 0)
   bool view_luts_recomputed = true;   // sky-view LUT and aerial-perspective volume redone this frame
+  bool history_used = false;          // the previous frame's cloud buffer was reprojected
+  bool shadow_map_rebuilt = false;    // the ground shadow map was rebuilt this frame
+  double marched_fraction = 1.0;      // cloud pixels marched this frame / all cloud pixels
+  std::int64_t gpu_memory_bytes = 0;  // textures and buffers the renderer holds
+  // GPU time per pass (GL_TIME_ELAPSED) and the CPU time of the read-back, ms.
+  double luts_ms = 0.0, march_ms = 0.0, resolve_ms = 0.0, composite_ms = 0.0, readback_ms = 0.0, shadow_map_ms = 0.0;
 };
 
 // A rendered frame: linear spectral radiance at 680/550/440 nm in W m^-2 sr^-1 nm^-1

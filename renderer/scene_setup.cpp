@@ -90,6 +90,10 @@ FrameUniforms make_frame_uniforms(const ViewRequest& view, const weather::Weathe
   // Aerial perspective reaches the farthest visible ground or cloud (hundreds of km).
   u.ap_params = glm::vec4(static_cast<float>(std::max(reach, 1000.0)), static_cast<float>(resources.weather_map_height),
                           resources.weather_blend, 0.0f);
+  // Skips: long steps in empty air, and LOD against the angle one pixel subtends (rad).
+  u.march = glm::vec4(static_cast<float>(std::max(1, quality.long_step_factor)), quality.level_of_detail ? 1.0f : 0.0f,
+                      static_cast<float>(2.0 * tan_h / view.width * std::max(1, quality.cloud_resolution_divisor)),
+                      resources.detail_mean);
   const auto& ps = resources.weather_pole_south;
   const auto& pn = resources.weather_pole_north;
   u.weather_pole_south = glm::vec4(ps[0], ps[1], ps[2], ps[3]);

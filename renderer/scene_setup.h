@@ -31,6 +31,7 @@ NoiseQuantiles noise_quantiles(const weather::NoiseVolume& v);
 // Facts about the GPU resources the frame constants refer to.
 struct ResourceFacts {
   NoiseQuantiles base_quantiles{};      // of the base shape noise
+  float detail_mean = 0.5f;             // mean value of the detail noise volume
   std::array<float, 4> weather_pole_south{0.5f, 0.5f, 0.5f, 0.0f};
   std::array<float, 4> weather_pole_north{0.5f, 0.5f, 0.5f, 0.0f};
   int weather_map_height = 1;

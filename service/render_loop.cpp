@@ -48,6 +48,8 @@ ViewRequest view_request(const protocol::Pose& p, double utc_s, const protocol::
   r.width = static_cast<int>(v.width);
   r.height = static_cast<int>(v.height);
   r.frame_index = static_cast<std::uint32_t>(frame);
+  // a teleport or sim reset: no temporal history, no shadow map from before the jump
+  r.reset_history = (p.flags & protocol::pose_flag::kAll) != 0;
   return r;
 }
 

@@ -54,10 +54,17 @@ float local_coverage(CloudLayerGpu L, vec4 w) {
   return clamp(c + 1.2 * min(c, 1.0 - c) * (w.r - 0.5) * 2.0, 0.0, 1.0);
 }
 
+// How cloud_extinction treats the detail noise: not at all (light marches and ground
+// shadows, which see only the base shape), sampled, or replaced by its mean value (level
+// of detail: where a pixel's footprint spans several detail texels their erosion averages
+// out; the mean keeps the mean density instead of dropping the erosion).
+const int DETAIL_NONE = 0;
+const int DETAIL_SAMPLED = 1;
+const int DETAIL_MEAN = 2;
+
 // sigma_t (1/m) of layer li at local point p with altitude alt; also returns the local
-// coverage (0 outside the layer). With detail = false the erosion by detail noise is
-// skipped (light marches, ground shadows).
-float cloud_extinction(int li, vec3 p, float alt, bool detail, out float coverage) {
+// coverage (0 outside the layer).
+float cloud_extinction(int li, vec3 p, float alt, int detail, out float coverage) {
   coverage = 0.0;
   CloudLayerGpu L = U.layers[li];
   float thickness = L.altitude.y - L.altitude.x;
@@ -81,15 +88,16 @@ float cloud_extinction(int li, vec3 p, float alt, bool detail, out float coverag
   // mid-profile), with a soft edge; full cover (c = 1) keeps nearly all of the shape.
   float d = saturate((shape * profile - noise_quantile(1.0 - coverage)) / COVERAGE_EDGE);
   if (d <= 0.0) return 0.0;
-  if (detail && d < 1.0) {
-    float dn = textureLod(detail_noise, p_field * L.optics2.z + L.detail_offset.xyz, 0.0).r;
+  if (detail != DETAIL_NONE && d < 1.0) {
+    float dn = detail == DETAIL_SAMPLED ? textureLod(detail_noise, p_field * L.optics2.z + L.detail_offset.xyz, 0.0).r
+                                        : U.march.w;
     d = saturate(remap(d, dn * L.optics2.w, 1.0, 0.0, 1.0));
   }
   float density_mod = exp2(2.0 * (w.b - 0.5));
   return d * L.altitude.w * density_mod * L.optics.x;
 }
 
-float cloud_extinction(int li, vec3 p, float alt, bool detail) {
+float cloud_extinction(int li, vec3 p, float alt, int detail) {
   float coverage;
   return cloud_extinction(li, p, alt, detail, coverage);
 }

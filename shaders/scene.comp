@@ -1,132 +1,34 @@
 #version 450 core
-// One frame: clouds marched through the layer intervals of each pixel's ray, over the sky
-// (sky-view LUT + sun disk) or the ground (lit by sun and sky, shadowed by the same cloud
-// density field), with aerial perspective. Output: linear spectral radiance at 680/550/
-// 440 nm (W m^-2 sr^-1 nm^-1) in rgb, cloud opacity (1 - cloud transmittance) in a.
+// One frame, composited at full resolution: the resolved cloud buffer (cloud_march.comp,
+// cloud_resolve.comp) over the sky (sky-view LUT + sun disk) or the ground (lit by sun and
+// sky, shadowed by the clouds' optical depth from the ground shadow map), with aerial
+// perspective on both. Output: linear spectral radiance at 680/550/440 nm
+// (W m^-2 sr^-1 nm^-1) in rgb, cloud opacity (1 - cloud transmittance) in a.
 #include "common.glsl"
 #include "frame_uniforms.glsl"
+#include "temporal_uniforms.glsl"
 #include "atmosphere_model.glsl"
 #include "atmosphere_lookup.glsl"
 #include "sky_view_mapping.glsl"
+#include "ground_shadow_map.glsl"
 #include "phase_function.glsl"
 #include "cloud_density.glsl"
+#include "cloud_lighting.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba32f, binding = 0) uniform writeonly image2D out_image;
 layout(binding = 6) uniform sampler2D sky_view_lut;
 layout(binding = 7) uniform sampler3D ap_inscatter;
 layout(binding = 8) uniform sampler3D ap_transmittance;
+layout(binding = 12) uniform sampler2D cloud_a;  // resolved cloud buffer (temporal_uniforms.glsl)
+layout(binding = 13) uniform sampler2D cloud_b;
+layout(binding = 14) uniform sampler2DArray ground_shadow;  // ground_shadow_map.glsl
 layout(std430, binding = 0) buffer FrameCounters {
   uint density_evals;
   uint nonfinite_pixels;
   uint cloud_pixels;
 } counters;
 
-const int MAX_INTERVALS = 8;
-const float CLOUD_T_EPS = 1e-3;   // early exit below this cloud transmittance
-const float LIGHT_MAX_DIST = 4000.0;  // m, longest light march
-const float MEAN_COSINE = 0.86;   // droplet phase mean cosine used for diffuse transfer
-
-// Diffuse transmittance of a conservative slab of optical depth tau (two-stream,
-// Bohren 1987 "Multiple scattering of light and some of its observable consequences").
-float slab_diffuse_transmittance(float tau) { return 1.0 / (1.0 + 0.75 * (1.0 - MEAN_COSINE) * tau); }
-
-struct Interval { float t0; float t1; int layer; };
-
-// March coordinate u(t) = ln(1 + t / t_ref) (or t itself when t_ref = 0) and its inverse.
-float march_coordinate(float t, float t_ref) { return t_ref > 0.0 ? log(1.0 + t / t_ref) : t; }
-float march_distance(float u, float t_ref) { return t_ref > 0.0 ? t_ref * (exp(u) - 1.0) : u; }
-
-// The part of the ray inside layer li, as up to two intervals [entry, exit] clipped to
-// [0, t_limit]: inside the top sphere and outside the base sphere.
-int layer_intervals(int li, float mu, float t_limit, out Interval a, out Interval b) {
-  float R = U.planet.x, h = U.planet.y;
-  vec2 top = intersect_shell(R, h, U.layers[li].altitude.y, mu);
-  vec2 base = intersect_shell(R, h, U.layers[li].altitude.x, mu);
-  int n = 0;
-  if (top.y < 0.0) return 0;
-  float A0 = max(top.x, 0.0), A1 = min(top.y, t_limit);
-  if (A0 >= A1) return 0;
-  if (base.y < 0.0 || base.y <= A0 || max(base.x, 0.0) >= A1) {
-    a = Interval(A0, A1, li);
-    return 1;
-  }
-  float B0 = max(base.x, 0.0), B1 = base.y;
-  if (B0 > A0) { a = Interval(A0, B0, li); n = 1; }
-  if (B1 < A1) {
-    if (n == 0) a = Interval(B1, A1, li); else b = Interval(B1, A1, li);
-    n += 1;
-  }
-  return n;
-}
-
-// Optical depth from point p (altitude alt) towards the sun inside layer li.
-float light_optical_depth(int li, vec3 p, float alt, vec3 sun, float mu_s) {
-  float R = U.planet.x;
-  vec2 exit_top = intersect_shell(R, alt, U.layers[li].altitude.y, mu_s);
-  vec2 hit_base = intersect_shell(R, alt, U.layers[li].altitude.x, mu_s);
-  float len = exit_top.y > 0.0 ? exit_top.y : 0.0;
-  if (hit_base.x > 0.0) len = min(len, hit_base.x);
-  len = min(len, LIGHT_MAX_DIST);
-  int n = int(U.quality.y);
-  float tau = 0.0, s_prev = 0.0;
-  for (int j = 0; j < n; ++j) {
-    float f = float(j + 1) / float(n);
-    float s = len * f * f;  // quadratic spacing: fine near the sample, coarse far away
-    vec3 x = p + sun * (0.5 * (s + s_prev));
-    float ax = altitude_of(x, R, U.planet.y);
-    tau += cloud_extinction(li, x, ax, false) * (s - s_prev);
-    s_prev = s;
-  }
-  return tau;
-}
-
-// Optical depth of all layers from a ground point towards the sun (cloud shadows).
-float ground_shadow_optical_depth(vec3 p, float ground_alt, vec3 sun, float mu_s) {
-  float R = U.planet.x;
-  int n = int(U.quality.w);
-  float tau = 0.0;
-  for (int li = 0; li < U.counts.x; ++li) {
-    float t_base = intersect_shell(R, ground_alt, U.layers[li].altitude.x, mu_s).y;
-    float t_top = intersect_shell(R, ground_alt, U.layers[li].altitude.y, mu_s).y;
-    if (t_top <= 0.0) continue;
-    t_base = max(t_base, 0.0);
-    float dt = (t_top - t_base) / float(n);
-    for (int j = 0; j < n; ++j) {
-      vec3 x = p + sun * (t_base + (float(j) + 0.5) * dt);
-      tau += cloud_extinction(li, x, altitude_of(x, R, U.planet.y), false) * dt;
-    }
-  }
-  return tau;
-}
-
-// Diffuse in-scattered radiance (per unit scattering) at altitude alt inside layer L, from
-// two-stream slab theory for conservative scattering (Bohren 1987): with vertical optical
-// depths tau_a above and tau_b below the point, estimated from the layer's nominal
-// extinction and the local coverage,
-//   T(tau) = 1 / (1 + 3/4 (1 - g) tau),   R(tau) = 1 - T(tau),
-//   F_down = F_sun (T(tau_a) - e^{-tau_a / mu_s}) + E_sky T(tau_a)      (diffuse only)
-//   F_up   = (F_sun + E_sky) T(tau_a) R(tau_b) + E_ground T(tau_b)
-// Each flux is taken as isotropic over its hemisphere (radiance F / pi), so the
-// in-scatter averaged over directions is (F_down + F_up) / (2 pi). This supplies the
-// light that the few octaves of the sun march cannot carry deep into a cloud or back
-// out of its top.
-vec3 diffuse_inscatter(CloudLayerGpu L, float alt, float mu_s, vec3 T_atm, float coverage, vec3 E_sun,
-                       float ground_alt) {
-  float sigma_nominal = L.optics.x * L.altitude.w * coverage;
-  float tau_a = sigma_nominal * max(L.altitude.y - alt, 0.0);
-  float tau_b = sigma_nominal * max(alt - L.altitude.x, 0.0);
-  float Ta = slab_diffuse_transmittance(tau_a), Tb = slab_diffuse_transmittance(tau_b);
-  float mu_pos = max(mu_s, 0.0);
-  vec3 F_sun = E_sun * T_atm * mu_pos;
-  vec3 E_sky = E_sun * sky_irradiance(alt, mu_s);
-  vec3 E_ground = U.ground_albedo.rgb * E_sun *
-                  (transmittance_to_space(ground_alt, mu_s) * mu_pos + sky_irradiance(ground_alt, mu_s));
-  float direct_a = mu_pos > 0.0 ? exp(-tau_a / max(mu_pos, 0.05)) : 0.0;
-  vec3 F_down = F_sun * max(Ta - direct_a, 0.0) + E_sky * Ta;
-  vec3 F_up = (F_sun + E_sky) * Ta * (1.0 - Tb) + E_ground * Tb;
-  return (F_down + F_up) / (2.0 * PI);
-}
 
 // Aerial perspective lookup: in-scatter (unit sun) and transmittance to distance t along
 // the pixel with normalised device coordinates ndc.
@@ -145,14 +47,48 @@ void aerial_perspective(vec2 ndc, float t, out vec3 inscatter, out vec3 transmit
   transmittance = textureLod(ap_transmittance, tc, 0.0).rgb;
 }
 
+// The cloud buffer at frame pixel px. At divisor 1 its own pixel; else the four nearest
+// cloud pixels weighted bilinearly and by how alike their background distance is to this
+// pixel's (depth-aware upsampling: cloud over the horizon does not bleed onto the ground).
+void cloud_at(ivec2 px, float t_background, out vec4 a, out vec4 b) {
+  int r = TU.buffer_size.z;
+  if (r == 1) {
+    a = texelFetch(cloud_a, px, 0);
+    b = texelFetch(cloud_b, px, 0);
+    return;
+  }
+  vec2 c = (vec2(px) + 0.5) / float(r) - 0.5;
+  ivec2 c0 = clamp(ivec2(floor(c)), ivec2(0), TU.buffer_size.xy - 1);
+  ivec2 c1 = min(c0 + 1, TU.buffer_size.xy - 1);
+  vec2 f = clamp(c - vec2(c0), 0.0, 1.0);
+  ivec2 cs[4] = ivec2[4](c0, ivec2(c1.x, c0.y), ivec2(c0.x, c1.y), c1);
+  float ws[4] = float[4]((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y, f.x * f.y);
+  a = vec4(0.0);
+  b = vec4(0.0);
+  float wsum = 0.0;
+  for (int i = 0; i < 4; ++i) {
+    vec3 d = view_ray(cloud_pixel_ndc(vec2(cs[i])));
+    vec2 g = intersect_shell(U.planet.x, U.planet.y, U.planet.z, d.z);
+    float t_i = g.x >= 0.0 ? g.x : 1e30;
+    float likeness = t_background >= 1e29 || t_i >= 1e29 ? (t_background == t_i ? 1.0 : 1e-3)
+                                                          : 1.0 / (1.0 + 8.0 * abs(t_i - t_background) / t_background);
+    float w = ws[i] * likeness + 1e-6;
+    vec4 ai = texelFetch(cloud_a, cs[i], 0), bi = texelFetch(cloud_b, cs[i], 0);
+    a += w * ai;
+    b.x += w * bi.x;
+    wsum += w;
+  }
+  a /= wsum;
+  b.x /= wsum;
+}
+
 void main() {
   ivec2 px = ivec2(gl_GlobalInvocationID.xy);
   ivec2 size = imageSize(out_image);
   if (any(greaterThanEqual(px, size))) return;
   vec2 ndc = ((vec2(px) + 0.5) / vec2(size)) * 2.0 - 1.0;
   ndc.y = -ndc.y;  // row 0 is the top of the image
-  vec3 dir = normalize(U.camera_forward.xyz + ndc.x * U.view.x * U.camera_right.xyz +
-                       ndc.y * U.view.y * U.camera_up.xyz);
+  vec3 dir = view_ray(ndc);
   float R = U.planet.x, h = U.planet.y, ground_alt = U.planet.z;
   vec3 sun = U.sun_dir.xyz;
   vec3 E_sun = U.sun_irradiance.rgb;
@@ -162,75 +98,11 @@ void main() {
   vec2 g = intersect_shell(R, h, ground_alt, mu);
   bool hits_ground = g.x >= 0.0;
   float t_ground = hits_ground ? g.x : 1e30;
-  float t_limit = min(t_ground, U.planet.w);
 
-  // ---- cloud intervals along the ray, sorted by distance
-  // Steps are uniform in u = ln(t + t_ref) when t_ref = ms_params.w > 0 (step length
-  // grows in proportion to distance, like the pixel footprint: fine near the camera,
-  // coarse far away), and uniform in t when t_ref = 0 (the naive march).
-  float t_ref = U.ms_params.w;
-  Interval iv[MAX_INTERVALS];
-  int n_iv = 0;
-  float total_len = 0.0;  // in u (or t) units
-  for (int li = 0; li < U.counts.x; ++li) {
-    Interval a, b;
-    int n = layer_intervals(li, mu, t_limit, a, b);
-    if (n >= 1) { iv[n_iv++] = a; total_len += march_coordinate(a.t1, t_ref) - march_coordinate(a.t0, t_ref); }
-    if (n == 2) { iv[n_iv++] = b; total_len += march_coordinate(b.t1, t_ref) - march_coordinate(b.t0, t_ref); }
-  }
-  for (int i = 1; i < n_iv; ++i) {  // insertion sort
-    Interval x = iv[i];
-    int j = i - 1;
-    while (j >= 0 && iv[j].t0 > x.t0) { iv[j + 1] = iv[j]; --j; }
-    iv[j + 1] = x;
-  }
-
-  // ---- march the clouds
-  vec3 C = vec3(0.0);  // in-scattered radiance from clouds
-  float T = 1.0;       // cloud transmittance
-  float depth_acc = 0.0;
-  if (n_iv > 0) {
-    float jitter = hash12(uvec2(px) + uvec2(U.counts.y * 7919, U.counts.y * 104729));
-    float nominal_du = total_len / U.quality.x;
-    for (int k = 0; k < n_iv && T > CLOUD_T_EPS; ++k) {
-      int li = iv[k].layer;
-      CloudLayerGpu L = U.layers[li];
-      float u0 = march_coordinate(iv[k].t0, t_ref), u1 = march_coordinate(iv[k].t1, t_ref);
-      int steps = max(1, int(ceil((u1 - u0) / max(nominal_du, 1e-6))));
-      float du = (u1 - u0) / float(steps);
-      for (int s = 0; s < steps && T > CLOUD_T_EPS; ++s) {
-        // step [ta, tb] around the jittered sample t
-        float ta = march_distance(u0 + float(s) * du, t_ref);
-        float tb = march_distance(u0 + float(s + 1) * du, t_ref);
-        float t = march_distance(u0 + (float(s) + jitter) * du, t_ref);
-        float dt = tb - ta;
-        vec3 p = t * dir;
-        float alt = altitude_of(p, R, h);
-        float coverage;
-        float sigma = cloud_extinction(li, p, alt, true, coverage);
-        if (sigma <= 0.0) continue;
-        vec3 up = up_at(p, R, h);
-        float mu_s = dot(up, sun);
-        vec3 T_atm = transmittance_to_space(alt, mu_s);
-        // direct sun: Wrenninge octaves over the light-march optical depth
-        vec3 L_sun = vec3(0.0);
-        if (max(T_atm.r, max(T_atm.g, T_atm.b)) > 0.0) {
-          float tau = light_optical_depth(li, p, alt, sun, mu_s);
-          float s_sum = 0.0, a = 1.0, b = 1.0, c = 1.0;
-          for (int o = 0; o < int(U.quality.z); ++o) {
-            s_sum += b * cloud_phase(cos_view_sun, L.optics.y, L.optics.z, L.optics.w, L.optics2.x, c) * exp(-a * tau);
-            a *= U.ms_params.x; b *= U.ms_params.y; c *= U.ms_params.z;
-          }
-          L_sun = E_sun * T_atm * s_sum;
-        }
-        vec3 L_diffuse = diffuse_inscatter(L, alt, mu_s, T_atm, coverage, E_sun, ground_alt);
-        float absorbed = one_minus_exp_neg(sigma * dt);  // albedo 1: scattered fraction
-        C += T * absorbed * (L_sun + L_diffuse);
-        depth_acc += t * T * absorbed;
-        T *= 1.0 - absorbed;
-      }
-    }
-  }
+  vec4 cloud, cloud_b;
+  cloud_at(px, t_ground, cloud, cloud_b);
+  vec3 C = cloud.rgb;  // in-scattered radiance from clouds
+  float T = clamp(cloud.a, 0.0, 1.0);  // cloud transmittance
 
   // ---- background: ground or sky
   vec3 background;
@@ -239,8 +111,13 @@ void main() {
     vec3 up = up_at(p, R, h);
     float mu_s = dot(up, sun);
     vec3 T_atm = transmittance_to_space(ground_alt, mu_s);
-    float tau = 0.0;
-    if (mu_s > 0.0 && U.counts.x > 0) tau = ground_shadow_optical_depth(p, ground_alt, sun, mu_s);
+    float tau = 0.0;  // cloud optical depth above the ground point, towards the sun
+    if (SM.params.z != 0.0 && mu_s > 0.0)
+      for (int li = 0; li < U.counts.x; ++li)
+        tau += textureLod(ground_shadow, vec3(shadow_map_uv((SM.to_anchor[li] * vec4(p, 1.0)).xyz), float(li)), 0.0).r;
+    else if (SM.params.w != 0.0 && mu_s > 0.0)
+      for (int li = 0; li < U.counts.x; ++li)
+        tau += layer_shadow_optical_depth(li, p, ground_alt, sun, mu_s, int(U.quality.w));
     float direct = exp(-tau);
     float diffuse = slab_diffuse_transmittance(tau * max(mu_s, 0.0));
     vec3 E = E_sun * (T_atm * max(mu_s, 0.0) * max(direct, diffuse) + sky_irradiance(ground_alt, mu_s) * diffuse);
@@ -266,9 +143,8 @@ void main() {
   // ---- aerial perspective on the clouds at their transmittance-weighted depth
   float opacity = 1.0 - T;
   if (opacity > 0.0) {
-    float t_mean = depth_acc / opacity;
     vec3 ap_in, ap_T;
-    aerial_perspective(ndc, t_mean, ap_in, ap_T);
+    aerial_perspective(ndc, max(cloud_b.x, 0.0), ap_in, ap_T);
     C = C * ap_T + opacity * E_sun * ap_in;
   }
   vec3 radiance = C + T * background;
@@ -276,8 +152,9 @@ void main() {
   if (any(isnan(radiance)) || any(isinf(radiance)) || any(lessThan(radiance, vec3(0.0)))) {
     atomicAdd(counters.nonfinite_pixels, 1u);
     radiance = vec3(0.0);
+    opacity = 0.0;
   }
-  if (U.counts.z != 0) atomicAdd(counters.density_evals, g_density_evals);
   if (opacity > 0.01) atomicAdd(counters.cloud_pixels, 1u);
+  if (U.counts.z != 0 && g_density_evals > 0u) atomicAdd(counters.density_evals, g_density_evals);
   imageStore(out_image, px, vec4(radiance, opacity));
 }

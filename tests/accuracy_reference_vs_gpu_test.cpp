@@ -98,6 +98,7 @@ RenderQuality fine_quality() {
   q.primary_steps = 1024;
   q.light_steps = 64;
   q.ground_shadow_steps = 128;
+  q.ground_shadow_map = false;  // marched per pixel, like the reference
   return q;
 }
 

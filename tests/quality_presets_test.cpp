@@ -8,15 +8,23 @@
 namespace cloudsvc {
 namespace {
 
-bool same(const RenderQuality& a, const RenderQuality& b) {
+bool same_march(const RenderQuality& a, const RenderQuality& b) {
   return a.primary_steps == b.primary_steps && a.light_steps == b.light_steps && a.ms_octaves == b.ms_octaves &&
          a.ground_shadow_steps == b.ground_shadow_steps && a.ms_a == b.ms_a && a.ms_b == b.ms_b && a.ms_c == b.ms_c &&
-         a.step_growth_ref_m == b.step_growth_ref_m;
+         a.step_growth_ref_m == b.step_growth_ref_m && a.long_step_factor == b.long_step_factor &&
+         a.level_of_detail == b.level_of_detail && a.cloud_resolution_divisor == b.cloud_resolution_divisor &&
+         a.ground_shadow_map == b.ground_shadow_map;
 }
 
-TEST(QualityPresets, DefaultIsTheMarchTheAccuracyFloorsCover) {
-  ASSERT_TRUE(quality_preset("default"));
-  EXPECT_TRUE(same(*quality_preset("default"), RenderQuality{}));
+// The default preset's first frame (no history) is RenderQuality{}'s march, which the
+// accuracy floors are asserted for; later frames reuse 1/16 of the pixels per frame.
+TEST(QualityPresets, DefaultIsTheMarchTheAccuracyFloorsCoverWithTemporalReuse) {
+  const auto d = quality_preset("default");
+  ASSERT_TRUE(d);
+  EXPECT_TRUE(same_march(*d, RenderQuality{}));
+  EXPECT_TRUE(d->temporal_reuse);
+  EXPECT_EQ(d->temporal_stride, 4);
+  EXPECT_FALSE(RenderQuality{}.temporal_reuse);
 }
 
 TEST(QualityPresets, NaiveIsTheUniformBaseline) {
@@ -25,6 +33,12 @@ TEST(QualityPresets, NaiveIsTheUniformBaseline) {
   EXPECT_EQ(n->primary_steps, 64);
   EXPECT_EQ(n->light_steps, 6);
   EXPECT_EQ(n->step_growth_ref_m, 0.0);
+  // no skips: every step in full, every pixel every frame, shadows marched per pixel
+  EXPECT_EQ(n->long_step_factor, 1);
+  EXPECT_FALSE(n->level_of_detail);
+  EXPECT_EQ(n->cloud_resolution_divisor, 1);
+  EXPECT_FALSE(n->temporal_reuse);
+  EXPECT_FALSE(n->ground_shadow_map);
 }
 
 TEST(QualityPresets, FrontPresetsGrowInCostAndUnknownNamesAreRejected) {
@@ -32,7 +46,10 @@ TEST(QualityPresets, FrontPresetsGrowInCostAndUnknownNamesAreRejected) {
   for (const char* name : {"low", "medium", "high", "ultra"}) {
     const auto q = quality_preset(name);
     ASSERT_TRUE(q) << name;
-    const int cost = q->primary_steps * (1 + q->light_steps);
+    // march work per pixel and frame, amortised over the reuse
+    const int stride = q->temporal_reuse ? q->temporal_stride : 1;
+    const int cost = q->primary_steps * (1 + q->light_steps) /
+                     (stride * stride * q->cloud_resolution_divisor * q->cloud_resolution_divisor);
     EXPECT_GT(cost, prev) << name;
     prev = cost;
   }

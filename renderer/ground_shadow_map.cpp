@@ -1,0 +1,90 @@
+#include "renderer/ground_shadow_map.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "renderer/atmosphere_luts.h"
+#include "renderer/temporal_reprojection.h"
+
+namespace cloudsvc {
+
+namespace {
+
+double horizontal_distance(const ViewRequest& a, const ViewRequest& b) {
+  const glm::dvec3 d = geo::geodetic_to_ecef(b.position) - geo::geodetic_to_ecef(a.position);
+  const glm::dvec3 up = geo::enu_to_ecef(a.position.lat_deg, a.position.lon_deg)[2];
+  return glm::length(d - glm::dot(d, up) * up);
+}
+
+}  // namespace
+
+double shadow_map_warp(double alt_m) { return std::max(kMinWarpM, 2.0 * alt_m); }
+
+std::string shadow_map_stale_reason(const ShadowMapKey& key, const ViewRequest& view, const glm::dvec3& sun_ecef,
+                                    std::uint64_t weather_generation, const weather::Weather& weather,
+                                    const WindAnchor& wind_anchor) {
+  if (weather_generation != key.weather_generation) return "weather changed";
+  const double sun_deg = std::acos(std::clamp(glm::dot(sun_ecef, key.sun_ecef), -1.0, 1.0)) * 180.0 / M_PI;
+  if (sun_deg > kSunTolDeg) return "sun moved";
+  if (horizontal_distance(key.anchor, view) > kReachFraction * key.warp_m) return "camera left the core";
+  const double k = shadow_map_warp(view.position.alt_m);
+  if (k > 1.5 * key.warp_m || k < key.warp_m / 1.5) return "altitude changed";
+  // drift of each layer's field under the camera since the build
+  const Reprojection r = make_reprojection(key.anchor, view, weather, wind_anchor);
+  const glm::dvec3 under_camera(0.0, 0.0, -view.position.alt_m);
+  for (std::size_t i = 0; i < std::min<std::size_t>(weather.layers.size(), 4); ++i) {
+    const glm::dvec3 with_wind = glm::dvec3(r.transform[i] * glm::dvec4(under_camera, 1.0));
+    const glm::dvec3 without = glm::dvec3(r.transform[kGroundTransform] * glm::dvec4(under_camera, 1.0));
+    if (glm::length(with_wind - without) > kReachFraction * key.warp_m) return "wind drift";
+  }
+  return "";
+}
+
+GroundShadowMap::GroundShadowMap()
+    : build_prog_(gl::ShaderProgram::compute("ground_shadow_map.comp")),
+      uniforms_(gl::make_buffer(sizeof(ShadowMapUniforms), nullptr, GL_DYNAMIC_DRAW)) {
+  GLuint id = 0;
+  glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &id);
+  map_ = gl::Texture(id);
+  glTextureStorage3D(id, 1, GL_R32F, kSize, kSize, 4);
+  glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
+bool GroundShadowMap::update(const ViewRequest& view, const FrameUniforms& u, const weather::Weather& weather,
+                             const WindAnchor& wind_anchor, std::uint64_t weather_generation, bool per_pixel) {
+  ShadowMapUniforms su{};
+  for (auto& m : su.to_anchor) m = glm::mat4(1.0f);
+  const glm::dmat3 enu = geo::enu_to_ecef(view.position.lat_deg, view.position.lon_deg);
+  const glm::dvec3 sun_ecef = glm::normalize(enu * glm::dvec3(u.sun_dir.x, u.sun_dir.y, u.sun_dir.z));
+  const bool night = u.sun_dir.z < std::sin(kNightDeg * M_PI / 180.0);
+  bool rebuilt = false;
+  if (night || weather.layers.empty()) {
+    key_.reset();
+  } else if (per_pixel) {
+    su.params = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+  } else {
+    if (!key_ || !shadow_map_stale_reason(*key_, view, sun_ecef, weather_generation, weather, wind_anchor).empty()) {
+      key_ = ShadowMapKey{view, sun_ecef, weather_generation, shadow_map_warp(view.position.alt_m)};
+      su.params = glm::vec4(static_cast<float>(key_->warp_m), static_cast<float>(kSize), 1.0f, 0.0f);
+      glNamedBufferSubData(uniforms_.id(), 0, sizeof(ShadowMapUniforms), &su);
+      glBindBufferBase(GL_UNIFORM_BUFFER, 2, uniforms_.id());
+      build_prog_.use();
+      glBindImageTexture(0, map_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
+      dispatch_2d(kSize, kSize, static_cast<int>(std::min<std::size_t>(weather.layers.size(), 4)));
+      rebuilt = true;
+    }
+    const Reprojection r = make_reprojection(key_->anchor, view, weather, wind_anchor);
+    for (int i = 0; i < 4; ++i) su.to_anchor[i] = glm::mat4(r.transform[i]);
+    su.params = glm::vec4(static_cast<float>(key_->warp_m), static_cast<float>(kSize), 1.0f, 0.0f);
+  }
+  glNamedBufferSubData(uniforms_.id(), 0, sizeof(ShadowMapUniforms), &su);
+  glBindBufferBase(GL_UNIFORM_BUFFER, 2, uniforms_.id());
+  glBindTextureUnit(14, map_.id());
+  return rebuilt;
+}
+
+}  // namespace cloudsvc

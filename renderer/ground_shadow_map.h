@@ -1,0 +1,78 @@
+// Ground shadow map (shaders/ground_shadow_map.glsl): per cloud layer, the layer's optical
+// depth towards the sun above the ground around an anchor (the camera when it was built),
+// looked up by the composite for every ground pixel. World-space, so it is stable under
+// camera motion, and rebuilt only when its inputs change (issue 5):
+//  - the weather (layers, map tiles, keyframe blend) changed;
+//  - the sun moved by more than kSunTolDeg (the sun moves 0.25 deg per minute);
+//  - the camera left the well-resolved core (kReachFraction of the warp scale K) or its
+//    altitude changed K by more than half;
+//  - a layer drifted with its wind by more than kReachFraction of K (between rebuilds the
+//    lookup follows the drift exactly: the map is sampled at the drifted position).
+// No map at night (sun more than kNightDeg below the camera's horizon) or without layers.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+
+#include <glm/glm.hpp>
+
+#include "renderer/frame_uniforms.h"
+#include "renderer/gl/gl_objects.h"
+#include "renderer/gl/shader_program.h"
+#include "renderer/render_types.h"
+#include "renderer/wind_drift.h"
+#include "weather/cloud_layer.h"
+
+namespace cloudsvc {
+
+struct ShadowMapUniforms {
+  glm::mat4 to_anchor[4];  // current local -> anchor local (m), per layer (wind drift included)
+  glm::vec4 params;        // K (m), N (texels), map valid (1/0), march per pixel instead (1/0)
+};
+static_assert(sizeof(ShadowMapUniforms) == 4 * 64 + 16, "std140 layout");
+
+// What the map was built for.
+struct ShadowMapKey {
+  ViewRequest anchor;          // camera view at the build
+  glm::dvec3 sun_ecef{0.0};    // unit vector to the sun (ECEF) at the build
+  std::uint64_t weather_generation = 0;
+  double warp_m = 0.0;         // K
+};
+
+constexpr double kSunTolDeg = 0.05;
+constexpr double kReachFraction = 0.25;
+constexpr double kNightDeg = -3.0;
+constexpr double kMinWarpM = 8000.0;
+
+// Warp scale K for a camera at altitude alt_m: max(kMinWarpM, 2 altitude).
+double shadow_map_warp(double alt_m);
+
+// Why the map must be rebuilt for this view ("" = it need not be).
+std::string shadow_map_stale_reason(const ShadowMapKey& key, const ViewRequest& view, const glm::dvec3& sun_ecef,
+                                    std::uint64_t weather_generation, const weather::Weather& weather,
+                                    const WindAnchor& wind_anchor);
+
+class GroundShadowMap {
+ public:
+  static constexpr int kSize = 512;  // texels per side
+
+  GroundShadowMap();
+
+  // Rebuilds the map if stale (the frame uniforms of `view` must be bound at 0 and the
+  // noise/weather/LUT textures at their units), then uploads the lookup uniforms for this
+  // view at binding 2 and binds the map at texture unit 14. Returns true if it rebuilt.
+  // per_pixel: no map; the composite marches the shadows of every ground pixel.
+  bool update(const ViewRequest& view, const FrameUniforms& u, const weather::Weather& weather,
+              const WindAnchor& wind_anchor, std::uint64_t weather_generation, bool per_pixel);
+
+  void invalidate() { key_.reset(); }
+  static constexpr std::size_t gpu_bytes() { return static_cast<std::size_t>(kSize) * kSize * 4 * 4; }
+
+ private:
+  gl::ShaderProgram build_prog_;
+  gl::Texture map_;
+  gl::Buffer uniforms_;
+  std::optional<ShadowMapKey> key_;
+};
+
+}  // namespace cloudsvc

@@ -1,0 +1,118 @@
+#include "renderer/temporal_reprojection.h"
+
+#include <cmath>
+
+namespace cloudsvc {
+
+namespace {
+
+constexpr double kDegToRad = M_PI / 180.0;
+
+// Ordered-dither visiting orders: each prefix of 4 (of 16) covers the 2x2 sub-grid evenly.
+constexpr int kOrder2[4][2] = {{0, 0}, {1, 1}, {1, 0}, {0, 1}};
+constexpr int kOrder4[16][2] = {{0, 0}, {2, 2}, {2, 0}, {0, 2}, {1, 1}, {3, 3}, {3, 1}, {1, 3},
+                                {1, 0}, {3, 2}, {3, 0}, {1, 2}, {0, 1}, {2, 3}, {2, 1}, {0, 3}};
+
+glm::dvec2 tan_half_fov(const ViewRequest& v) {
+  const double th = std::tan(0.5 * v.fov_deg * kDegToRad);
+  return {th, th * static_cast<double>(v.height) / static_cast<double>(v.width)};
+}
+
+bool same_march(const RenderQuality& a, const RenderQuality& b) {
+  return a.primary_steps == b.primary_steps && a.light_steps == b.light_steps && a.ms_octaves == b.ms_octaves &&
+         a.ground_shadow_steps == b.ground_shadow_steps && a.ms_a == b.ms_a && a.ms_b == b.ms_b && a.ms_c == b.ms_c &&
+         a.step_growth_ref_m == b.step_growth_ref_m && a.temporal_stride == b.temporal_stride &&
+         a.cloud_resolution_divisor == b.cloud_resolution_divisor && a.long_step_factor == b.long_step_factor &&
+         a.level_of_detail == b.level_of_detail && a.temporal_reuse == b.temporal_reuse &&
+         a.ground_shadow_map == b.ground_shadow_map;
+}
+
+// current local -> previous local for a field that moves by the ECEF rotation q (the
+// position X' at the previous time of the material now at X is q X).
+glm::dmat4 local_transform(const glm::dmat3& q, const ViewRequest& prev, const ViewRequest& cur) {
+  const glm::dvec3 cam_cur = geo::geodetic_to_ecef(cur.position), cam_prev = geo::geodetic_to_ecef(prev.position);
+  const glm::dmat3 e_cur = geo::enu_to_ecef(cur.position.lat_deg, cur.position.lon_deg);
+  const glm::dmat3 e_prev = geo::enu_to_ecef(prev.position.lat_deg, prev.position.lon_deg);
+  const glm::dmat3 a = glm::transpose(e_prev) * q * e_cur;
+  // q cam_cur - cam_prev without cancellation: (cam_cur - cam_prev) + (q - I) cam_cur
+  const glm::dvec3 b = glm::transpose(e_prev) * ((cam_cur - cam_prev) + (q - glm::dmat3(1.0)) * cam_cur);
+  glm::dmat4 m(a);
+  m[3] = glm::dvec4(b, 1.0);
+  return m;
+}
+
+}  // namespace
+
+bool camera_still(const ViewRequest& prev, const ViewRequest& cur) {
+  const double moved = glm::length(geo::geodetic_to_ecef(cur.position) - geo::geodetic_to_ecef(prev.position));
+  const auto turned = [](double a, double b) { return std::abs(std::remainder(a - b, 360.0)); };
+  return moved < kStillCameraM && turned(prev.attitude.heading_deg, cur.attitude.heading_deg) < kStillCameraDeg &&
+         turned(prev.attitude.pitch_deg, cur.attitude.pitch_deg) < kStillCameraDeg &&
+         turned(prev.attitude.roll_deg, cur.attitude.roll_deg) < kStillCameraDeg;
+}
+
+glm::ivec2 fresh_pixel_offset(int stride, std::uint32_t frame_index) {
+  if (stride == 2) return {kOrder2[frame_index % 4][0], kOrder2[frame_index % 4][1]};
+  if (stride == 4) return {kOrder4[frame_index % 16][0], kOrder4[frame_index % 16][1]};
+  return {0, 0};
+}
+
+glm::ivec2 cloud_buffer_size(int w, int h, int divisor) {
+  return {(w + divisor - 1) / divisor, (h + divisor - 1) / divisor};
+}
+
+bool history_usable(const ViewRequest& prev, const RenderQuality& prev_quality, const ViewRequest& cur,
+                    const RenderQuality& cur_quality) {
+  if (cur.reset_history || !cur_quality.temporal_reuse || !prev_quality.temporal_reuse) return false;
+  if (prev.width != cur.width || prev.height != cur.height || prev.fov_deg != cur.fov_deg) return false;
+  if (!same_march(prev_quality, cur_quality)) return false;
+  const double gap = cur.unix_time_s - prev.unix_time_s;
+  if (!(gap >= 0.0 && gap <= kMaxHistoryGapS)) return false;
+  const double jump = glm::length(geo::geodetic_to_ecef(cur.position) - geo::geodetic_to_ecef(prev.position));
+  if (jump > kMaxHistoryJumpM) return false;
+  const geo::BodyAxes a = geo::body_axes_enu(prev.attitude), b = geo::body_axes_enu(cur.attitude);
+  return glm::dot(a.forward, b.forward) >= std::cos(kMaxHistoryTurnDeg * M_PI / 180.0);
+}
+
+Reprojection make_reprojection(const ViewRequest& prev, const ViewRequest& cur, const weather::Weather& weather,
+                               const WindAnchor& anchor) {
+  Reprojection r;
+  const glm::dmat4 ground = local_transform(glm::dmat3(1.0), prev, cur);
+  for (auto& t : r.transform) t = ground;
+  const int n = std::min<int>(static_cast<int>(weather.layers.size()), kGroundTransform);
+  for (int i = 0; i < n; ++i) {
+    const weather::Wind& w = weather.layers[static_cast<size_t>(i)].wind;
+    // The field is sampled at rot(t) X: material at X now sat at rot(prev)^T rot(cur) X.
+    const glm::dmat3 q = glm::transpose(wind_rotation(w, anchor, prev.unix_time_s)) *
+                         wind_rotation(w, anchor, cur.unix_time_s);
+    r.transform[i] = local_transform(q, prev, cur);
+  }
+  r.prev_axes = geo::body_axes_enu(prev.attitude);
+  return r;
+}
+
+TemporalUniforms make_temporal_uniforms(const ViewRequest& cur, const RenderQuality& quality, bool history,
+                                        const Reprojection* reprojection, const ViewRequest* prev) {
+  TemporalUniforms u{};
+  const int divisor = std::max(1, quality.cloud_resolution_divisor);
+  const glm::ivec2 size = cloud_buffer_size(cur.width, cur.height, divisor);
+  // Without history every cloud pixel is marched.
+  const int stride = history ? std::max(1, quality.temporal_stride) : 1;
+  const glm::ivec2 offset = fresh_pixel_offset(stride, cur.frame_index);
+  u.grid = glm::ivec4(stride, offset.x, offset.y, history ? 1 : 0);
+  u.buffer_size = glm::ivec4(size.x, size.y, divisor, quality.neighbourhood_clamp ? 1 : 0);
+  u.blend = glm::vec4(static_cast<float>(quality.history_blend_min), 0.0f, 0.0f, 0.0f);
+  if (history && prev) u.blend.y = camera_still(*prev, cur) ? 1.0f : 0.0f;
+  for (auto& m : u.reproject) m = glm::mat4(1.0f);
+  if (history && reprojection && prev) {
+    for (int i = 0; i < 5; ++i) u.reproject[i] = glm::mat4(reprojection->transform[i]);
+    u.prev_forward = glm::vec4(glm::vec3(reprojection->prev_axes.forward), 0.0f);
+    u.prev_right = glm::vec4(glm::vec3(reprojection->prev_axes.right), 0.0f);
+    u.prev_up = glm::vec4(glm::vec3(reprojection->prev_axes.up), 0.0f);
+    const glm::dvec2 t = tan_half_fov(*prev);
+    u.prev_view = glm::vec4(static_cast<float>(t.x), static_cast<float>(t.y), 0.0f, 0.0f);
+  }
+  return u;
+}
+
+}  // namespace cloudsvc

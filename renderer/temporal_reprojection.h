@@ -1,0 +1,58 @@
+// Temporal reuse of the cloud buffer (shaders/cloud_resolve.comp): which pixels a frame
+// marches, whether the previous frame's buffer may be reused, and the transforms that
+// carry a point of the current camera's local frame to where the same cloud (or ground)
+// was seen from the previous camera. Computed in double on the CPU; no GL here.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "renderer/render_types.h"
+#include "renderer/temporal_uniforms.h"
+#include "renderer/wind_drift.h"
+#include "weather/cloud_layer.h"
+
+namespace cloudsvc {
+
+// Offset (x, y) in [0, stride)^2 of the cloud pixels marched by frame frame_index: a
+// 2x2 or 4x4 ordered-dither sequence, so that consecutive frames are spread evenly and
+// every pixel is marched once per stride^2 frames. Stride 1: (0, 0).
+glm::ivec2 fresh_pixel_offset(int stride, std::uint32_t frame_index);
+
+// Whether the previous frame's cloud buffer can be reprojected into this one: not after
+// a teleport/reset (ViewRequest::reset_history), a change of size, field of view or
+// march settings, time running backwards or jumping more than kMaxHistoryGapS, or the
+// camera jumping more than kMaxHistoryJumpM or turning more than kMaxHistoryTurnDeg in
+// one frame (an unannounced teleport or a snap view change: nothing left to reuse).
+constexpr double kMaxHistoryGapS = 10.0;
+constexpr double kMaxHistoryJumpM = 5000.0;
+constexpr double kMaxHistoryTurnDeg = 30.0;
+bool history_usable(const ViewRequest& prev, const RenderQuality& prev_quality, const ViewRequest& cur,
+                    const RenderQuality& cur_quality);
+
+// A camera that has not moved (under kStillCameraM) or turned (under kStillCameraDeg on
+// each axis) since the previous frame: only then are fresh samples averaged with their
+// history (the jitter noise falls over frames). A moving camera's history is resampled
+// and its lighting may be changing, so a fresh sample replaces it.
+constexpr double kStillCameraM = 0.5;
+constexpr double kStillCameraDeg = 1e-3;
+bool camera_still(const ViewRequest& prev, const ViewRequest& cur);
+
+// p_prev = M p_cur for points of layer li's cloud field (camera motion and the layer's
+// wind between the two times), and for the ground at index kGroundTransform. Layers
+// beyond the weather's get the ground transform.
+struct Reprojection {
+  glm::dmat4 transform[5];
+  geo::BodyAxes prev_axes;  // previous camera axes in its own local frame
+};
+Reprojection make_reprojection(const ViewRequest& prev, const ViewRequest& cur, const weather::Weather& weather,
+                               const WindAnchor& anchor);
+
+// The uniform block for one frame. history: whether the previous buffer is usable (then
+// reprojection must be given).
+TemporalUniforms make_temporal_uniforms(const ViewRequest& cur, const RenderQuality& quality, bool history,
+                                        const Reprojection* reprojection, const ViewRequest* prev);
+
+// Cloud-buffer size for a frame of w x h frame pixels.
+glm::ivec2 cloud_buffer_size(int w, int h, int divisor);
+
+}  // namespace cloudsvc

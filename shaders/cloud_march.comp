@@ -1,0 +1,156 @@
+#version 450 core
+// The cloud march: for this frame's fresh cloud pixels (every stride-th, see
+// temporal_uniforms.glsl), the clouds along the ray through the layer intervals. Output
+// (fresh_a) rgb: in-
+// scattered radiance from the clouds at the camera before aerial perspective (W m^-2
+// sr^-1 nm^-1, 680/550/440 nm), a: cloud transmittance; (fresh_b) x: depth (m; the
+// transmittance-weighted cloud distance, or where the ray enters the first layer when it
+// meets no cloud), y: 0 (unused), z: layer of that depth (-1 none), w: 1.
+#include "common.glsl"
+#include "frame_uniforms.glsl"
+#include "temporal_uniforms.glsl"
+#include "atmosphere_model.glsl"
+#include "atmosphere_lookup.glsl"
+#include "phase_function.glsl"
+#include "cloud_density.glsl"
+#include "cloud_intervals.glsl"
+#include "cloud_lighting.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(rgba32f, binding = 0) uniform writeonly image2D fresh_a;
+layout(rgba32f, binding = 1) uniform writeonly image2D fresh_b;
+layout(std430, binding = 0) buffer FrameCounters {
+  uint density_evals;
+  uint nonfinite_pixels;
+  uint cloud_pixels;
+} counters;
+
+const float CLOUD_T_EPS = 1e-3;  // early exit below this cloud transmittance
+
+// Light steps at distance t: the full count while the pixel footprint is finer than a
+// base-noise texel, falling in proportion beyond (no finer lighting than the pixel can
+// show), to a third at most (seed 002, LOD by the ray's cone footprint).
+int light_steps_at(float t, CloudLayerGpu L) {
+  int n = int(U.quality.y);
+  if (U.march.y == 0.0) return n;
+  float texel = 1.0 / (L.optics2.y * 128.0);  // base-noise texel, m
+  float k = clamp(texel / max(t * U.march.z, 1e-3), 1.0 / 3.0, 1.0);
+  return max(2, int(ceil(float(n) * k)));
+}
+
+// Detail noise at distance t: sampled while a pixel spans less than two detail texels,
+// else replaced by its mean.
+int detail_mode_at(float t, CloudLayerGpu L) {
+  if (U.march.y == 0.0) return DETAIL_SAMPLED;
+  float texel = 1.0 / (L.optics2.z * 32.0);
+  return t * U.march.z < 2.0 * texel ? DETAIL_SAMPLED : DETAIL_MEAN;
+}
+
+void main() {
+  ivec2 cell = ivec2(gl_GlobalInvocationID.xy);
+  ivec2 q = cell * TU.grid.x + TU.grid.yz;  // the cloud pixel this invocation marches
+  if (any(greaterThanEqual(q, TU.buffer_size.xy))) return;
+  vec3 dir = view_ray(cloud_pixel_ndc(vec2(q)));
+  float R = U.planet.x, h = U.planet.y, ground_alt = U.planet.z;
+  vec3 sun = U.sun_dir.xyz;
+  vec3 E_sun = U.sun_irradiance.rgb;
+  float mu = dir.z;
+  float cos_view_sun = dot(dir, sun);
+
+  vec2 g = intersect_shell(R, h, ground_alt, mu);
+  bool hits_ground = g.x >= 0.0;
+  float t_ground = hits_ground ? g.x : 1e30;
+  float t_limit = min(t_ground, U.planet.w);
+
+  // Steps are uniform in u = ln(1 + t / t_ref) (t_ref = ms_params.w > 0) or in t (0: the
+  // naive march). In empty air the march probes with steps long_step times longer (base
+  // shape only); on finding cloud it steps back and re-marches that span at the normal
+  // step, and returns to long steps after long_step empty samples (Schneider 2015).
+  float t_ref = U.ms_params.w;
+  Interval iv[MAX_INTERVALS];
+  float total_len;
+  int n_iv = ray_intervals(mu, t_limit, t_ref, iv, total_len);
+  int long_step = max(1, int(U.march.x));
+
+  vec3 C = vec3(0.0);  // in-scattered radiance from clouds
+  float T = 1.0;       // cloud transmittance
+  float depth_acc = 0.0;
+  float depth = n_iv > 0 ? iv[0].t0 : min(t_limit, 1e7);
+  int depth_layer = n_iv > 0 ? iv[0].layer : -1;
+  float strongest = 0.0;  // largest single-step contribution T * absorbed, and its layer
+  int cloud_layer = -1;
+  if (n_iv > 0) {
+    float jitter = hash12(uvec2(q) + uvec2(U.counts.y * 7919, U.counts.y * 104729));
+    float nominal_du = total_len / U.quality.x;
+    for (int k = 0; k < n_iv && T > CLOUD_T_EPS; ++k) {
+      int li = iv[k].layer;
+      CloudLayerGpu L = U.layers[li];
+      float u0 = march_coordinate(iv[k].t0, t_ref), u1 = march_coordinate(iv[k].t1, t_ref);
+      int steps = max(1, int(ceil((u1 - u0) / max(nominal_du, 1e-6))));
+      float du = (u1 - u0) / float(steps);
+      // st: step index; in probing mode the probe at st covers (st - long_step, st]
+      int st = 0, last_fine = -1, empty_run = 0;
+      bool probing = long_step > 1;
+      for (int guard = 0; st < steps && T > CLOUD_T_EPS && guard < 3 * steps + 4; ++guard) {
+        float t = march_distance(u0 + (float(st) + jitter) * du, t_ref);
+        vec3 p = t * dir;
+        float alt = altitude_of(p, R, h);
+        float coverage;
+        float sigma = cloud_extinction(li, p, alt, probing ? DETAIL_NONE : detail_mode_at(t, L), coverage);
+        if (probing) {
+          if (sigma > 0.0) {
+            probing = false;  // step back: re-march the probed span at the normal step
+            empty_run = 0;
+            st = max(st - long_step + 1, last_fine + 1);
+          } else {
+            st = st == steps - 1 ? steps : min(st + long_step, steps - 1);
+          }
+          continue;
+        }
+        last_fine = st;
+        if (sigma <= 0.0) {
+          if (long_step > 1 && ++empty_run >= long_step) {
+            probing = true;
+            st = min(st + long_step, steps - 1);
+            if (st == last_fine) st = steps;
+          } else {
+            ++st;
+          }
+          continue;
+        }
+        empty_run = 0;
+        float ta = march_distance(u0 + float(st) * du, t_ref);
+        float tb = march_distance(u0 + float(st + 1) * du, t_ref);
+        ++st;
+        float dt = tb - ta;
+        vec3 up = up_at(p, R, h);
+        float mu_s = dot(up, sun);
+        vec3 T_atm = transmittance_to_space(alt, mu_s);
+        // direct sun: Wrenninge octaves over the light-march optical depth
+        vec3 L_sun = vec3(0.0);
+        if (max(T_atm.r, max(T_atm.g, T_atm.b)) > 0.0) {
+          float tau = light_optical_depth(li, p, alt, sun, mu_s, light_steps_at(t, L));
+          float s_sum = 0.0, a = 1.0, b = 1.0, c = 1.0;
+          for (int o = 0; o < int(U.quality.z); ++o) {
+            s_sum += b * cloud_phase(cos_view_sun, L.optics.y, L.optics.z, L.optics.w, L.optics2.x, c) * exp(-a * tau);
+            a *= U.ms_params.x; b *= U.ms_params.y; c *= U.ms_params.z;
+          }
+          L_sun = E_sun * T_atm * s_sum;
+        }
+        vec3 L_diffuse = diffuse_inscatter(L, alt, mu_s, T_atm, coverage, E_sun, ground_alt);
+        float absorbed = one_minus_exp_neg(sigma * dt);  // albedo 1: scattered fraction
+        C += T * absorbed * (L_sun + L_diffuse);
+        depth_acc += t * T * absorbed;
+        if (T * absorbed > strongest) { strongest = T * absorbed; cloud_layer = li; }
+        T *= 1.0 - absorbed;
+      }
+    }
+  }
+  float opacity = 1.0 - T;
+  if (opacity > 1e-4) depth = depth_acc / opacity;
+  if (cloud_layer >= 0) depth_layer = cloud_layer;
+
+  if (U.counts.z != 0) atomicAdd(counters.density_evals, g_density_evals);
+  imageStore(fresh_a, cell, vec4(C, T));
+  imageStore(fresh_b, cell, vec4(depth, 0.0, float(depth_layer), 1.0));
+}

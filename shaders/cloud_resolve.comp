@@ -1,0 +1,152 @@
+#version 450 core
+// Temporal resolve of the cloud buffer (temporal_uniforms.glsl). Every cloud pixel gets:
+//  - fresh this frame: its new sample; while the camera is still, blended with its
+//    history with weight max(1 / (n + 1), blend.x) after n earlier samples (averages the
+//    step jitter out);
+//  - not fresh: its history, reprojected with the real camera motion, the wind of the
+//    cloud layer it shows and its cloud depth (two fixed-point iterations: the depth
+//    stored where the ray pointed last frame), limited to the range of the fresh samples
+//    around it when the view moved (Karis 2014 neighbourhood clamp: no ghosts where
+//    something else is uncovered);
+//  - no usable history (first frame, a teleport, off-screen last frame): the fresh
+//    samples around it, interpolated bilinearly.
+// Koblizek 2024 (seed 002/004) ch. 5: 1/16-pixel reprojection; Schneider 2015.
+#include "common.glsl"
+#include "frame_uniforms.glsl"
+#include "temporal_uniforms.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(binding = 10) uniform sampler2D fresh_a;
+layout(binding = 11) uniform sampler2D fresh_b;
+layout(binding = 12) uniform sampler2D history_a;  // previous resolved buffer, linear filter
+layout(binding = 13) uniform sampler2D history_b;
+layout(rgba32f, binding = 0) uniform writeonly image2D next_a;
+layout(rgba32f, binding = 1) uniform writeonly image2D next_b;
+
+// Cloud-buffer texture coordinates in the previous frame of the current-local point p
+// seen through the field (or ground) transform m; false when behind the previous camera.
+bool reproject(vec3 p, int m, out vec2 uv) {
+  vec3 pp = (TU.reproject[m] * vec4(p, 1.0)).xyz;
+  float z = dot(pp, TU.prev_forward.xyz);
+  uv = vec2(-1.0);
+  if (z <= 1e-3 * length(pp)) return false;
+  vec2 ndc = vec2(dot(pp, TU.prev_right.xyz) / (z * TU.prev_view.x), dot(pp, TU.prev_up.xyz) / (z * TU.prev_view.y));
+  vec2 full = vec2(ndc.x * 0.5 + 0.5, 0.5 - ndc.y * 0.5) * U.view.zw;  // frame pixels, row 0 at the top
+  uv = full / float(TU.buffer_size.z) / vec2(TU.buffer_size.xy);
+  return all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0)));
+}
+
+// History at uv with a Catmull-Rom filter (4x4 texels): a moving camera resamples the
+// history every frame, and a bilinear filter would blur it a little more each time.
+// Limited to the range of the 2x2 nearest texels (no ringing, no negative values).
+vec4 history_cubic(vec2 uv) {
+  vec2 pos = uv * vec2(TU.buffer_size.xy) - 0.5;
+  vec2 base = floor(pos);
+  vec2 f = pos - base;
+  vec2 w0 = f * (-0.5 + f * (1.0 - 0.5 * f));
+  vec2 w1 = 1.0 + f * f * (-2.5 + 1.5 * f);
+  vec2 w2 = f * (0.5 + f * (2.0 - 1.5 * f));
+  vec2 w3 = f * f * (-0.5 + 0.5 * f);
+  vec2 wx[4] = vec2[4](w0, w1, w2, w3);
+  ivec2 b = ivec2(base) - 1;
+  ivec2 hi_px = TU.buffer_size.xy - 1;
+  vec4 sum = vec4(0.0), lo = vec4(1e30), hi = vec4(-1e30);
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) {
+      vec4 v = texelFetch(history_a, clamp(b + ivec2(i, j), ivec2(0), hi_px), 0);
+      sum += wx[i].x * wx[j].y * v;
+      if ((i == 1 || i == 2) && (j == 1 || j == 2)) { lo = min(lo, v); hi = max(hi, v); }
+    }
+  return clamp(sum, lo, hi);
+}
+
+int transform_of(float layer) { return layer >= 0.0 ? int(layer) : 4; }
+
+ivec2 texel_of(vec2 uv) { return clamp(ivec2(uv * vec2(TU.buffer_size.xy)), ivec2(0), TU.buffer_size.xy - 1); }
+
+// Change detection thresholds: cloud transmittance, and relative radiance (the jitter
+// noise of one sample is well below both away from cloud edges).
+const float CHANGE_T = 0.15;
+const float CHANGE_REL = 0.15;
+const int CHANGE_MIN_NEIGHBOURS = 3;  // of 4: one alone is jitter at a cloud edge
+
+bool finite4(vec4 v) { return !any(isnan(v)) && !any(isinf(v)); }
+
+void main() {
+  ivec2 q = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(q, TU.buffer_size.xy))) return;
+  int s = TU.grid.x;
+  ivec2 rel = q - TU.grid.yz;
+  ivec2 fsize = max((TU.buffer_size.xy - TU.grid.yz + s - 1) / s, ivec2(1));  // fresh samples per axis
+  bool is_fresh = all(greaterThanEqual(rel, ivec2(0))) && rel.x % s == 0 && rel.y % s == 0;
+
+  // The fresh samples around q: bilinear weights, their range, and the ground depth.
+  vec2 cf = vec2(rel) / float(s);
+  ivec2 c0 = clamp(ivec2(floor(cf)), ivec2(0), fsize - 1);
+  ivec2 c1 = min(c0 + 1, fsize - 1);
+  vec2 f = clamp(cf - vec2(c0), 0.0, 1.0);
+  ivec2 cs[4] = ivec2[4](c0, ivec2(c1.x, c0.y), ivec2(c0.x, c1.y), c1);
+  float ws[4] = float[4]((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y, f.x * f.y);
+  vec4 up_a = vec4(0.0), lo = vec4(1e30), hi = vec4(-1e30);
+  vec4 near_b = texelFetch(fresh_b, cs[0], 0);
+  float best_w = -1.0;
+  for (int i = 0; i < 4; ++i) {
+    vec4 a = texelFetch(fresh_a, cs[i], 0);
+    vec4 b = texelFetch(fresh_b, cs[i], 0);
+    up_a += ws[i] * a;
+    lo = min(lo, a);
+    hi = max(hi, a);
+    if (ws[i] > best_w) { best_w = ws[i]; near_b = b; }
+  }
+  vec4 fresh_value_a = is_fresh ? texelFetch(fresh_a, rel / s, 0) : up_a;
+  vec4 fresh_value_b = is_fresh ? texelFetch(fresh_b, rel / s, 0) : vec4(near_b.x, 0.0, near_b.z, 0.0);
+
+  vec4 out_a = fresh_value_a, out_b = fresh_value_b;
+  out_b.w = is_fresh ? 1.0 : 0.0;
+  if (TU.grid.w != 0) {
+    vec3 dir = view_ray(cloud_pixel_ndc(vec2(q)));
+    // clouds: the point at the depth stored where this ray pointed last frame, twice
+    vec4 hb = texelFetch(history_b, q, 0);
+    vec2 uv;
+    bool ok = reproject(hb.x * dir, transform_of(hb.z), uv);
+    if (ok) {
+      hb = texelFetch(history_b, texel_of(uv), 0);
+      ok = reproject(hb.x * dir, transform_of(hb.z), uv);
+    }
+    vec4 ha = history_cubic(uv);
+    ok = ok && finite4(ha) && finite4(hb);
+    if (ok) {
+      float n = hb.w;
+      vec2 motion = uv * vec2(TU.buffer_size.xy) - (vec2(q) + 0.5);  // cloud pixels
+      float moved = length(motion);
+      // Has the scene changed around q? Compare the fresh samples with the history at
+      // their positions (moved by q's motion); a cloud flown into, or one uncovered, shows
+      // there even when q's own reprojection looks still.
+      int n_changed = 0;
+      for (int i = 0; i < 4; ++i) {
+        vec2 pos_i = vec2(cs[i] * s + TU.grid.yz) + 0.5 + motion;
+        vec4 hi_ = textureLod(history_a, pos_i / vec2(TU.buffer_size.xy), 0.0);
+        vec4 fi = texelFetch(fresh_a, cs[i], 0);
+        float y_f = dot(fi.rgb, vec3(1.0)), y_h = dot(hi_.rgb, vec3(1.0));
+        n_changed += (abs(fi.a - hi_.a) > CHANGE_T || abs(y_f - y_h) > CHANGE_REL * (y_f + y_h) + 1e-9) ? 1 : 0;
+      }
+      // a still camera sees the same scene (its drift is in the reprojection): differences
+      // there are the jitter noise that accumulation removes
+      bool changed = TU.blend.y == 0.0 && n_changed >= CHANGE_MIN_NEIGHBOURS;
+      if (TU.buffer_size.w != 0 && changed) ha = up_a;  // stale: the fresh samples around it
+      else if (TU.buffer_size.w != 0 && moved > 0.5) ha = clamp(ha, lo, hi);
+      if (is_fresh) {
+        // a moved or changed history is resampled or stale: a fresh sample replaces it; a
+        // still one is averaged with it
+        float w = (TU.blend.y == 0.0 || moved > 0.1 || changed) ? 1.0 : max(1.0 / (n + 1.0), TU.blend.x);
+        out_a = mix(ha, fresh_value_a, w);
+        out_b = vec4(mix(hb.x, fresh_value_b.x, w), 0.0, fresh_value_b.z, min(n + 1.0, 255.0));
+      } else {
+        out_a = ha;
+        out_b = vec4(hb.x, 0.0, hb.z, n);
+      }
+    }
+  }
+  imageStore(next_a, q, out_a);
+  imageStore(next_b, q, out_b);
+}

@@ -1,0 +1,40 @@
+#version 450 core
+// Builds the ground shadow map (ground_shadow_map.glsl) for the current frame, which is the
+// anchor: texel (x, y) of array layer li holds layer li's optical depth towards the sun
+// above the ground point at the texel's offset (0 where the sun is down).
+#include "common.glsl"
+#include "frame_uniforms.glsl"
+#include "ground_shadow_map.glsl"
+#include "atmosphere_model.glsl"
+#include "atmosphere_lookup.glsl"
+#include "phase_function.glsl"
+#include "cloud_density.glsl"
+#include "cloud_lighting.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(r32f, binding = 0) uniform writeonly image2DArray shadow_map;
+layout(std430, binding = 0) buffer FrameCounters {
+  uint density_evals;
+  uint nonfinite_pixels;
+  uint cloud_pixels;
+} counters;
+
+void main() {
+  ivec3 id = ivec3(gl_GlobalInvocationID);
+  int n = int(SM.params.y);
+  if (id.x >= n || id.y >= n || id.z >= U.counts.x) return;
+  vec2 d = shadow_map_offset((vec2(id.xy) + 0.5) / float(n));
+  // ground point under offset d: on the sphere of radius R + g around (0, 0, -(R + h)),
+  // z = sqrt((R+g)^2 - |d|^2) - (R+h) written without cancellation
+  float R = U.planet.x, h = U.planet.y, g = U.planet.z;
+  float d2 = dot(d, d);
+  float tau = 0.0;
+  if (d2 < (R + g) * (R + g)) {
+    float z = ((g - h) * (2.0 * R + g + h) - d2) / (sqrt((R + g) * (R + g) - d2) + R + h);
+    vec3 p = vec3(d, z);
+    float mu_s = dot(up_at(p, R, h), U.sun_dir.xyz);
+    if (mu_s > 0.0) tau = layer_shadow_optical_depth(id.z, p, g, U.sun_dir.xyz, mu_s, int(U.quality.w));
+  }
+  if (U.counts.z != 0) atomicAdd(counters.density_evals, g_density_evals);
+  imageStore(shadow_map, id, vec4(tau));
+}

@@ -1,0 +1,27 @@
+// The ground shadow map (ground_shadow_map.comp, renderer/ground_shadow_map.h): per cloud
+// layer, the optical depth of that layer towards the sun above each ground point around
+// the camera where the map was built (the anchor), stored in the anchor's local frame with
+// a radial warp u = d / (|d| + K) of the horizontal offset d (m): texels of 2K/N metres
+// under the anchor growing with (|d| + K)^2 / K outwards, the whole ground out to the
+// horizon in one map. The layers' fields drift with their wind after the build; a lookup
+// first carries the ground point back along its layer's drift.
+
+layout(std140, binding = 2) uniform ShadowMapUniforms {
+  mat4 to_anchor[4];  // current local frame -> the anchor's local frame at build time (m), per layer
+  vec4 params;        // x warp scale K (m), y texels per side N, z map valid (1/0), w march per pixel instead (1/0)
+} SM;
+
+// Map coordinates [0,1]^2 of a point given in the anchor's local frame.
+vec2 shadow_map_uv(vec3 q) {
+  vec2 d = q.xy;
+  float len = length(d);
+  vec2 u = d / (len + SM.params.x);
+  return u * 0.5 + 0.5;
+}
+
+// Inverse: the horizontal offset d (m) of map coordinates uv.
+vec2 shadow_map_offset(vec2 uv) {
+  vec2 u = uv * 2.0 - 1.0;
+  float r = length(u);
+  return u * SM.params.x / max(1.0 - r, 1e-6);
+}

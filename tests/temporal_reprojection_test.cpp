@@ -1,0 +1,118 @@
+// The CPU side of temporal reuse (renderer/temporal_reprojection.h): the transforms carry a
+// point seen from the current camera to where the previous camera saw the same material,
+// the dither order covers every pixel, and the history is dropped when it must be.
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "geodesy/geodetic.h"
+#include "renderer/temporal_reprojection.h"
+#include "renderer/wind_drift.h"
+
+namespace cloudsvc {
+namespace {
+
+ViewRequest view_at(double lat, double lon, double alt, double heading, double pitch, double roll, double t) {
+  ViewRequest v;
+  v.position = {lat, lon, alt};
+  v.attitude = {heading, pitch, roll};
+  v.unix_time_s = t;
+  v.width = 160;
+  v.height = 90;
+  return v;
+}
+
+// ECEF of a point given in a view's local ENU frame.
+glm::dvec3 to_ecef(const ViewRequest& v, const glm::dvec3& local) {
+  return geo::geodetic_to_ecef(v.position) + geo::enu_to_ecef(v.position.lat_deg, v.position.lon_deg) * local;
+}
+
+glm::dvec3 apply(const glm::dmat4& m, const glm::dvec3& p) { return glm::dvec3(m * glm::dvec4(p, 1.0)); }
+
+TEST(TemporalReprojection, GroundTransformMapsTheSameWorldPointBetweenCameras) {
+  const ViewRequest prev = view_at(47.45, 8.56, 1800.0, 250.0, 3.0, 1.0, 1000.0);
+  const ViewRequest cur = view_at(47.4503, 8.5592, 1795.0, 250.1, 3.0, 1.5, 1000.0 + 1.0 / 30.0);
+  const Reprojection r = make_reprojection(prev, cur, weather::Weather{}, WindAnchor{prev.position, prev.unix_time_s});
+  for (const glm::dvec3 p : {glm::dvec3(100.0, 2000.0, -50.0), glm::dvec3(-30000.0, 80000.0, 1500.0)}) {
+    const glm::dvec3 world = to_ecef(cur, p);
+    const glm::dvec3 expected = glm::transpose(geo::enu_to_ecef(prev.position.lat_deg, prev.position.lon_deg)) *
+                                (world - geo::geodetic_to_ecef(prev.position));
+    const glm::dvec3 got = apply(r.transform[kGroundTransform], p);
+    EXPECT_LT(glm::length(got - expected), 1e-6) << p.x;
+  }
+  EXPECT_NEAR(glm::length(r.prev_axes.forward - geo::body_axes_enu(prev.attitude).forward), 0.0, 1e-15);
+}
+
+TEST(TemporalReprojection, LayerTransformFollowsTheWind) {
+  weather::Weather w;
+  weather::CloudLayer l;
+  l.wind = {30.0, -10.0};
+  w.layers.push_back(l);
+  const ViewRequest prev = view_at(47.45, 8.56, 1000.0, 0.0, 0.0, 0.0, 5000.0);
+  const ViewRequest cur = view_at(47.45, 8.56, 1000.0, 0.0, 0.0, 0.0, 5002.0);  // 2 s later, same camera
+  const WindAnchor anchor{prev.position, 4000.0};
+  const Reprojection r = make_reprojection(prev, cur, w, anchor);
+  // Material now 5 km north of the camera sat 2 s of wind upwind: (-60, +20) m in ENU.
+  const glm::dvec3 p(0.0, 5000.0, 500.0);
+  const glm::dvec3 was = apply(r.transform[0], p);
+  EXPECT_NEAR(was.x - p.x, -60.0, 0.05);
+  EXPECT_NEAR(was.y - p.y, 20.0, 0.05);
+  EXPECT_NEAR(was.z - p.z, 0.0, 0.2);  // the field turns about the centre of the Earth
+  // The density field agrees: sampling it at the earlier time at `was` equals now at p.
+  const glm::dmat3 rot_prev = wind_rotation(l.wind, anchor, prev.unix_time_s);
+  const glm::dmat3 rot_cur = wind_rotation(l.wind, anchor, cur.unix_time_s);
+  const glm::dvec3 field_then = rot_prev * to_ecef(prev, was), field_now = rot_cur * to_ecef(cur, p);
+  EXPECT_LT(glm::length(field_then - field_now), 1e-6);
+  // the ground does not move
+  EXPECT_LT(glm::length(apply(r.transform[kGroundTransform], p) - p), 1e-6);
+}
+
+TEST(TemporalReprojection, DitherOrderVisitsEveryPixelOncePerCycle) {
+  for (int stride : {2, 4}) {
+    std::set<std::pair<int, int>> seen;
+    for (std::uint32_t f = 0; f < static_cast<std::uint32_t>(stride * stride); ++f) {
+      const glm::ivec2 o = fresh_pixel_offset(stride, f + 1000u * static_cast<std::uint32_t>(stride * stride));
+      EXPECT_TRUE(o.x >= 0 && o.x < stride && o.y >= 0 && o.y < stride);
+      seen.insert({o.x, o.y});
+    }
+    EXPECT_EQ(seen.size(), static_cast<size_t>(stride * stride));
+  }
+  EXPECT_EQ(fresh_pixel_offset(1, 7), glm::ivec2(0, 0));
+}
+
+TEST(TemporalReprojection, HistoryRules) {
+  const ViewRequest a = view_at(47.45, 8.56, 1000.0, 0.0, 0.0, 0.0, 100.0);
+  RenderQuality q;
+  q.temporal_reuse = true;
+  q.temporal_stride = 4;
+  ViewRequest b = a;
+  b.unix_time_s += 1.0 / 30.0;
+  b.position.lat_deg += 0.0001;  // 11 m
+  EXPECT_TRUE(history_usable(a, q, b, q));
+  ViewRequest t = b;
+  t.reset_history = true;
+  EXPECT_FALSE(history_usable(a, q, t, q));
+  ViewRequest far = b;
+  far.position.lat_deg += 0.05;  // 5.6 km
+  EXPECT_FALSE(history_usable(a, q, far, q));
+  ViewRequest late = b;
+  late.unix_time_s += 11.0;
+  EXPECT_FALSE(history_usable(a, q, late, q));
+  ViewRequest earlier = b;
+  earlier.unix_time_s = a.unix_time_s - 0.01;
+  EXPECT_FALSE(history_usable(a, q, earlier, q));
+  RenderQuality q2 = q;
+  q2.primary_steps = 32;
+  EXPECT_FALSE(history_usable(a, q, b, q2));
+  ViewRequest zoom = b;
+  zoom.fov_deg = 30.0;
+  EXPECT_FALSE(history_usable(a, q, zoom, q));
+  RenderQuality off = q;
+  off.temporal_reuse = false;
+  EXPECT_FALSE(history_usable(a, off, b, off));
+  EXPECT_TRUE(camera_still(a, a));
+  EXPECT_FALSE(camera_still(a, b));
+}
+
+}  // namespace
+}  // namespace cloudsvc

@@ -73,7 +73,7 @@ int main(int argc, char** argv) {
     for (const Size& s : sizes) {
       cloudsvc::ViewRequest v;
       v.position = {47.45, 8.56, alt};
-      v.attitude = {135.0, 10.0, 0.0};
+      v.attitude = {135.0, alt > 1000.0 ? 40.0 : 10.0, 0.0};  // above the deck: the whole view above the horizon
       v.unix_time_s = *cloudsvc::geo::parse_utc_iso8601("2026-06-21T14:00:00Z");
       v.fov_deg = 75.0;
       v.width = s.w;

@@ -61,8 +61,8 @@ int main(int argc, char** argv) {
   cloudsvc::gl::EglContext context;
   cloudsvc::CloudRenderer renderer;
   std::printf("# render_bench on %s, quality %s\n\n", context.description().c_str(), quality_name.c_str());
-  std::printf("| preset | size | median ms | min ms | density evals/px | cloud px %% |\n");
-  std::printf("|---|---|---:|---:|---:|---:|\n");
+  std::printf("| preset | size | median ms | min ms | density evals/px | cloud px %% | march | resolve | composite | other |\n");
+  std::printf("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   // every preset from the standard view, then above the overcast deck looking up (no ray
   // meets a layer: no cloud march at all)
   std::vector<std::pair<std::string, double>> rows;
@@ -80,18 +80,27 @@ int main(int argc, char** argv) {
       v.height = s.h;
       std::vector<double> ms;
       double evals = 0.0, cloud = 0.0;
+      std::vector<double> march, resolve, composite, other;  // per-pass ms of the timed frames
       for (int i = 0; i < frames; ++i) {
         v.frame_index = static_cast<std::uint32_t>(i);
         v.reset_history = i == 0;
         const cloudsvc::FrameImage img = renderer.render(v, *quality);
-        if (i > 0) ms.push_back(img.stats.render_ms);
+        if (i > 0) {
+          const cloudsvc::FrameStats& st = img.stats;
+          ms.push_back(st.render_ms);
+          march.push_back(st.march_ms);
+          resolve.push_back(st.resolve_ms);
+          composite.push_back(st.composite_ms);
+          other.push_back(st.render_ms - st.march_ms - st.resolve_ms - st.composite_ms);
+        }
         evals = img.stats.density_evals_per_pixel;
         cloud = 100.0 * static_cast<double>(img.stats.cloud_pixels) / (double(s.w) * s.h);
       }
       std::sort(ms.begin(), ms.end());
+      auto med = [](std::vector<double> v) { std::sort(v.begin(), v.end()); return v[v.size() / 2]; };
       const std::string label = alt > 1000.0 ? name + " (above it, looking up)" : name;
-      std::printf("| %s | %dx%d | %.1f | %.1f | %.1f | %.1f |\n", label.c_str(), s.w, s.h, ms[ms.size() / 2], ms.front(),
-                  evals, cloud);
+      std::printf("| %s | %dx%d | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f |\n", label.c_str(), s.w, s.h,
+                  ms[ms.size() / 2], ms.front(), evals, cloud, med(march), med(resolve), med(composite), med(other));
       std::fflush(stdout);
     }
   }

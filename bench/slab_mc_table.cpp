@@ -12,7 +12,9 @@
 //   build-mc/bin/slab_mc_table [--scale 1] [--threads 2] [--seed 1]
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -78,6 +80,16 @@ int main(int argc, char** argv) {
   app.add_option("--seed", seed, "random seed");
   app.add_option("--tau", taus, "optical depths")->check(CLI::Range(0.01, 1000.0));
   app.add_option("--sun", suns, "sun zenith angles, degrees")->check(CLI::Range(0.0, 85.0));
+  int octaves = cloudsvc::RenderQuality{}.ms_octaves;
+  const SlabRendererModelOptions shader_model;
+  bool p1 = shader_model.p1_diffuse, eddington = shader_model.eddington_beam;
+  double mean_cosine = shader_model.mean_cosine, delta_f = shader_model.delta_f, sun_tau_scale = 1.0;
+  app.add_option("--octaves", octaves, "renderer model: sun octaves (light-model experiments)")->check(CLI::Range(1, 8));
+  app.add_option("--p1", p1, "renderer model: P1 (diffusion) in-scatter of the diffuse field (1/0)");
+  app.add_option("--delta-f", delta_f, "renderer model: delta-scaling forward fraction")->check(CLI::Range(0.0, 0.99));
+  app.add_option("--sun-tau-scale", sun_tau_scale, "renderer model: sun optical-depth scale")->check(CLI::Range(0.01, 1.0));
+  app.add_option("--eddington", eddington, "renderer model: Eddington beam transmittance (1/0)");
+  app.add_option("--mean-cosine", mean_cosine, "renderer model: two-stream mean cosine")->check(CLI::Range(0.0, 0.99));
   CLI11_PARSE(app, argc, argv);
 
   const auto t0 = std::chrono::steady_clock::now();
@@ -85,7 +97,8 @@ int main(int argc, char** argv) {
   std::printf("## Slab multiple scattering: renderer model vs Monte Carlo\n\n");
   std::printf("Homogeneous conservative slab, JdD phase for d = %g um (mean cosine %.4f), sigma_t = %.4g 1/m "
               "(N0 = 300 cm^-3, Q_ext = 2), black ground, no atmosphere, E_sun = 1. Renderer model: "
-              "3 octaves (a, b, c) = (0.4, 0.5, 0.6), two-stream diffuse term (g = 0.86), light march capped at "
+              "sun single scattering (--octaves), delta-Eddington two-stream diffuse term in the P1 form (g = 0.86, "
+              "f = g^2; --p1 0 --eddington 0 --delta-f 0 --octaves 3 = the earlier model), light march capped at "
               "4 km; converged = 4096 primary steps, 64 steps = shader default (jitter-averaged). "
               "err = (model - MC) / MC. View 60 in the solar plane, observer looking away from / towards the sun.\n",
               d_um, jdd_mean_cosine(jdd_params(d_um)), cloud_extinction_per_m(d_um));
@@ -93,6 +106,14 @@ int main(int argc, char** argv) {
   SlabRendererModelOptions converged = converged_renderer_model_options();
   SlabRendererModelOptions shader64;  // RenderQuality defaults, 1 m step floor
   shader64.jitter_samples = 16;
+  for (SlabRendererModelOptions* m : {&converged, &shader64}) {
+    m->ms_octaves = octaves;
+    m->p1_diffuse = p1;
+    m->eddington_beam = eddington;
+    m->delta_f = delta_f;
+    m->sun_tau_scale = sun_tau_scale;
+    m->mean_cosine = mean_cosine;
+  }
 
   std::vector<Row> rows;
   double mc_seconds = 0.0;
@@ -129,6 +150,24 @@ int main(int argc, char** argv) {
                 r.mc.transmitted_diffuse.mean, r.mc.reflected_plus_transmitted.mean);
   print_table(rows, true);
   print_table(rows, false);
+  // One number per side for comparing light models: the geometric-mean factor between the
+  // converged model and the MC, exp(mean |ln(model / MC)|), and the worst factor.
+  for (bool top : {true, false}) {
+    double sum = 0.0, worst = 0.0;
+    int n = 0;
+    for (const Row& r : rows)
+      for (size_t k = 0; k < std::size(kViews); ++k) {
+        const double mc = top ? r.mc.radiance_top[k].mean : r.mc.radiance_bottom[k].mean;
+        const double m = top ? r.model_top[k] : r.model_bottom[k];
+        if (!(mc > 0.0) || !(m > 0.0)) continue;
+        const double e = std::fabs(std::log(m / mc));
+        sum += e;
+        worst = std::max(worst, e);
+        ++n;
+      }
+    std::printf("\n%s: model/MC factor, geometric mean %.2f, worst %.2f (%d cases)\n",
+                top ? "Reflected" : "Transmitted", std::exp(sum / std::max(n, 1)), std::exp(worst), n);
+  }
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::printf("\nMonte Carlo %.0f s, total %.0f s (%d threads, scale %g, seed %llu).\n", mc_seconds, total, threads,
               scale, static_cast<unsigned long long>(seed));

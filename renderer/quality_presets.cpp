@@ -31,14 +31,14 @@ RenderQuality reuse(RenderQuality q, int stride) {
 }
 
 RenderQuality naive() {
-  RenderQuality q = march(64, 6, 3, 0.0);
+  RenderQuality q = march(64, 6, 1, 0.0);
   q.long_step_factor = 1;
   q.ground_shadow_map = false;
   return q;
 }
 
 RenderQuality low() {
-  RenderQuality q = reuse(march(64, 6, 3, 1000.0), 4);
+  RenderQuality q = reuse(march(64, 6, 1, 1000.0), 4);
   q.long_step_factor = 4;
   q.level_of_detail = true;
   q.cloud_resolution_divisor = 2;
@@ -54,9 +54,9 @@ const std::vector<Named>& presets() {
   static const std::vector<Named> p = {
       {"naive", naive()},
       {"low", low()},
-      {"medium", reuse(march(64, 4, 3, 1000.0), 4)},
-      {"high", reuse(march(96, 8, 3, 1000.0), 2)},
-      {"ultra", reuse(march(192, 12, 3, 1000.0), 1)},
+      {"medium", reuse(march(64, 4, 1, 1000.0), 4)},
+      {"high", reuse(march(96, 8, 1, 1000.0), 2)},
+      {"ultra", reuse(march(192, 12, 1, 1000.0), 1)},
       {"default", reuse(RenderQuality{}, 4)},
   };
   return p;

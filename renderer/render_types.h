@@ -25,7 +25,10 @@ struct ViewRequest {
 struct RenderQuality {
   int primary_steps = 64;       // steps along the view ray through all layer intervals
   int light_steps = 6;          // steps of the secondary march towards the sun
-  int ms_octaves = 3;           // Wrenninge multiple-scattering octaves (1 = single scattering)
+  // Wrenninge octaves of the sun term: 1 = single scattering, the rest of the multiple
+  // scattering comes from the delta-Eddington diffuse term (shaders/cloud_lighting.glsl);
+  // more octaves add energy the diffuse term already carries (docs/ACCURACY.md, Monte Carlo).
+  int ms_octaves = 1;
   int ground_shadow_steps = 8;  // steps per layer of the ground-to-sun shadow march
   double ms_a = 0.4;            // extinction scale per octave (a <= b for energy conservation)
   double ms_b = 0.5;            // energy scale per octave

@@ -5,10 +5,24 @@
 
 const float LIGHT_MAX_DIST = 4000.0;  // m, longest light march
 const float MEAN_COSINE = 0.86;       // droplet phase mean cosine used for diffuse transfer
+// delta-scaling (Joseph, Wiscombe & Weinman 1976): the forward peak, a fraction g^2 of the
+// scattering, is counted as unscattered light in the two-stream fluxes
+const float DELTA_F = MEAN_COSINE * MEAN_COSINE;
 
-// Diffuse transmittance of a conservative slab of optical depth tau (two-stream,
-// Bohren 1987 "Multiple scattering of light and some of its observable consequences").
+// Diffuse transmittance of a conservative slab of optical depth tau lit by diffuse light
+// (two-stream, Bohren 1987 "Multiple scattering of light and some of its observable
+// consequences"); delta-scaling leaves (1 - g) tau unchanged.
 float slab_diffuse_transmittance(float tau) { return 1.0 / (1.0 + 0.75 * (1.0 - MEAN_COSINE) * tau); }
+
+// Total (direct + diffuse) transmittance of a conservative slab of optical depth tau for
+// a collimated beam at zenith cosine mu0 > 0: the delta-Eddington solution
+//   T = [(1/2 + 3/4 mu0) + (1/2 - 3/4 mu0) e^{-tau'/mu0}] / (1 + 3/4 (1 - g) tau),
+// tau' = (1 - g^2) tau; the direct part is e^{-tau'/mu0}. Equal to the diffuse form at
+// mu0 = 2/3, and 1 at tau = 0.
+float slab_beam_transmittance(float tau, float mu0) {
+  float direct = exp(-(1.0 - DELTA_F) * tau / mu0);
+  return ((0.5 + 0.75 * mu0) + (0.5 - 0.75 * mu0) * direct) / (1.0 + 0.75 * (1.0 - MEAN_COSINE) * tau);
+}
 
 // Optical depth from point p (altitude alt) towards the sun inside layer li, in n steps
 // spaced quadratically (fine near the sample, coarse far away).
@@ -48,19 +62,22 @@ float layer_shadow_optical_depth(int li, vec3 p, float ground_alt, vec3 sun, flo
   return tau;
 }
 
-// Diffuse in-scattered radiance (per unit scattering) at altitude alt inside layer L, from
-// two-stream slab theory for conservative scattering (Bohren 1987): with vertical optical
-// depths tau_a above and tau_b below the point, estimated from the layer's nominal
-// extinction and the local coverage,
-//   T(tau) = 1 / (1 + 3/4 (1 - g) tau),   R(tau) = 1 - T(tau),
-//   F_down = F_sun (T(tau_a) - e^{-tau_a / mu_s}) + E_sky T(tau_a)      (diffuse only)
-//   F_up   = (F_sun + E_sky) T(tau_a) R(tau_b) + E_ground T(tau_b)
-// Each flux is taken as isotropic over its hemisphere (radiance F / pi), so the
-// in-scatter averaged over directions is (F_down + F_up) / (2 pi). This supplies the
-// light that the few octaves of the sun march cannot carry deep into a cloud or back
-// out of its top.
+// Diffuse in-scattered radiance (per unit scattering) at altitude alt inside layer L: the
+// light scattered more than once, from delta-Eddington two-stream fluxes of conservative
+// scattering. With vertical optical depths tau_a above and tau_b below the point,
+// estimated from the layer's nominal extinction and the local coverage:
+//   F_down = F_sun (T_beam(tau_a, mu_s) - e^{-tau_a'/mu_s}) + E_sky T(tau_a)   (diffuse only)
+//   F_up   = (F_sun T_beam(tau_a, mu_s) + E_sky T(tau_a)) R(tau_b) + E_ground T(tau_b)
+// with T the diffuse and T_beam the beam transmittance above, R = 1 - T. The radiance
+// field is taken in the P1 (diffusion) form I = (Phi + 3 F . w) / (4 pi), fluence
+// Phi = 2 (F_down + F_up), net flux F = (F_up - F_down) up, so the in-scatter into the
+// direction w towards the camera (w_up = w . up) is
+//   J = (Phi + 3 g (F_up - F_down) w_up) / (4 pi)   (>= 0)
+// brighter looking up into a cloud than down onto it, as transport gives. The sun term of
+// the march is single scattering only (one octave); this term carries the rest.
+// Checked against Monte Carlo in renderer/model/slab_renderer_model.h (docs/ACCURACY.md).
 vec3 diffuse_inscatter(CloudLayerGpu L, float alt, float mu_s, vec3 T_atm, float coverage, vec3 E_sun,
-                       float ground_alt) {
+                       float ground_alt, float w_up) {
   float sigma_nominal = L.optics.x * L.altitude.w * coverage;
   float tau_a = sigma_nominal * max(L.altitude.y - alt, 0.0);
   float tau_b = sigma_nominal * max(alt - L.altitude.x, 0.0);
@@ -70,8 +87,11 @@ vec3 diffuse_inscatter(CloudLayerGpu L, float alt, float mu_s, vec3 T_atm, float
   vec3 E_sky = E_sun * sky_irradiance(alt, mu_s);
   vec3 E_ground = U.ground_albedo.rgb * E_sun *
                   (transmittance_to_space(ground_alt, mu_s) * mu_pos + sky_irradiance(ground_alt, mu_s));
-  float direct_a = mu_pos > 0.0 ? exp(-tau_a / max(mu_pos, 0.05)) : 0.0;
-  vec3 F_down = F_sun * max(Ta - direct_a, 0.0) + E_sky * Ta;
-  vec3 F_up = (F_sun + E_sky) * Ta * (1.0 - Tb) + E_ground * Tb;
-  return (F_down + F_up) / (2.0 * PI);
+  float mu0 = max(mu_pos, 0.05);
+  float direct_a = mu_pos > 0.0 ? exp(-(1.0 - DELTA_F) * tau_a / mu0) : 0.0;
+  float T_beam = mu_pos > 0.0 ? slab_beam_transmittance(tau_a, mu0) : 0.0;
+  vec3 F_down = F_sun * max(T_beam - direct_a, 0.0) + E_sky * Ta;
+  vec3 F_up = (F_sun * T_beam + E_sky * Ta) * (1.0 - Tb) + E_ground * Tb;
+  vec3 J = (2.0 * (F_down + F_up) + 3.0 * MEAN_COSINE * (F_up - F_down) * w_up) / (4.0 * PI);
+  return max(J, vec3(0.0));
 }

@@ -126,7 +126,8 @@ void main() {
         vec3 up = up_at(p, R, h);
         float mu_s = dot(up, sun);
         vec3 T_atm = transmittance_to_space(alt, mu_s);
-        // direct sun: Wrenninge octaves over the light-march optical depth
+        // direct sun: single scattering (Wrenninge octaves if more than one) over the
+        // light-march optical depth
         vec3 L_sun = vec3(0.0);
         if (max(T_atm.r, max(T_atm.g, T_atm.b)) > 0.0) {
           float tau = light_optical_depth(li, p, alt, sun, mu_s, light_steps_at(t, L));
@@ -137,7 +138,7 @@ void main() {
           }
           L_sun = E_sun * T_atm * s_sum;
         }
-        vec3 L_diffuse = diffuse_inscatter(L, alt, mu_s, T_atm, coverage, E_sun, ground_alt);
+        vec3 L_diffuse = diffuse_inscatter(L, alt, mu_s, T_atm, coverage, E_sun, ground_alt, -dot(dir, up));
         float absorbed = one_minus_exp_neg(sigma * dt);  // albedo 1: scattered fraction
         C += T * absorbed * (L_sun + L_diffuse);
         depth_acc += t * T * absorbed;

@@ -118,9 +118,11 @@ void main() {
     else if (SM.params.w != 0.0 && mu_s > 0.0)
       for (int li = 0; li < U.counts.x; ++li)
         tau += layer_shadow_optical_depth(li, p, ground_alt, sun, mu_s, int(U.quality.w));
-    float direct = exp(-tau);
-    float diffuse = slab_diffuse_transmittance(tau * max(mu_s, 0.0));
-    vec3 E = E_sun * (T_atm * max(mu_s, 0.0) * max(direct, diffuse) + sky_irradiance(ground_alt, mu_s) * diffuse);
+    // sun through the clouds: the delta-Eddington beam transmittance of their vertical
+    // optical depth (direct + forward-scattered + diffuse); sky light: the diffuse one
+    float tau_v = tau * max(mu_s, 0.0);
+    float sun_through = mu_s > 0.0 ? slab_beam_transmittance(tau_v, max(mu_s, 0.05)) : 0.0;
+    vec3 E = E_sun * (T_atm * max(mu_s, 0.0) * sun_through + sky_irradiance(ground_alt, mu_s) * slab_diffuse_transmittance(tau_v));
     vec3 L_ground = U.ground_albedo.rgb / PI * E;
     vec3 ap_in, ap_T;
     aerial_perspective(ndc, t_ground, ap_in, ap_T);

@@ -200,14 +200,30 @@ TEST(ReferenceClouds, TwoStreamDiffuseByHand) {
   const double F_sun = 2.0 * 0.8 * 0.5;
   const double E_sky = 2.0 * 0.1;
   const double E_ground = 0.1 * 2.0 * (0.7 * 0.5 + 0.12);
-  const double direct = std::exp(-10.0 / 0.5);
-  const double F_down = F_sun * (T - direct) + E_sky * T;
-  const double F_up = (F_sun + E_sky) * T * (1.0 - T) + E_ground * T;
-  const glm::dvec3 got = two_stream_diffuse(L, alt, mu_s, coverage, e_sun, t_atm, e_sky, t_ground, e_sky_ground, albedo);
-  EXPECT_NEAR(got.g, (F_down + F_up) / (2.0 * kPi), 1e-12);
-  // Sun below the horizon: no direct term, sky light only.
+  // delta-Eddington beam, f = 0.86^2: direct e^{-(1 - f) 10 / 0.5}, total
+  // [(0.5 + 0.375) + (0.5 - 0.375) direct] T
+  const double direct = std::exp(-(1.0 - 0.86 * 0.86) * 10.0 / 0.5);
+  const double T_beam = (0.875 + 0.125 * direct) * T;
+  EXPECT_NEAR(slab_beam_transmittance(10.0, 0.5), T_beam, 1e-12);
+  EXPECT_NEAR(slab_beam_transmittance(0.0, 0.3), 1.0, 1e-12);           // nothing in the way
+  EXPECT_NEAR(slab_beam_transmittance(7.0, 2.0 / 3.0) / slab_diffuse_transmittance(7.0), 1.0, 1e-12);  // mu0 = 2/3
+  const double F_down = F_sun * (T_beam - direct) + E_sky * T;
+  const double F_up = (F_sun * T_beam + E_sky * T) * (1.0 - T) + E_ground * T;
+  // P1 in-scatter: looking up into the cloud (light travelling down, w_up = -1) is brighter
+  // than looking down onto it, by 3 g (F_down - F_up) / (2 pi) in total.
+  const double w_up = -0.6;
+  const glm::dvec3 got =
+      two_stream_diffuse(L, alt, mu_s, coverage, e_sun, t_atm, e_sky, t_ground, e_sky_ground, albedo, w_up);
+  EXPECT_NEAR(got.g, (2.0 * (F_down + F_up) + 3.0 * 0.86 * (F_up - F_down) * w_up) / (4.0 * kPi), 1e-12);
+  const glm::dvec3 from_below =
+      two_stream_diffuse(L, alt, mu_s, coverage, e_sun, t_atm, e_sky, t_ground, e_sky_ground, albedo, -1.0);
+  const glm::dvec3 from_above =
+      two_stream_diffuse(L, alt, mu_s, coverage, e_sun, t_atm, e_sky, t_ground, e_sky_ground, albedo, 1.0);
+  EXPECT_GT(from_below.g, from_above.g);
+  EXPECT_GE(from_above.g, 0.0);
+  // Sun below the horizon: no direct term, sky light only (isotropic view, w_up = 0).
   const glm::dvec3 night = two_stream_diffuse(L, alt, -0.1, coverage, e_sun, glm::dvec3(0.0), e_sky, glm::dvec3(0.0),
-                                              e_sky_ground, albedo);
+                                              e_sky_ground, albedo, 0.0);
   EXPECT_NEAR(night.r, (E_sky * T + E_sky * T * (1.0 - T) + 0.1 * 2.0 * 0.12 * T) / (2.0 * kPi), 1e-12);
 }
 

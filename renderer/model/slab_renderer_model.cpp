@@ -74,7 +74,7 @@ double slab_light_optical_depth(const SlabSpec& slab, double z, const SlabRender
 
 // diffuse_inscatter (scene.comp:110-125) with T_atm = 1, coverage 1, density scale 1,
 // E_sun = 1, E_sky = 0 (sky_irradiance), ground albedo 0 (E_ground = 0).
-double slab_diffuse_inscatter(const SlabSpec& slab, double z, const SlabRendererModelOptions& o) {
+double slab_diffuse_inscatter(const SlabSpec& slab, double z, const SlabRendererModelOptions& o, double view_up_z) {
   const double sigma_nominal = slab.sigma_t_per_m * 1.0 * 1.0;           // :112
   const double tau_a = sigma_nominal * std::max(slab.thickness_m - z, 0.0);  // :113
   const double tau_b = sigma_nominal * std::max(z - 0.0, 0.0);            // :114
@@ -85,9 +85,19 @@ double slab_diffuse_inscatter(const SlabSpec& slab, double z, const SlabRenderer
   const double F_sun = 1.0 * 1.0 * mu_pos;                                // :117 E_sun T_atm mu
   const double E_sky = 0.0;                                               // :118
   const double E_ground = 0.0;                                            // :119-120 albedo 0
-  const double direct_a = mu_pos > 0.0 ? std::exp(-tau_a / std::max(mu_pos, 0.05)) : 0.0;  // :121
-  const double F_down = F_sun * std::max(Ta - direct_a, 0.0) + E_sky * Ta;  // :122
-  const double F_up = (F_sun + E_sky) * Ta * (1.0 - Tb) + E_ground * Tb;    // :123
+  const double direct_a = mu_pos > 0.0 ? std::exp(-(1.0 - o.delta_f) * tau_a / std::max(mu_pos, 0.05)) : 0.0;  // :121
+  const double T_beam = o.eddington_beam && mu_pos > 0.0
+                            ? ((0.5 + 0.75 * mu_pos) + (0.5 - 0.75 * mu_pos) * direct_a) /
+                                  (1.0 + 0.75 * (1.0 - o.mean_cosine) * tau_a)
+                            : Ta;
+  const double F_down = F_sun * std::max(T_beam - direct_a, 0.0) + E_sky * Ta;  // :122
+  const double F_up = (F_sun * T_beam + E_sky * Ta) * (1.0 - Tb) + E_ground * Tb;    // :123
+  if (o.p1_diffuse) {
+    // fluence 2 (F_down + F_up), net upward flux F_up - F_down; in-scatter of the diffuse
+    // field into direction w (z component view_up_z) with the droplet phase's mean cosine
+    const double J = (2.0 * (F_down + F_up) + 3.0 * o.mean_cosine * (F_up - F_down) * view_up_z) / (4.0 * kPi);
+    return std::max(J, 0.0);
+  }
   return (F_down + F_up) / (2.0 * kPi);                                   // :124
 }
 
@@ -121,7 +131,7 @@ SlabRendererModelResult slab_renderer_model_radiance(const SlabSpec& slab, const
       const double sigma = slab_extinction(slab, z);        // :191
       if (sigma <= 0.0) continue;                           // :192
       // :197-206 direct sun, Wrenninge octaves over the light-march optical depth.
-      const double tau = slab_light_optical_depth(slab, z, o);  // :199
+      const double tau = o.sun_tau_scale * slab_light_optical_depth(slab, z, o);  // :199
       double s_sum = 0.0, a = 1.0, b = 1.0, c = 1.0;
       for (int oc = 0; oc < o.ms_octaves; ++oc) {  // :201-204
         s_sum += b * octave_phase(cos_view_sun, phase, c) * std::exp(-a * tau);
@@ -130,7 +140,7 @@ SlabRendererModelResult slab_renderer_model_radiance(const SlabSpec& slab, const
         c *= o.ms_c;
       }
       const double L_sun = 1.0 * 1.0 * s_sum;  // :205 E_sun T_atm s_sum
-      const double L_diffuse = o.diffuse ? slab_diffuse_inscatter(slab, z, o) : 0.0;  // :207
+      const double L_diffuse = o.diffuse ? slab_diffuse_inscatter(slab, z, o, -dir.z) : 0.0;  // :207
       const double absorbed = one_minus_exp_neg(sigma * dt);  // :208
       C_sun += T * absorbed * L_sun;                          // :209
       C_diff += T * absorbed * L_diffuse;

@@ -32,6 +32,21 @@ struct SlabRendererModelOptions {
   double light_max_dist_m = 4000.0;                   // scene.comp:27
   bool diffuse = true;                                // scene.comp:207, diffuse_inscatter
   double mean_cosine = 0.86;                          // scene.comp:28, MEAN_COSINE
+  // The diffuse field's in-scatter in the P1 (diffusion) approximation,
+  // (Phi + 3 g F_net . w) / (4 pi) (cloud_lighting.glsl); false: isotropic hemispheres (the
+  // model before the Monte Carlo comparison).
+  bool p1_diffuse = true;
+  // The Eddington conservative-slab transmittance of the sun's beam at depth
+  // tau, [(1/2 + 3/4 mu0) + (1/2 - 3/4 mu0) e^(-tau/mu0)] / (1 + 3/4 (1 - g) tau), instead of
+  // the diffuse-incidence form 1 / (1 + 3/4 (1 - g) tau) (equal at mu0 = 2/3).
+  bool eddington_beam = true;
+  // Delta-scaling (Joseph, Wiscombe, Weinman 1976): a fraction f of the
+  // scattering (the forward peak) is counted as unscattered, so the beam that feeds the
+  // diffuse field decays with (1 - f) tau; 0 = off.
+  double delta_f = 0.86 * 0.86;  // scene: DELTA_F = MEAN_COSINE^2
+  // Experiment: the sun term's light-march optical depth scaled by this (1 = exact single
+  // scattering, the shader; 1 - f = the delta-scaled beam).
+  double sun_tau_scale = 1.0;
   double cloud_t_eps = 1e-3;                          // scene.comp:26, early exit
   // The shader jitters the sample within each step per pixel (scene.comp:178,187). The
   // model averages over jitter_samples stratified jitters (j + 0.5) / n, i.e. the
@@ -59,6 +74,9 @@ SlabRendererModelResult slab_renderer_model_radiance(const SlabSpec& slab, const
 // the slab top towards a sun with cosine mu_s (scene.comp:60-78), and the diffuse
 // in-scatter per unit scattering (scene.comp:110-125) in sr^-1.
 double slab_light_optical_depth(const SlabSpec& slab, double z, const SlabRendererModelOptions& options);
-double slab_diffuse_inscatter(const SlabSpec& slab, double z, const SlabRendererModelOptions& options);
+// view_up_z: z component of the direction the in-scattered light travels (towards the
+// camera); only the P1 variant depends on it.
+double slab_diffuse_inscatter(const SlabSpec& slab, double z, const SlabRendererModelOptions& options,
+                              double view_up_z = 0.0);
 
 }  // namespace cloudsvc::model

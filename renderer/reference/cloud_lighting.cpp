@@ -81,10 +81,17 @@ double octave_phase_sum(const model::JdDParams& phase, double cos_view_sun, doub
 
 double slab_diffuse_transmittance(double tau) { return 1.0 / (1.0 + 0.75 * (1.0 - kTwoStreamMeanCosine) * tau); }
 
+double slab_beam_transmittance(double tau, double mu0) {
+  const double f = kTwoStreamMeanCosine * kTwoStreamMeanCosine;
+  const double direct = std::exp(-(1.0 - f) * tau / mu0);
+  return ((0.5 + 0.75 * mu0) + (0.5 - 0.75 * mu0) * direct) / (1.0 + 0.75 * (1.0 - kTwoStreamMeanCosine) * tau);
+}
+
 glm::dvec3 two_stream_diffuse(const ReferenceLayer& L, double alt, double mu_s, double coverage,
                               const glm::dvec3& e_sun, const glm::dvec3& t_atm, const glm::dvec3& e_sky_here,
                               const glm::dvec3& t_atm_ground, const glm::dvec3& e_sky_ground,
-                              const glm::dvec3& ground_albedo) {
+                              const glm::dvec3& ground_albedo, double w_up) {
+  const double g = kTwoStreamMeanCosine;
   const double sigma_nominal = L.sigma_max_per_m * L.density_scale * coverage;
   const double tau_above = sigma_nominal * std::max(L.top_m - alt, 0.0);
   const double tau_below = sigma_nominal * std::max(alt - L.base_m, 0.0);
@@ -93,10 +100,13 @@ glm::dvec3 two_stream_diffuse(const ReferenceLayer& L, double alt, double mu_s, 
   const glm::dvec3 F_sun = e_sun * t_atm * mu_pos;        // direct solar flux on a horizontal surface above the layer
   const glm::dvec3 E_sky = e_sun * e_sky_here;
   const glm::dvec3 E_ground = ground_albedo * e_sun * (t_atm_ground * mu_pos + e_sky_ground);
-  const double direct_above = mu_pos > 0.0 ? std::exp(-tau_above / std::max(mu_pos, 0.05)) : 0.0;
-  const glm::dvec3 F_down = F_sun * std::max(Ta - direct_above, 0.0) + E_sky * Ta;
-  const glm::dvec3 F_up = (F_sun + E_sky) * Ta * (1.0 - Tb) + E_ground * Tb;
-  return (F_down + F_up) / (2.0 * std::numbers::pi);
+  const double mu0 = std::max(mu_pos, 0.05);
+  const double direct_above = mu_pos > 0.0 ? std::exp(-(1.0 - g * g) * tau_above / mu0) : 0.0;
+  const double T_beam = mu_pos > 0.0 ? slab_beam_transmittance(tau_above, mu0) : 0.0;
+  const glm::dvec3 F_down = F_sun * std::max(T_beam - direct_above, 0.0) + E_sky * Ta;
+  const glm::dvec3 F_up = (F_sun * T_beam + E_sky * Ta) * (1.0 - Tb) + E_ground * Tb;
+  const glm::dvec3 J = (2.0 * (F_down + F_up) + 3.0 * g * (F_up - F_down) * w_up) / (4.0 * std::numbers::pi);
+  return glm::max(J, glm::dvec3(0.0));
 }
 
 }  // namespace cloudsvc::reference

@@ -53,16 +53,24 @@ double octave_phase_sum(const model::JdDParams& phase, double cos_view_sun, doub
 // T(tau) = 1 / (1 + 3/4 (1 - g) tau), g = kTwoStreamMeanCosine.
 double slab_diffuse_transmittance(double tau);
 
+// Delta-Eddington total transmittance of a conservative slab for a collimated beam at
+// zenith cosine mu0 > 0 (Joseph, Wiscombe & Weinman 1976, forward fraction f = g^2):
+// [(1/2 + 3/4 mu0) + (1/2 - 3/4 mu0) e^{-(1 - f) tau / mu0}] / (1 + 3/4 (1 - g) tau).
+double slab_beam_transmittance(double tau, double mu0);
+
 // Diffuse in-scattered radiance per unit scattering at altitude alt inside layer L
 // (docs/RENDERING.md): vertical optical depths above/below from the nominal extinction
-// sigma_max * density_scale * coverage, F_down = F_sun (T_a - e^{-tau_a / max(mu_s, 0.05)})^+
-// + E_sky T_a, F_up = (F_sun + E_sky) T_a (1 - T_b) + E_ground T_b, result (F_down + F_up) / 2 pi.
+// sigma_max * density_scale * coverage; with mu0 = max(mu_s, 0.05), the delta-scaled direct
+// beam D = e^{-(1 - f) tau_a / mu0} and T_beam = slab_beam_transmittance(tau_a, mu0):
+// F_down = F_sun (T_beam - D)^+ + E_sky T_a, F_up = (F_sun T_beam + E_sky T_a)(1 - T_b) +
+// E_ground T_b; in-scatter in the P1 approximation towards a direction with up-component
+// w_up: (2 (F_down + F_up) + 3 g (F_up - F_down) w_up) / (4 pi), at least 0.
 // Inputs per unit solar irradiance except e_sun: t_atm = sun transmittance at the point,
 // e_sky_here = sky irradiance at the point, t_atm_ground / e_sky_ground at ground level
 // for the same mu_s; ground_albedo rgb.
 glm::dvec3 two_stream_diffuse(const ReferenceLayer& L, double alt, double mu_s, double coverage,
                               const glm::dvec3& e_sun, const glm::dvec3& t_atm, const glm::dvec3& e_sky_here,
                               const glm::dvec3& t_atm_ground, const glm::dvec3& e_sky_ground,
-                              const glm::dvec3& ground_albedo);
+                              const glm::dvec3& ground_albedo, double w_up);
 
 }  // namespace cloudsvc::reference

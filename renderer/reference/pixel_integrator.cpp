@@ -65,7 +65,8 @@ atmo::RayInscatter PixelIntegrator::air_along_ray(const glm::dvec3& dir, double 
 }
 
 glm::dvec3 PixelIntegrator::cloud_inscatter(int li, const glm::dvec3& p, double alt, double coverage,
-                                            double cos_view_sun, std::uint64_t& evals) const {
+                                            const glm::dvec3& dir, std::uint64_t& evals) const {
+  const double cos_view_sun = glm::dot(dir, scene_.sun_local);
   const ShellFrame& s = scene_.shell;
   const ReferenceLayer& L = scene_.layers[static_cast<std::size_t>(li)];
   const glm::dvec3& sun = scene_.sun_local;
@@ -82,7 +83,8 @@ glm::dvec3 PixelIntegrator::cloud_inscatter(int li, const glm::dvec3& p, double 
   const double ground_alt = s.ground_alt_m;
   const glm::dvec3 diffuse =
       two_stream_diffuse(L, alt, mu_s, coverage, e_sun_, t_atm, tables_.sky_irradiance(alt, mu_s),
-                         sun_transmittance(ground_alt, mu_s), tables_.sky_irradiance(ground_alt, mu_s), ground_albedo_);
+                         sun_transmittance(ground_alt, mu_s), tables_.sky_irradiance(ground_alt, mu_s), ground_albedo_,
+                         -glm::dot(dir, s.up_at(p)));
   return sun_light + diffuse;
 }
 
@@ -93,7 +95,6 @@ PixelIntegrator::CloudMarch PixelIntegrator::march_clouds(const glm::dvec3& dir,
   for (std::size_t li = 0; li < scene_.layers.size(); ++li)
     layer_intervals(scene_.shell, scene_.layers[li], static_cast<int>(li), dir.z, t_limit, intervals);
   std::sort(intervals.begin(), intervals.end(), [](const Interval& a, const Interval& b) { return a.t0 < b.t0; });
-  const double cos_view_sun = glm::dot(dir, scene_.sun_local);
   for (const Interval& iv : intervals) {
     if (m.transmittance <= settings_.min_transmittance) break;
     const double step = settings_.cloud_step_m * layer_step_scale(scene_.layers[static_cast<std::size_t>(iv.layer)]);
@@ -106,7 +107,7 @@ PixelIntegrator::CloudMarch PixelIntegrator::march_clouds(const glm::dvec3& dir,
       const double alt = scene_.shell.altitude_of(p);
       const CloudSample c = field_.sample(iv.layer, p, alt, true, evals);
       if (c.sigma_t <= 0.0) continue;
-      const glm::dvec3 S = cloud_inscatter(iv.layer, p, alt, c.coverage, cos_view_sun, evals);
+      const glm::dvec3 S = cloud_inscatter(iv.layer, p, alt, c.coverage, dir, evals);
       const double scattered = -std::expm1(-c.sigma_t * dt);  // albedo 1: 1 - e^{-sigma dt}
       m.radiance += m.transmittance * scattered * S;
       m.weighted_depth += t * m.transmittance * scattered;
@@ -126,10 +127,11 @@ glm::dvec3 PixelIntegrator::ground_radiance(const glm::dvec3& dir, double t_grou
   double tau = 0.0;
   if (mu_s > 0.0 && !scene_.layers.empty())
     tau = ground_shadow_optical_depth(field_, p, s.ground_alt_m, sun, mu_s, settings_.light_step_m, evals);
-  const double direct = std::exp(-tau);
-  const double diffuse = slab_diffuse_transmittance(tau * mu_pos);
-  const glm::dvec3 E = e_sun_ * (t_atm * mu_pos * std::max(direct, diffuse) +
-                                 tables_.sky_irradiance(s.ground_alt_m, mu_s) * diffuse);
+  // sun: delta-Eddington beam transmittance of the clouds' vertical optical depth; sky: diffuse
+  const double tau_v = tau * mu_pos;
+  const double sun_through = mu_s > 0.0 ? slab_beam_transmittance(tau_v, std::max(mu_pos, 0.05)) : 0.0;
+  const glm::dvec3 E = e_sun_ * (t_atm * mu_pos * sun_through +
+                                 tables_.sky_irradiance(s.ground_alt_m, mu_s) * slab_diffuse_transmittance(tau_v));
   const glm::dvec3 L_ground = ground_albedo_ / kPi * E;
   const atmo::RayInscatter air = air_along_ray(dir, t_ground, true);
   return L_ground * air.transmittance + e_sun_ * air.radiance;

@@ -32,7 +32,7 @@ class PixelIntegrator {
     double weighted_depth = 0.0;  // sum of t * T * (1 - e^{-sigma dt}), m
   };
   CloudMarch march_clouds(const glm::dvec3& dir, double t_limit, std::uint64_t& evals) const;
-  glm::dvec3 cloud_inscatter(int li, const glm::dvec3& p, double alt, double coverage, double cos_view_sun,
+  glm::dvec3 cloud_inscatter(int li, const glm::dvec3& p, double alt, double coverage, const glm::dvec3& dir,
                              std::uint64_t& evals) const;
   glm::dvec3 ground_radiance(const glm::dvec3& dir, double t_ground, std::uint64_t& evals) const;
   glm::dvec3 sky_radiance(const glm::dvec3& dir) const;

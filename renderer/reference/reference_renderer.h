@@ -36,7 +36,7 @@ struct ReferenceSettings {
   double light_cutoff = 1e-4;        // light march stops once every octave's e^{-a^i tau} < this (relative
                                      // to the unshadowed sun term of the sample)
   // Model parameters: RenderQuality's defaults (the GPU's model)
-  int ms_octaves = 3;                // Wrenninge octaves
+  int ms_octaves = 1;                // Wrenninge octaves (1: single scattering + the delta-Eddington diffuse term)
   double ms_a = 0.4, ms_b = 0.5, ms_c = 0.6;
   // Atmosphere
   double atmosphere_step_m = 500.0;  // base step of the per-pixel atmosphere integrations (atmo::altitude_step):

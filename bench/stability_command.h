@@ -12,11 +12,13 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "bench/stability_sweep.h"
 #include "renderer/gl/egl_context.h"
+#include "renderer/quality_presets.h"
 
 namespace cloudsvc::stability_command {
 
@@ -35,7 +37,15 @@ inline int run(int argc, char** argv) {
   app.add_option("--size", size, "frame size WxH");
   app.add_option("--seed", seed, "pose generator seed");
   app.add_option("--list", max_listed, "failures listed in full");
+  std::string quality_name = "default";
+  app.add_option("--quality", quality_name, "quality preset of the renders (temporal reuse off: single frames)");
   CLI11_PARSE(app, argc, argv);
+  std::optional<RenderQuality> quality = quality_preset(quality_name);
+  if (!quality) {
+    std::fprintf(stderr, "cloudbench --stability: unknown --quality %s\n", quality_name.c_str());
+    return 2;
+  }
+  quality->temporal_reuse = false;
   int w = 0, h = 0;
   if (std::sscanf(size.c_str(), "%dx%d", &w, &h) != 2 || w <= 0 || h <= 0 || w > 4096 || h > 4096) {
     std::fprintf(stderr, "--size: expected WxH, got %s\n", size.c_str());
@@ -58,7 +68,7 @@ inline int run(int argc, char** argv) {
     const int n = poses / static_cast<int>(presets.size()) + (static_cast<int>(p) < poses % static_cast<int>(presets.size()) ? 1 : 0);
     renderer.set_weather(*weather::preset(presets[p]));
     for (const stab::Pose& pose : stab::make_poses(presets[p], n, seed * 1000 + p, w, h)) {
-      const stab::FrameCheck c = stab::check_frame(renderer, pose.view);
+      const stab::FrameCheck c = stab::check_frame(renderer, pose.view, nullptr, *quality);
       ++frames;
       bad_values += c.bad_values;
       nonfinite += c.nonfinite_stat;
@@ -84,8 +94,8 @@ inline int run(int argc, char** argv) {
   all_ok = all_ok && failed == 0;
 
   std::printf("# cloudbench_stability (`cloudbench --stability`)\n\n");
-  std::printf("Frame size %dx%d, seed %llu, %zu presets, default quality.\n\n", w, h, static_cast<unsigned long long>(seed),
-              presets.size());
+  std::printf("Frame size %dx%d, seed %llu, %zu presets, quality %s (single frames).\n\n", w, h,
+              static_cast<unsigned long long>(seed), presets.size(), quality_name.c_str());
   std::printf("## 1. Globe sweep\n\n| frames | failed | bad pixel values | stats.nonfinite_pixels | GL errors | exceptions | "
               "sun elevation range | mean ms/frame | wall s |\n|---|---|---|---|---|---|---|---|---|\n");
   std::printf("| %lld | %lld | %lld | %lld | %lld | %lld | %.2f .. %.2f deg | %.1f | %.0f |\n\n", static_cast<long long>(frames),
@@ -107,7 +117,7 @@ inline int run(int argc, char** argv) {
   std::string current;
   for (const stab::Pose& pose : sp) {
     if (pose.preset != current) { renderer.set_weather(*weather::preset(pose.preset)); current = pose.preset; }
-    for (const stab::SmoothResult& r : stab::check_smoothness(renderer, pose.view)) {
+    for (const stab::SmoothResult& r : stab::check_smoothness(renderer, pose.view, {}, *quality)) {
       ++pairs;
       sum_jitter += r.jitter.mean_rel;
       if (r.step.max_rel > worst_step) { worst_step = r.step.max_rel; worst_pose = r.what + ": " + stab::describe(pose); }

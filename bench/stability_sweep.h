@@ -145,11 +145,12 @@ inline std::int64_t count_bad(const FrameImage& img) {
   return bad;
 }
 
-inline FrameCheck check_frame(CloudRenderer& r, const ViewRequest& v, FrameImage* keep = nullptr) {
+inline FrameCheck check_frame(CloudRenderer& r, const ViewRequest& v, FrameImage* keep = nullptr,
+                              const RenderQuality& q = {}) {
   FrameCheck c;
   while (glGetError() != GL_NO_ERROR) {}
   try {
-    FrameImage img = r.render(v);
+    FrameImage img = r.render(v, q);
     c.bad_values = count_bad(img);
     c.nonfinite_stat = img.stats.nonfinite_pixels;
     c.sun_elevation_deg = img.stats.sun_elevation_deg;
@@ -230,12 +231,14 @@ inline ViewRequest translated(const ViewRequest& v, glm::dvec3 enu_m) {
 }
 
 // Renders the base pose, its jitter twin and six perturbations; one result per perturbation.
-inline std::vector<SmoothResult> check_smoothness(CloudRenderer& r, const ViewRequest& v, const SmoothLimits& lim = {}) {
+// q: the march (temporal reuse must be off: every render is a single frame).
+inline std::vector<SmoothResult> check_smoothness(CloudRenderer& r, const ViewRequest& v, const SmoothLimits& lim = {},
+                                                  const RenderQuality& q = {}) {
   FrameImage base, twin;
   std::vector<SmoothResult> out;
   ViewRequest vj = v;
   vj.frame_index = v.frame_index + 1;
-  if (!check_frame(r, v, &base).ok() || !check_frame(r, vj, &twin).ok()) {
+  if (!check_frame(r, v, &base, q).ok() || !check_frame(r, vj, &twin, q).ok()) {
     SmoothResult bad;
     bad.what = "base render failed";
     out.push_back(bad);
@@ -256,7 +259,7 @@ inline std::vector<SmoothResult> check_smoothness(CloudRenderer& r, const ViewRe
     res.what = s.what;
     res.jitter = jitter;
     FrameImage img;
-    if (!check_frame(r, s.v, &img).ok()) { res.what += " (render failed)"; out.push_back(res); continue; }
+    if (!check_frame(r, s.v, &img, q).ok()) { res.what += " (render failed)"; out.push_back(res); continue; }
     res.step = image_diff(base, img, lim.tau);
     res.ok = res.step.mean_rel <= std::max(jitter.mean_rel, lim.min_mean) &&
              res.step.frac_above <= std::max(jitter.frac_above, lim.min_frac);

@@ -113,17 +113,18 @@ void main() {
       hb = texelFetch(history_b, texel_of(uv), 0);
       ok = reproject(hb.x * dir, transform_of(hb.z), uv);
     }
-    vec4 ha = history_cubic(uv);
+    vec2 motion = uv * vec2(TU.buffer_size.xy) - (vec2(q) + 0.5);  // cloud pixels
+    float moved = length(motion);
+    // A history that did not move (a still camera, no wind) is read as it is: no filter.
+    vec4 ha = moved < 1e-3 ? texelFetch(history_a, q, 0) : history_cubic(uv);
     ok = ok && finite4(ha) && finite4(hb);
     if (ok) {
       float n = hb.w;
-      vec2 motion = uv * vec2(TU.buffer_size.xy) - (vec2(q) + 0.5);  // cloud pixels
-      float moved = length(motion);
       // Has the scene changed around q? Compare the fresh samples with the history at
       // their positions (moved by q's motion); a cloud flown into, or one uncovered, shows
-      // there even when q's own reprojection looks still.
+      // there even when q's own reprojection looks still. Only for a moving camera.
       int n_changed = 0;
-      for (int i = 0; i < 4; ++i) {
+      for (int i = 0; i < 4 && TU.blend.y == 0.0; ++i) {
         vec2 pos_i = vec2(cs[i] * s + TU.grid.yz) + 0.5 + motion;
         vec4 hi_ = textureLod(history_a, pos_i / vec2(TU.buffer_size.xy), 0.0);
         vec4 fi = texelFetch(fresh_a, cs[i], 0);

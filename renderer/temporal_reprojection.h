@@ -20,12 +20,14 @@ glm::ivec2 fresh_pixel_offset(int stride, std::uint32_t frame_index);
 
 // Whether the previous frame's cloud buffer can be reprojected into this one: not after
 // a teleport/reset (ViewRequest::reset_history), a change of size, field of view or
-// march settings, time running backwards or jumping more than kMaxHistoryGapS, or the
-// camera jumping more than kMaxHistoryJumpM or turning more than kMaxHistoryTurnDeg in
-// one frame (an unannounced teleport or a snap view change: nothing left to reuse).
-constexpr double kMaxHistoryGapS = 10.0;
+// march settings, time running backwards or more than kMaxHistoryGapS between frames (a
+// slide show, e.g. a replay at 0.2 frames/s: each frame stands alone and is marched in
+// full), or the camera jumping more than kMaxHistoryJumpM or turning more than
+// kMaxHistoryTurnDeg in one frame (an unannounced teleport or a snap view change: too
+// little left to reuse).
+constexpr double kMaxHistoryGapS = 0.5;
 constexpr double kMaxHistoryJumpM = 5000.0;
-constexpr double kMaxHistoryTurnDeg = 30.0;
+constexpr double kMaxHistoryTurnDeg = 10.0;
 bool history_usable(const ViewRequest& prev, const RenderQuality& prev_quality, const ViewRequest& cur,
                     const RenderQuality& cur_quality);
 

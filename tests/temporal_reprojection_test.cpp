@@ -96,8 +96,15 @@ TEST(TemporalReprojection, HistoryRules) {
   far.position.lat_deg += 0.05;  // 5.6 km
   EXPECT_FALSE(history_usable(a, q, far, q));
   ViewRequest late = b;
-  late.unix_time_s += 11.0;
+  late.unix_time_s = a.unix_time_s + 0.6;  // a slide show: each frame stands alone
   EXPECT_FALSE(history_usable(a, q, late, q));
+  late.unix_time_s = a.unix_time_s + 0.4;
+  EXPECT_TRUE(history_usable(a, q, late, q));
+  ViewRequest snap = b;
+  snap.attitude.heading_deg += 12.0;  // a snap turn
+  EXPECT_FALSE(history_usable(a, q, snap, q));
+  snap.attitude.heading_deg -= 4.0;   // 8 deg in a frame: still reused
+  EXPECT_TRUE(history_usable(a, q, snap, q));
   ViewRequest earlier = b;
   earlier.unix_time_s = a.unix_time_s - 0.01;
   EXPECT_FALSE(history_usable(a, q, earlier, q));

@@ -202,11 +202,15 @@ inline ImageDiff image_diff(const FrameImage& a, const FrameImage& b, double tau
 }
 
 // Pass criterion of one perturbation (same frame_index, so the same jitter). The noise floor
-// is what the renderer already shows from frame to frame: the change between frame_index i
-// and i + 1 of the same pose (the per-pixel jitter of the march; temporal accumulation is
-// meant to average it). A 1 cm / 0.001 deg step must not change the image more than that:
-//   mean change <= max(jitter mean change, min_mean) and
-//   fraction of pixels changed by > tau <= max(jitter fraction, min_frac).
+// is what the renderer already shows from frame to frame: the larger of the changes from
+// frame_index i to i + 1 and to i + 2 of the same pose (the per-pixel jitter of the march;
+// temporal accumulation is meant to average it). One pair alone under-estimates that noise
+// about half the time, so a step whose change is itself noise-like failed at random; and
+// two such estimates differ by a ratio whose 95th percentile is 1.30 (median 1.07; 110
+// poses with clouds, `cloudbench --stability --smooth 200`, 2026-11-22), so a step passes
+// within that spread of the floor (noise_spread). A 1 cm / 0.001 deg step must not change the image more than that:
+//   mean change <= max(noise_spread * jitter mean change, min_mean) and
+//   fraction of pixels changed by > tau <= max(noise_spread * jitter fraction, min_frac).
 // The absolute allowances cover views without clouds (no jitter noise): there a step may
 // still move a true edge (horizon, sun disk) across a pixel centre (one sample per pixel).
 // The largest single-pixel change is reported, not gated, for the same reason.
@@ -214,12 +218,13 @@ struct SmoothLimits {
   double tau = 0.01;
   double min_mean = 1e-3;
   double min_frac = 0.02;
+  double noise_spread = 1.3;
 };
 
 struct SmoothResult {
   std::string what;  // "east +1 cm", ...
   ImageDiff step;
-  ImageDiff jitter;  // noise floor: frame_index + 1 vs frame_index, same pose
+  ImageDiff jitter;  // noise floor: the larger of frame_index + 1 and + 2 vs frame_index, same pose
   bool ok = false;
 };
 
@@ -230,21 +235,26 @@ inline ViewRequest translated(const ViewRequest& v, glm::dvec3 enu_m) {
   return o;
 }
 
-// Renders the base pose, its jitter twin and six perturbations; one result per perturbation.
-// q: the march (temporal reuse must be off: every render is a single frame).
+// Renders the base pose, its two jitter twins and six perturbations; one result per
+// perturbation. q: the march (temporal reuse must be off: every render is a single frame).
 inline std::vector<SmoothResult> check_smoothness(CloudRenderer& r, const ViewRequest& v, const SmoothLimits& lim = {},
                                                   const RenderQuality& q = {}) {
-  FrameImage base, twin;
+  FrameImage base, twin1, twin2;
   std::vector<SmoothResult> out;
-  ViewRequest vj = v;
-  vj.frame_index = v.frame_index + 1;
-  if (!check_frame(r, v, &base, q).ok() || !check_frame(r, vj, &twin, q).ok()) {
+  ViewRequest vj1 = v, vj2 = v;
+  vj1.frame_index = v.frame_index + 1;
+  vj2.frame_index = v.frame_index + 2;
+  if (!check_frame(r, v, &base, q).ok() || !check_frame(r, vj1, &twin1, q).ok() || !check_frame(r, vj2, &twin2, q).ok()) {
     SmoothResult bad;
     bad.what = "base render failed";
     out.push_back(bad);
     return out;
   }
-  const ImageDiff jitter = image_diff(base, twin, lim.tau);
+  const ImageDiff j1 = image_diff(base, twin1, lim.tau), j2 = image_diff(base, twin2, lim.tau);
+  ImageDiff jitter = j1;
+  jitter.mean_rel = std::max(j1.mean_rel, j2.mean_rel);
+  jitter.frac_above = std::max(j1.frac_above, j2.frac_above);
+  jitter.max_rel = std::max(j1.max_rel, j2.max_rel);
   const double dr = v.attitude.pitch_deg > 89.0 ? -0.001 : 0.001;  // stay within [-90, 90]
   struct Step { const char* what; ViewRequest v; };
   std::vector<Step> steps = {{"east +1 cm", translated(v, {0.01, 0, 0})},
@@ -261,8 +271,8 @@ inline std::vector<SmoothResult> check_smoothness(CloudRenderer& r, const ViewRe
     FrameImage img;
     if (!check_frame(r, s.v, &img, q).ok()) { res.what += " (render failed)"; out.push_back(res); continue; }
     res.step = image_diff(base, img, lim.tau);
-    res.ok = res.step.mean_rel <= std::max(jitter.mean_rel, lim.min_mean) &&
-             res.step.frac_above <= std::max(jitter.frac_above, lim.min_frac);
+    res.ok = res.step.mean_rel <= std::max(lim.noise_spread * jitter.mean_rel, lim.min_mean) &&
+             res.step.frac_above <= std::max(lim.noise_spread * jitter.frac_above, lim.min_frac);
     out.push_back(res);
   }
   return out;

@@ -16,6 +16,7 @@
 #include "cloud_lighting.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
+const float BACKGROUND_T_EPS = 1e-3;  // = CLOUD_T_EPS of cloud_march.comp
 layout(rgba32f, binding = 0) uniform writeonly image2D out_image;
 layout(binding = 6) uniform sampler2D sky_view_lut;
 layout(binding = 7) uniform sampler3D ap_inscatter;
@@ -82,6 +83,15 @@ void cloud_at(ivec2 px, float t_background, out vec4 a, out vec4 b) {
   b.x /= wsum;
 }
 
+// Radiance of the sun disk (uniform over its solid angle, through the atmosphere) along a
+// view ray with cosine cos_view_sun to the sun and zenith cosine mu from altitude h; 0
+// outside the disk.
+vec3 sun_disk(float cos_view_sun, float h, float mu) {
+  if (cos_view_sun <= U.sun_dir.w) return vec3(0.0);
+  float solid_angle = 2.0 * PI * (1.0 - U.sun_dir.w);
+  return U.sun_irradiance.rgb / solid_angle * transmittance_to_space(h, mu);
+}
+
 void main() {
   ivec2 px = ivec2(gl_GlobalInvocationID.xy);
   ivec2 size = imageSize(out_image);
@@ -104,9 +114,13 @@ void main() {
   vec3 C = cloud.rgb;  // in-scattered radiance from clouds
   float T = clamp(cloud.a, 0.0, 1.0);  // cloud transmittance
 
-  // ---- background: ground or sky
-  vec3 background;
-  if (hits_ground) {
+  // ---- background: ground or sky, skipped behind clouds whose transmittance is below the
+  // march's early-exit threshold (what lies behind them is truncated at that level
+  // already), except the sun disk, bright enough to show through them
+  vec3 background = vec3(0.0);
+  if (T <= BACKGROUND_T_EPS) {
+    if (!hits_ground) background = sun_disk(cos_view_sun, h, mu);
+  } else if (hits_ground) {
     vec3 p = t_ground * dir;
     vec3 up = up_at(p, R, h);
     float mu_s = dot(up, sun);
@@ -135,10 +149,7 @@ void main() {
     vec2 ax = sl > 1e-6 ? sun_h / sl : vec2(1.0, 0.0);
     vec3 d_rel = vec3(dot(dir.xy, ax), dot(dir.xy, vec2(-ax.y, ax.x)), dir.z);
     background = E_sun * textureLod(sky_view_lut, sky_view_uv(d_rel, r, vec2(textureSize(sky_view_lut, 0))), 0.0).rgb;
-    if (cos_view_sun > U.sun_dir.w) {
-      float solid_angle = 2.0 * PI * (1.0 - U.sun_dir.w);
-      background += E_sun / solid_angle * transmittance_to_space(h, mu);
-    }
+    background += sun_disk(cos_view_sun, h, mu);
     background += vec3(U.ground_albedo.w);
   }
 

@@ -68,7 +68,8 @@ inline int run(int argc, char** argv) {
   RenderQuality full = *quality_preset("default");
   full.temporal_reuse = false;
   const std::vector<std::pair<std::string, RenderQuality>> configs = {
-      {"naive", *quality_preset("naive")}, {"default without temporal reuse", full}, {"default", *quality_preset("default")}};
+      {"naive", *quality_preset("naive")}, {"default without temporal reuse", full}, {"default", *quality_preset("default")},
+      {"high (1/4 px per frame)", *quality_preset("high")}};
   std::ofstream csv(std::filesystem::path(out) / "sequence.csv");
   csv << "flight,config,frame,psnr_db,rmse,render_ms,marched_fraction,history_used\n";
   std::vector<Summary> summaries;

@@ -26,9 +26,14 @@ RenderQuality march(int primary, int light, int octaves, double step_growth_ref_
   return q;
 }
 
+// 1/16 px per frame falls back to 1/4 while the clouds move by more than a pixel per
+// frame: then the history is resampled at a new sub-pixel position every frame, and a
+// pixel's single cloud depth misplaces parallax by more than a pixel within the 16-frame
+// refresh (measured by cloudbench --sequence, docs/PERFORMANCE.md).
 RenderQuality reuse(RenderQuality q, int stride) {
   q.temporal_reuse = true;
   q.temporal_stride = stride;
+  if (stride == 4) q.fast_motion_px = 1.0;
   return q;
 }
 

@@ -56,6 +56,11 @@ struct RenderQuality {
   // marched in full and nothing is kept.
   bool temporal_reuse = false;
   int temporal_stride = 1;
+  // While the nearest clouds move by more than this many frame pixels per frame
+  // (cloud_motion_px, renderer/temporal_reprojection.h), march 1/4 of the pixels instead
+  // of 1/16: a fast, close pass would otherwise show each pixel's history resampled and
+  // re-lit for 16 frames (docs/PERFORMANCE.md, "A moving camera"). 0 = never.
+  double fast_motion_px = 0.0;
   double history_blend_min = 0.2;  // least weight of a fresh sample against its history
   bool neighbourhood_clamp = true;  // limit moved history to the range of fresh neighbours
   bool count_density_evaluations = true;

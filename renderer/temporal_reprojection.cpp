@@ -88,7 +88,28 @@ Reprojection make_reprojection(const ViewRequest& prev, const ViewRequest& cur, 
     r.transform[i] = local_transform(q, prev, cur);
   }
   r.prev_axes = geo::body_axes_enu(prev.attitude);
+  r.cloud_motion_px = cloud_motion_px(prev, cur, weather);
   return r;
+}
+
+double cloud_motion_px(const ViewRequest& prev, const ViewRequest& cur, const weather::Weather& weather) {
+  if (weather.layers.empty()) return 0.0;
+  const geo::BodyAxes a = geo::body_axes_enu(prev.attitude), b = geo::body_axes_enu(cur.attitude);
+  // both sets of axes in ECEF (the local frames of the two positions differ)
+  const glm::dmat3 ea = geo::enu_to_ecef(prev.position.lat_deg, prev.position.lon_deg);
+  const glm::dmat3 eb = geo::enu_to_ecef(cur.position.lat_deg, cur.position.lon_deg);
+  const auto angle = [](glm::dvec3 u, glm::dvec3 v) { return std::atan2(glm::length(glm::cross(u, v)), glm::dot(u, v)); };
+  const double turn = std::max(angle(ea * a.forward, eb * b.forward), angle(ea * a.up, eb * b.up));
+  double nearest_m = 1e30;
+  for (const weather::CloudLayer& l : weather.layers) {
+    const double alt = cur.position.alt_m;
+    const double d = alt < l.base_m ? l.base_m - alt : (alt > l.top_m ? alt - l.top_m : 0.0);
+    nearest_m = std::min(nearest_m, d);
+  }
+  const double moved_m = glm::length(geo::geodetic_to_ecef(cur.position) - geo::geodetic_to_ecef(prev.position));
+  const double parallax = std::atan(moved_m / std::max(nearest_m, 1.0));
+  const double pixel_rad = cur.fov_deg * kDegToRad / static_cast<double>(std::max(cur.width, 1));
+  return (turn + parallax) / pixel_rad;
 }
 
 TemporalUniforms make_temporal_uniforms(const ViewRequest& cur, const RenderQuality& quality, bool history,
@@ -97,7 +118,9 @@ TemporalUniforms make_temporal_uniforms(const ViewRequest& cur, const RenderQual
   const int divisor = std::max(1, quality.cloud_resolution_divisor);
   const glm::ivec2 size = cloud_buffer_size(cur.width, cur.height, divisor);
   // Without history every cloud pixel is marched.
-  const int stride = history ? std::max(1, quality.temporal_stride) : 1;
+  int stride = history ? std::max(1, quality.temporal_stride) : 1;
+  if (history && reprojection && quality.fast_motion_px > 0.0 && reprojection->cloud_motion_px > quality.fast_motion_px)
+    stride = std::min(stride, 2);
   const glm::ivec2 offset = fresh_pixel_offset(stride, cur.frame_index);
   u.grid = glm::ivec4(stride, offset.x, offset.y, history ? 1 : 0);
   u.buffer_size = glm::ivec4(size.x, size.y, divisor, quality.neighbourhood_clamp ? 1 : 0);

@@ -45,12 +45,22 @@ bool camera_still(const ViewRequest& prev, const ViewRequest& cur);
 struct Reprojection {
   glm::dmat4 transform[5];
   geo::BodyAxes prev_axes;  // previous camera axes in its own local frame
+  double cloud_motion_px = 0.0;  // cloud_motion_px() of the two frames
 };
+
+// How far the nearest clouds move across the image between two frames, in frame pixels
+// (an upper estimate): the camera's turn (the larger of the angles between the forward
+// and between the up axes) plus its displacement seen at the distance to the nearest
+// layer (0 inside a layer: there clouds can be as close as the camera is to them, and the
+// estimate is the displacement over 1 m), divided by the horizontal angle of a pixel.
+// The layers' wind is left out (tens of m/s against the camera's hundreds).
+double cloud_motion_px(const ViewRequest& prev, const ViewRequest& cur, const weather::Weather& weather);
 Reprojection make_reprojection(const ViewRequest& prev, const ViewRequest& cur, const weather::Weather& weather,
                                const WindAnchor& anchor);
 
 // The uniform block for one frame. history: whether the previous buffer is usable (then
-// reprojection must be given).
+// reprojection must be given). The stride is quality.temporal_stride, or at most 2 (1/4
+// of the pixels) while the clouds move by more than quality.fast_motion_px per frame.
 TemporalUniforms make_temporal_uniforms(const ViewRequest& cur, const RenderQuality& quality, bool history,
                                         const Reprojection* reprojection, const ViewRequest* prev);
 

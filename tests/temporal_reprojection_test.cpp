@@ -121,5 +121,50 @@ TEST(TemporalReprojection, HistoryRules) {
   EXPECT_FALSE(camera_still(a, b));
 }
 
+// The image motion of the nearest clouds per frame, and the default preset marching 1/4
+// instead of 1/16 of the pixels while it exceeds a pixel.
+TEST(TemporalReprojection, FastCloseMotionMarchesMorePixels) {
+  weather::Weather w;
+  weather::CloudLayer l;
+  l.base_m = 1000.0;
+  l.top_m = 2000.0;
+  w.layers.push_back(l);
+  const double pixel_rad = 60.0 * M_PI / 180.0 / 160.0;  // view_at: 160 px, 60 deg
+  const ViewRequest a = view_at(47.45, 8.56, 2500.0, 90.0, 0.0, 0.0, 100.0);
+  EXPECT_EQ(cloud_motion_px(a, a, w), 0.0);
+  ViewRequest turned = a;
+  turned.attitude.heading_deg += 1.0;
+  EXPECT_NEAR(cloud_motion_px(a, turned, w), (M_PI / 180.0) / pixel_rad, 1e-6);
+  turned.attitude.roll_deg += 2.0;  // the up axis turns by 2 deg about forward
+  EXPECT_NEAR(cloud_motion_px(a, turned, w), 2.0 * (M_PI / 180.0) / pixel_rad, 0.01);
+  // 250 m/s at 30 frames/s, 500 m above the layer top
+  const glm::dvec3 step = geo::enu_to_ecef(a.position.lat_deg, a.position.lon_deg) * glm::dvec3(250.0 / 30.0, 0.0, 0.0);
+  ViewRequest flown = a;
+  flown.position = geo::ecef_to_geodetic(geo::geodetic_to_ecef(a.position) + step);
+  flown.unix_time_s += 1.0 / 30.0;
+  EXPECT_NEAR(cloud_motion_px(a, flown, w), std::atan(250.0 / 30.0 / 500.0) / pixel_rad, 0.01);
+  // the same speed at 10 km: slow across the image
+  ViewRequest high_a = a, high_b = flown;
+  high_a.position.alt_m = high_b.position.alt_m = 10000.0;
+  EXPECT_LT(cloud_motion_px(high_a, high_b, w), 0.2);
+  // inside the layer: clouds may be metres away
+  ViewRequest in_a = a, in_b = flown;
+  in_a.position.alt_m = in_b.position.alt_m = 1500.0;
+  EXPECT_GT(cloud_motion_px(in_a, in_b, w), 100.0);
+  EXPECT_EQ(cloud_motion_px(a, flown, weather::Weather{}), 0.0);  // no clouds, nothing moves
+
+  RenderQuality q;
+  q.temporal_reuse = true;
+  q.temporal_stride = 4;
+  q.fast_motion_px = 1.0;
+  const WindAnchor anchor{a.position, a.unix_time_s};
+  const Reprojection fast = make_reprojection(a, flown, w, anchor);
+  EXPECT_EQ(make_temporal_uniforms(flown, q, true, &fast, &a).grid.x, 2);
+  const Reprojection slow = make_reprojection(high_a, high_b, w, anchor);
+  EXPECT_EQ(make_temporal_uniforms(high_b, q, true, &slow, &high_a).grid.x, 4);
+  q.fast_motion_px = 0.0;  // off
+  EXPECT_EQ(make_temporal_uniforms(flown, q, true, &fast, &a).grid.x, 4);
+}
+
 }  // namespace
 }  // namespace cloudsvc

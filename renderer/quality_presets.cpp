@@ -8,7 +8,8 @@
 //   default  64 log, 6 light, long steps x2, 1/16 px per frame        6.6x, RMSE 0.98
 //   high     96 log, 8 light, long steps x2, 1/4 px per frame         2.3x, RMSE 0.74
 //   ultra    192 log, 12 light, every pixel, accumulated while still  0.4x, RMSE 0.49
-// All: one octave (single scattering + the delta-Eddington diffuse term). Log steps:
+// All: one octave (single scattering + the delta-Eddington diffuse term). 1/16 px per frame
+// becomes 1/4 while the clouds move by more than a pixel per frame (reuse() below). Log steps:
 // uniform in ln(1 + t / 1 km). A single frame (or the first after a teleport) has no
 // history and marches every pixel: the default preset's first frame is exactly
 // RenderQuality{}'s march, the one the accuracy floors cover.

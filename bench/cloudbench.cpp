@@ -88,6 +88,7 @@ std::string knob_label(const RenderQuality& q) {
     std::snprintf(b, sizeof b, "P%d L%d O%d uniform", q.primary_steps, q.light_steps, q.ms_octaves);
   std::string l = b;
   if (!q.ground_shadow_map) l += " shadows/px";
+  if (q.ground_shadow_map && q.light_volume) l += " lightvol";
   if (q.long_step_factor > 1) l += " long" + std::to_string(q.long_step_factor);
   if (q.level_of_detail) l += " LOD";
   if (q.cloud_resolution_divisor > 1) l += " res1/" + std::to_string(q.cloud_resolution_divisor);
@@ -113,6 +114,7 @@ std::vector<std::pair<std::string, RenderQuality>> skip_configs() {
   auto with = [&](auto f) { RenderQuality q = c; f(q); return q; };
   v.push_back({"none", c});
   v.push_back({"ground shadow map", with([](RenderQuality& q) { q.ground_shadow_map = true; })});
+  v.push_back({"light volume (with the shadow map)", with([](RenderQuality& q) { q.ground_shadow_map = true; q.light_volume = true; })});
   v.push_back({"long steps x2", with([](RenderQuality& q) { q.long_step_factor = 2; })});
   v.push_back({"long steps x4", with([](RenderQuality& q) { q.long_step_factor = 4; })});
   v.push_back({"LOD", with([](RenderQuality& q) { q.level_of_detail = true; })});
@@ -122,6 +124,9 @@ std::vector<std::pair<std::string, RenderQuality>> skip_configs() {
   v.push_back({"temporal 1/16", with([](RenderQuality& q) { q.temporal_reuse = true; q.temporal_stride = 4; })});
   v.push_back({"shadow map + long x2 + temporal 1/16", with([](RenderQuality& q) {
                  q.ground_shadow_map = true; q.long_step_factor = 2; q.temporal_reuse = true; q.temporal_stride = 4; })});
+  v.push_back({"default + light volume", with([](RenderQuality& q) {
+                 q.ground_shadow_map = true; q.light_volume = true; q.long_step_factor = 2; q.temporal_reuse = true;
+                 q.temporal_stride = 4; q.fast_motion_px = 1.0; })});
   v.push_back({"long x4 + LOD + half res + temporal 1/4", with([](RenderQuality& q) {
                  q.ground_shadow_map = true; q.long_step_factor = 4; q.level_of_detail = true;
                  q.cloud_resolution_divisor = 2; q.temporal_reuse = true; q.temporal_stride = 2; })});

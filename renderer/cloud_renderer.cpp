@@ -200,7 +200,7 @@ FrameImage CloudRenderer::render(const ViewRequest& view, const RenderQuality& q
   timer_.begin(4);
   if (view.reset_history) shadow_map_.invalidate();  // a teleport starts from nothing
   const bool shadow_rebuilt = shadow_map_.update(view, u, weather_, *wind_anchor_, weather_generation_,
-                                                   !quality.ground_shadow_map);
+                                                   !quality.ground_shadow_map, quality.light_volume);
   timer_.end();
   const TemporalUniforms tu = march_and_resolve(view, quality);
 

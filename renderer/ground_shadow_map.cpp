@@ -43,19 +43,26 @@ std::string shadow_map_stale_reason(const ShadowMapKey& key, const ViewRequest& 
 
 GroundShadowMap::GroundShadowMap()
     : build_prog_(gl::ShaderProgram::compute("ground_shadow_map.comp")),
+      volume_prog_(gl::ShaderProgram::compute("light_volume.comp")),
       uniforms_(gl::make_buffer(sizeof(ShadowMapUniforms), nullptr, GL_DYNAMIC_DRAW)) {
-  GLuint id = 0;
-  glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &id);
-  map_ = gl::Texture(id);
-  glTextureStorage3D(id, 1, GL_R32F, kSize, kSize, 4);
-  glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTextureParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  const auto make = [](GLenum target, int w, int h, int d) {
+    GLuint id = 0;
+    glCreateTextures(target, 1, &id);
+    glTextureStorage3D(id, 1, GL_R32F, w, h, d);
+    glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(id, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
+    return gl::Texture(id);
+  };
+  map_ = make(GL_TEXTURE_2D_ARRAY, kSize, kSize, 4);
+  volume_ = make(GL_TEXTURE_3D, kVolumeSize, kVolumeSize, kVolumeLevels * 4);
 }
 
 bool GroundShadowMap::update(const ViewRequest& view, const FrameUniforms& u, const weather::Weather& weather,
-                             const WindAnchor& wind_anchor, std::uint64_t weather_generation, bool per_pixel) {
+                             const WindAnchor& wind_anchor, std::uint64_t weather_generation, bool per_pixel,
+                             bool light_volume) {
   ShadowMapUniforms su{};
   for (auto& m : su.to_anchor) m = glm::mat4(1.0f);
   const glm::dmat3 enu = geo::enu_to_ecef(view.position.lat_deg, view.position.lon_deg);
@@ -67,23 +74,37 @@ bool GroundShadowMap::update(const ViewRequest& view, const FrameUniforms& u, co
   } else if (per_pixel) {
     su.params = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
   } else {
-    if (!key_ || !shadow_map_stale_reason(*key_, view, sun_ecef, weather_generation, weather, wind_anchor).empty()) {
-      key_ = ShadowMapKey{view, sun_ecef, weather_generation, shadow_map_warp(view.position.alt_m)};
+    const int light_steps = static_cast<int>(u.quality.y);
+    const bool volume_missing = light_volume && key_ && (!key_->light_volume || key_->light_steps != light_steps);
+    if (!key_ || volume_missing ||
+        !shadow_map_stale_reason(*key_, view, sun_ecef, weather_generation, weather, wind_anchor).empty()) {
+      key_ = ShadowMapKey{view, sun_ecef, weather_generation, shadow_map_warp(view.position.alt_m), light_volume,
+                          light_steps};
       su.params = glm::vec4(static_cast<float>(key_->warp_m), static_cast<float>(kSize), 1.0f, 0.0f);
+      su.volume = glm::vec4(static_cast<float>(kVolumeLevels), static_cast<float>(kVolumeSize), 0.0f, 0.0f);
       glNamedBufferSubData(uniforms_.id(), 0, sizeof(ShadowMapUniforms), &su);
       glBindBufferBase(GL_UNIFORM_BUFFER, 2, uniforms_.id());
+      const int layers = static_cast<int>(std::min<std::size_t>(weather.layers.size(), 4));
       build_prog_.use();
       glBindImageTexture(0, map_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
-      dispatch_2d(kSize, kSize, static_cast<int>(std::min<std::size_t>(weather.layers.size(), 4)));
+      dispatch_2d(kSize, kSize, layers);
+      if (light_volume) {
+        volume_prog_.use();
+        glBindImageTexture(0, volume_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
+        dispatch_2d(kVolumeSize, kVolumeSize, layers * kVolumeLevels);
+      }
       rebuilt = true;
     }
     const Reprojection r = make_reprojection(key_->anchor, view, weather, wind_anchor);
     for (int i = 0; i < 4; ++i) su.to_anchor[i] = glm::mat4(r.transform[i]);
     su.params = glm::vec4(static_cast<float>(key_->warp_m), static_cast<float>(kSize), 1.0f, 0.0f);
+    su.volume = glm::vec4(static_cast<float>(kVolumeLevels), static_cast<float>(kVolumeSize), light_volume ? 1.0f : 0.0f,
+                          0.0f);
   }
   glNamedBufferSubData(uniforms_.id(), 0, sizeof(ShadowMapUniforms), &su);
   glBindBufferBase(GL_UNIFORM_BUFFER, 2, uniforms_.id());
   glBindTextureUnit(14, map_.id());
+  glBindTextureUnit(15, volume_.id());
   return rebuilt;
 }
 

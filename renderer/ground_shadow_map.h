@@ -9,6 +9,12 @@
 //  - a layer drifted with its wind by more than kReachFraction of K (between rebuilds the
 //    lookup follows the drift exactly: the map is sampled at the drifted position).
 // No map at night (sun more than kNightDeg below the camera's horizon) or without layers.
+//
+// With the same anchor and the same rebuild rules it can also hold the light volume
+// (shaders/light_volume.glsl, RenderQuality::light_volume): each layer's optical depth
+// towards the sun from points inside it, on the map's warped grid (kVolumeSize per side)
+// times kVolumeLevels altitude levels, which the cloud march then looks up instead of
+// marching towards the sun from every sample (a Beer-law shadow volume, seed 000).
 #pragma once
 
 #include <cstdint>
@@ -28,8 +34,9 @@ namespace cloudsvc {
 struct ShadowMapUniforms {
   glm::mat4 to_anchor[4];  // current local -> anchor local (m), per layer (wind drift included)
   glm::vec4 params;        // K (m), N (texels), map valid (1/0), march per pixel instead (1/0)
+  glm::vec4 volume;        // light volume: levels per layer, texels per side, valid (1/0), unused
 };
-static_assert(sizeof(ShadowMapUniforms) == 4 * 64 + 16, "std140 layout");
+static_assert(sizeof(ShadowMapUniforms) == 4 * 64 + 32, "std140 layout");
 
 // What the map was built for.
 struct ShadowMapKey {
@@ -37,6 +44,8 @@ struct ShadowMapKey {
   glm::dvec3 sun_ecef{0.0};    // unit vector to the sun (ECEF) at the build
   std::uint64_t weather_generation = 0;
   double warp_m = 0.0;         // K
+  bool light_volume = false;   // the light volume was built too
+  int light_steps = 0;         // ... with this many light steps
 };
 
 constexpr double kSunTolDeg = 0.05;
@@ -62,15 +71,24 @@ class GroundShadowMap {
   // noise/weather/LUT textures at their units), then uploads the lookup uniforms for this
   // view at binding 2 and binds the map at texture unit 14. Returns true if it rebuilt.
   // per_pixel: no map; the composite marches the shadows of every ground pixel.
+  // light_volume: also build (with the map) and bind the light volume at unit 15 (not
+  // with per_pixel).
   bool update(const ViewRequest& view, const FrameUniforms& u, const weather::Weather& weather,
-              const WindAnchor& wind_anchor, std::uint64_t weather_generation, bool per_pixel);
+              const WindAnchor& wind_anchor, std::uint64_t weather_generation, bool per_pixel, bool light_volume);
 
   void invalidate() { key_.reset(); }
-  static constexpr std::size_t gpu_bytes() { return static_cast<std::size_t>(kSize) * kSize * 4 * 4; }
+  static constexpr int kVolumeSize = 128;   // texels per side (2K/128 under the anchor: 125 m at K = 8 km)
+  static constexpr int kVolumeLevels = 16;  // altitude levels per layer
+  static constexpr std::size_t gpu_bytes() {
+    return static_cast<std::size_t>(kSize) * kSize * 4 * 4 +
+           static_cast<std::size_t>(kVolumeSize) * kVolumeSize * kVolumeLevels * 4 * 4;
+  }
 
  private:
   gl::ShaderProgram build_prog_;
+  gl::ShaderProgram volume_prog_;
   gl::Texture map_;
+  gl::Texture volume_;
   gl::Buffer uniforms_;
   std::optional<ShadowMapKey> key_;
 };

@@ -40,6 +40,11 @@ struct RenderQuality {
   // once, reused while the sun, weather and camera region hold) or marched per ground
   // pixel every frame (exact, ground_shadow_steps per layer per pixel).
   bool ground_shadow_map = true;
+  // Self-shadowing from the light volume (renderer/ground_shadow_map.h: each layer's optical
+  // depth towards the sun on a 128 x 128 x 16 grid per layer, built with the ground shadow
+  // map and light_steps light steps) instead of a light march from every sample. Needs
+  // ground_shadow_map; ignored without it.
+  bool light_volume = false;
   // Skips (issue 5; each is switchable and measured by bench/cloudbench --skips):
   // In empty air, probe with steps this many times longer (base shape only) and step back
   // on finding cloud; 1 = every step evaluated in full.

@@ -15,6 +15,8 @@
 #include "cloud_density.glsl"
 #include "cloud_intervals.glsl"
 #include "cloud_lighting.glsl"
+#include "ground_shadow_map.glsl"
+#include "light_volume.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba32f, binding = 0) uniform writeonly image2D fresh_a;
@@ -130,7 +132,8 @@ void main() {
         // light-march optical depth
         vec3 L_sun = vec3(0.0);
         if (max(T_atm.r, max(T_atm.g, T_atm.b)) > 0.0) {
-          float tau = light_optical_depth(li, p, alt, sun, mu_s, light_steps_at(t, L));
+          float tau = SM.volume.z != 0.0 ? light_volume_optical_depth(li, p, alt)
+                                         : light_optical_depth(li, p, alt, sun, mu_s, light_steps_at(t, L));
           float s_sum = 0.0, a = 1.0, b = 1.0, c = 1.0;
           for (int o = 0; o < int(U.quality.z); ++o) {
             s_sum += b * cloud_phase(cos_view_sun, L.optics.y, L.optics.z, L.optics.w, L.optics2.x, c) * exp(-a * tau);

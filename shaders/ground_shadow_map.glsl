@@ -9,6 +9,7 @@
 layout(std140, binding = 2) uniform ShadowMapUniforms {
   mat4 to_anchor[4];  // current local frame -> the anchor's local frame at build time (m), per layer
   vec4 params;        // x warp scale K (m), y texels per side N, z map valid (1/0), w march per pixel instead (1/0)
+  vec4 volume;        // light volume (light_volume.glsl): x levels per layer, y texels per side, z valid (1/0)
 } SM;
 
 // Map coordinates [0,1]^2 of a point given in the anchor's local frame.

@@ -221,6 +221,21 @@ struct SmoothLimits {
   double noise_spread = 1.3;
 };
 
+// The noise floor from the changes to two jitter twins (their larger value per measure).
+inline ImageDiff jitter_floor(const ImageDiff& j1, const ImageDiff& j2) {
+  ImageDiff f;
+  f.mean_rel = std::max(j1.mean_rel, j2.mean_rel);
+  f.frac_above = std::max(j1.frac_above, j2.frac_above);
+  f.max_rel = std::max(j1.max_rel, j2.max_rel);
+  return f;
+}
+
+// The pass criterion above.
+inline bool smooth_step_ok(const ImageDiff& step, const ImageDiff& floor, const SmoothLimits& lim) {
+  return step.mean_rel <= std::max(lim.noise_spread * floor.mean_rel, lim.min_mean) &&
+         step.frac_above <= std::max(lim.noise_spread * floor.frac_above, lim.min_frac);
+}
+
 struct SmoothResult {
   std::string what;  // "east +1 cm", ...
   ImageDiff step;
@@ -250,11 +265,7 @@ inline std::vector<SmoothResult> check_smoothness(CloudRenderer& r, const ViewRe
     out.push_back(bad);
     return out;
   }
-  const ImageDiff j1 = image_diff(base, twin1, lim.tau), j2 = image_diff(base, twin2, lim.tau);
-  ImageDiff jitter = j1;
-  jitter.mean_rel = std::max(j1.mean_rel, j2.mean_rel);
-  jitter.frac_above = std::max(j1.frac_above, j2.frac_above);
-  jitter.max_rel = std::max(j1.max_rel, j2.max_rel);
+  const ImageDiff jitter = jitter_floor(image_diff(base, twin1, lim.tau), image_diff(base, twin2, lim.tau));
   const double dr = v.attitude.pitch_deg > 89.0 ? -0.001 : 0.001;  // stay within [-90, 90]
   struct Step { const char* what; ViewRequest v; };
   std::vector<Step> steps = {{"east +1 cm", translated(v, {0.01, 0, 0})},
@@ -271,8 +282,7 @@ inline std::vector<SmoothResult> check_smoothness(CloudRenderer& r, const ViewRe
     FrameImage img;
     if (!check_frame(r, s.v, &img, q).ok()) { res.what += " (render failed)"; out.push_back(res); continue; }
     res.step = image_diff(base, img, lim.tau);
-    res.ok = res.step.mean_rel <= std::max(lim.noise_spread * jitter.mean_rel, lim.min_mean) &&
-             res.step.frac_above <= std::max(lim.noise_spread * jitter.frac_above, lim.min_frac);
+    res.ok = smooth_step_ok(res.step, jitter, lim);
     out.push_back(res);
   }
   return out;

@@ -131,8 +131,9 @@ TemporalUniforms CloudRenderer::march_and_resolve(const ViewRequest& view, const
   const bool history = prev_view_ && history_usable(*prev_view_, prev_quality_, view, quality);
   std::optional<Reprojection> rep;
   if (history) rep = make_reprojection(*prev_view_, view, weather_, *wind_anchor_);
+  const bool fast = fast_motion_.update(rep && fast_cloud_motion(*rep, quality), history);
   const TemporalUniforms tu = make_temporal_uniforms(view, quality, history, rep ? &*rep : nullptr,
-                                                     history ? &*prev_view_ : nullptr);
+                                                     history ? &*prev_view_ : nullptr, fast);
   glNamedBufferSubData(temporal_uniforms_.id(), 0, sizeof(TemporalUniforms), &tu);
   glBindBufferBase(GL_UNIFORM_BUFFER, 1, temporal_uniforms_.id());
 

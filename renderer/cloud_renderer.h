@@ -14,6 +14,7 @@
 #include "renderer/gl/shader_program.h"
 #include "renderer/render_types.h"
 #include "renderer/scene_setup.h"
+#include "renderer/temporal_reprojection.h"
 #include "renderer/temporal_uniforms.h"
 #include "weather/cloud_layer.h"
 #include "weather/weather_timeline.h"
@@ -75,6 +76,7 @@ class CloudRenderer {
   int history_ = 0;
   std::optional<ViewRequest> prev_view_;  // the last frame, while its buffer may be reused
   RenderQuality prev_quality_;
+  FastMotionHold fast_motion_;  // 1/4 px instead of 1/16 while the clouds move fast
   gl::Buffer uniforms_, temporal_uniforms_, counters_;
   int target_w_ = 0, target_h_ = 0, cloud_w_ = 0, cloud_h_ = 0;
   gl::PassTimer timer_;  // passes: 0 LUTs, 1 march, 2 resolve, 3 composite, 4 shadow map

@@ -112,15 +112,19 @@ double cloud_motion_px(const ViewRequest& prev, const ViewRequest& cur, const we
   return (turn + parallax) / pixel_rad;
 }
 
+bool fast_cloud_motion(const Reprojection& r, const RenderQuality& quality) {
+  return quality.fast_motion_px > 0.0 && r.cloud_motion_px > quality.fast_motion_px;
+}
+
 TemporalUniforms make_temporal_uniforms(const ViewRequest& cur, const RenderQuality& quality, bool history,
-                                        const Reprojection* reprojection, const ViewRequest* prev) {
+                                        const Reprojection* reprojection, const ViewRequest* prev,
+                                        bool fast_motion) {
   TemporalUniforms u{};
   const int divisor = std::max(1, quality.cloud_resolution_divisor);
   const glm::ivec2 size = cloud_buffer_size(cur.width, cur.height, divisor);
   // Without history every cloud pixel is marched.
   int stride = history ? std::max(1, quality.temporal_stride) : 1;
-  if (history && reprojection && quality.fast_motion_px > 0.0 && reprojection->cloud_motion_px > quality.fast_motion_px)
-    stride = std::min(stride, 2);
+  if (history && fast_motion) stride = std::min(stride, 2);
   const glm::ivec2 offset = fresh_pixel_offset(stride, cur.frame_index);
   u.grid = glm::ivec4(stride, offset.x, offset.y, history ? 1 : 0);
   u.buffer_size = glm::ivec4(size.x, size.y, divisor, quality.neighbourhood_clamp ? 1 : 0);

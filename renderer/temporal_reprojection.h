@@ -4,6 +4,8 @@
 // was seen from the previous camera. Computed in double on the CPU; no GL here.
 #pragma once
 
+#include <algorithm>
+
 #include <glm/glm.hpp>
 
 #include "renderer/render_types.h"
@@ -58,11 +60,28 @@ double cloud_motion_px(const ViewRequest& prev, const ViewRequest& cur, const we
 Reprojection make_reprojection(const ViewRequest& prev, const ViewRequest& cur, const weather::Weather& weather,
                                const WindAnchor& anchor);
 
+// Whether the clouds move by more than quality.fast_motion_px per frame (0 = never).
+bool fast_cloud_motion(const Reprojection& r, const RenderQuality& quality);
+
+// Keeps the fast-motion stride (1/4 px) for kFastMotionHoldFrames frames after the last
+// fast one: a stride decided afresh every frame could alternate 1/16 and 1/4 with motion
+// hovering at the threshold, and the two dither orders interleaved that way leave some
+// pixel rows never marched. The hold covers a whole 1/4 cycle. No history: no hold.
+constexpr int kFastMotionHoldFrames = 4;
+struct FastMotionHold {
+  int frames_left = 0;
+  bool update(bool fast, bool history) {
+    frames_left = !history ? 0 : (fast ? kFastMotionHoldFrames : std::max(0, frames_left - 1));
+    return frames_left > 0;
+  }
+};
+
 // The uniform block for one frame. history: whether the previous buffer is usable (then
 // reprojection must be given). The stride is quality.temporal_stride, or at most 2 (1/4
-// of the pixels) while the clouds move by more than quality.fast_motion_px per frame.
+// of the pixels) with fast_motion (FastMotionHold).
 TemporalUniforms make_temporal_uniforms(const ViewRequest& cur, const RenderQuality& quality, bool history,
-                                        const Reprojection* reprojection, const ViewRequest* prev);
+                                        const Reprojection* reprojection, const ViewRequest* prev,
+                                        bool fast_motion = false);
 
 // Cloud-buffer size for a frame of w x h frame pixels.
 glm::ivec2 cloud_buffer_size(int w, int h, int divisor);

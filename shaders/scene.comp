@@ -114,13 +114,14 @@ void main() {
   vec3 C = cloud.rgb;  // in-scattered radiance from clouds
   float T = clamp(cloud.a, 0.0, 1.0);  // cloud transmittance
 
-  // ---- background: ground or sky, skipped behind clouds whose transmittance is below the
-  // march's early-exit threshold (what lies behind them is truncated at that level
-  // already), except the sun disk, bright enough to show through them
+  // ---- background: ground or sky, faded out behind clouds as their transmittance falls
+  // from twice to once the march's early-exit threshold (the march drops the clouds behind
+  // at that level too; the fade keeps the image continuous) and skipped below it; the sun
+  // disk, bright enough to show through them, always
+  vec3 sun_seen = hits_ground ? vec3(0.0) : sun_disk(cos_view_sun, h, mu);
+  float background_weight = saturate(T / BACKGROUND_T_EPS - 1.0);
   vec3 background = vec3(0.0);
-  if (T <= BACKGROUND_T_EPS) {
-    if (!hits_ground) background = sun_disk(cos_view_sun, h, mu);
-  } else if (hits_ground) {
+  if (background_weight > 0.0 && hits_ground) {
     vec3 p = t_ground * dir;
     vec3 up = up_at(p, R, h);
     float mu_s = dot(up, sun);
@@ -141,7 +142,7 @@ void main() {
     vec3 ap_in, ap_T;
     aerial_perspective(ndc, t_ground, ap_in, ap_T);
     background = L_ground * ap_T + E_sun * ap_in;
-  } else {
+  } else if (background_weight > 0.0) {
     float r = atmo_radius(h);
     // direction relative to the sun's azimuth: x towards the sun's horizontal direction
     vec2 sun_h = sun.xy;
@@ -149,7 +150,6 @@ void main() {
     vec2 ax = sl > 1e-6 ? sun_h / sl : vec2(1.0, 0.0);
     vec3 d_rel = vec3(dot(dir.xy, ax), dot(dir.xy, vec2(-ax.y, ax.x)), dir.z);
     background = E_sun * textureLod(sky_view_lut, sky_view_uv(d_rel, r, vec2(textureSize(sky_view_lut, 0))), 0.0).rgb;
-    background += sun_disk(cos_view_sun, h, mu);
     background += vec3(U.ground_albedo.w);
   }
 
@@ -160,7 +160,7 @@ void main() {
     aerial_perspective(ndc, max(cloud_b.x, 0.0), ap_in, ap_T);
     C = C * ap_T + opacity * E_sun * ap_in;
   }
-  vec3 radiance = C + T * background;
+  vec3 radiance = C + T * (background_weight * background + sun_seen);
 
   if (any(isnan(radiance)) || any(isinf(radiance)) || any(lessThan(radiance, vec3(0.0)))) {
     atomicAdd(counters.nonfinite_pixels, 1u);

@@ -61,12 +61,41 @@ TEST(LightVolume, FollowsTheWind) {
   weather::Weather w = single_layer(weather::CloudType::Cumulus, 1000.0, 2200.0, 0.5);
   w.layers[0].wind = {40.0, 0.0};
   const ViewRequest v = make_view(47.45, 8.56, 300.0, 90.0, 20.0, "2026-06-21T11:30:00Z", 160, 90);
-  const double at_once = reference::compare_images(render_both(w, v, 0.1).volume, render_both(w, v, 0.1).march).psnr_db;
+  const Pair now = render_both(w, v, 0.1);
+  const double at_once = reference::compare_images(now.volume, now.march).psnr_db;
   const Pair later = render_both(w, v, 10.0);
   const double drifted = reference::compare_images(later.volume, later.march).psnr_db;
   std::printf("40 m/s wind: volume vs march %.2f dB at once, %.2f dB after 10 s\n", at_once, drifted);
   // measured 44.5 / 47.6 dB; with the lookup ignoring the drift 44.0 / 38.9 dB
   EXPECT_GT(drifted, at_once - 2.0);
+}
+
+// Asking for the volume on a renderer whose shadow map was built without it rebuilds the
+// map with the volume (and gives the image of a renderer that had it from the start);
+// asking for it without the ground shadow map, or at night, falls back to the light march.
+TEST(LightVolume, TurnedOnLaterOrUnavailable) {
+  const weather::Weather w = *weather::preset("broken-cumulus");
+  const ViewRequest v = make_view(47.45, 8.56, 300.0, 250.0, 10.0, "2026-06-21T11:30:00Z", 96, 54);
+  RenderQuality march, volume;
+  volume.light_volume = true;
+  CloudRenderer& r = shared_renderer();
+  r.set_weather(w);
+  EXPECT_TRUE(r.render(v, march).stats.shadow_map_rebuilt);
+  const FrameImage later = r.render(v, volume);
+  EXPECT_TRUE(later.stats.shadow_map_rebuilt);
+  CloudRenderer fresh;
+  fresh.set_weather(w);
+  const FrameImage from_start = fresh.render(v, volume);
+  EXPECT_GT(reference::compare_images(later, from_start).psnr_db, 80.0);
+  const FrameImage with_march = fresh.render(v, march);  // back off: the light march again
+  const double differs = reference::compare_images(with_march, from_start).psnr_db;
+  EXPECT_LT(differs, 80.0);
+
+  RenderQuality no_map = volume;  // the volume needs the ground shadow map
+  no_map.ground_shadow_map = false;
+  RenderQuality no_map_march = march;
+  no_map_march.ground_shadow_map = false;
+  EXPECT_GT(reference::compare_images(fresh.render(v, no_map), fresh.render(v, no_map_march)).psnr_db, 80.0);
 }
 
 }  // namespace

@@ -86,17 +86,21 @@ TEST(StabilitySweep, SmoothnessCriterionDetectsARealChange) {
   CloudRenderer& r = shared_renderer();
   r.set_weather(*weather::preset("broken-cumulus"));
   ViewRequest v = make_view(47.45, 8.56, 800.0, 250.0, 8.0, "2026-06-21T11:30:00Z", kW, kH);
-  FrameImage a, b, jit;
+  FrameImage a, b, jit1, jit2;
   ASSERT_TRUE(stab::check_frame(r, v, &a).ok());
-  ViewRequest vj = v;
-  vj.frame_index += 1;
-  ASSERT_TRUE(stab::check_frame(r, vj, &jit).ok());
+  ViewRequest vj1 = v, vj2 = v;
+  vj1.frame_index += 1;
+  vj2.frame_index += 2;
+  ASSERT_TRUE(stab::check_frame(r, vj1, &jit1).ok());
+  ASSERT_TRUE(stab::check_frame(r, vj2, &jit2).ok());
   ViewRequest moved = v;
   moved.attitude.heading_deg += 5.0;  // 2.6 pixels
   ASSERT_TRUE(stab::check_frame(r, moved, &b).ok());
-  const stab::ImageDiff step = stab::image_diff(a, b, 0.01), floor = stab::image_diff(a, jit, 0.01);
   const stab::SmoothLimits lim;
-  EXPECT_GT(step.mean_rel, std::max(lim.noise_spread * floor.mean_rel, lim.min_mean));
+  const stab::ImageDiff step = stab::image_diff(a, b, lim.tau);
+  const stab::ImageDiff floor = stab::jitter_floor(stab::image_diff(a, jit1, lim.tau), stab::image_diff(a, jit2, lim.tau));
+  EXPECT_FALSE(stab::smooth_step_ok(step, floor, lim));
+  EXPECT_GT(step.mean_rel, std::max(lim.noise_spread * floor.mean_rel, lim.min_mean));  // on the mean alone too
 }
 
 // Wind offsets are wrapped: anchor T / view T + 600 s renders the same as both shifted by

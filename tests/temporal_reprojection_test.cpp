@@ -159,11 +159,38 @@ TEST(TemporalReprojection, FastCloseMotionMarchesMorePixels) {
   q.fast_motion_px = 1.0;
   const WindAnchor anchor{a.position, a.unix_time_s};
   const Reprojection fast = make_reprojection(a, flown, w, anchor);
-  EXPECT_EQ(make_temporal_uniforms(flown, q, true, &fast, &a).grid.x, 2);
+  EXPECT_TRUE(fast_cloud_motion(fast, q));
+  EXPECT_EQ(make_temporal_uniforms(flown, q, true, &fast, &a, true).grid.x, 2);
   const Reprojection slow = make_reprojection(high_a, high_b, w, anchor);
-  EXPECT_EQ(make_temporal_uniforms(high_b, q, true, &slow, &high_a).grid.x, 4);
+  EXPECT_FALSE(fast_cloud_motion(slow, q));
+  EXPECT_EQ(make_temporal_uniforms(high_b, q, true, &slow, &high_a, false).grid.x, 4);
+  EXPECT_EQ(make_temporal_uniforms(flown, q, false, nullptr, nullptr, true).grid.x, 1);  // no history: all
   q.fast_motion_px = 0.0;  // off
-  EXPECT_EQ(make_temporal_uniforms(flown, q, true, &fast, &a).grid.x, 4);
+  EXPECT_FALSE(fast_cloud_motion(fast, q));
+}
+
+// Motion hovering at the threshold must not alternate the two dither orders (which would
+// leave pixel rows never marched): after a fast frame the 1/4 stride holds for a cycle.
+TEST(TemporalReprojection, FastMotionHoldsForAWholeCycle) {
+  FastMotionHold hold;
+  for (int i = 0; i < 20; ++i) EXPECT_TRUE(hold.update(i % 2 == 0, true)) << i;  // alternating: held
+  EXPECT_TRUE(hold.update(true, true));
+  for (int i = 1; i < kFastMotionHoldFrames; ++i) EXPECT_TRUE(hold.update(false, true)) << i;
+  EXPECT_FALSE(hold.update(false, true));
+  EXPECT_TRUE(hold.update(true, true));
+  EXPECT_FALSE(hold.update(false, false));  // a teleport ends it
+  EXPECT_FALSE(hold.update(false, true));
+
+  // With the hold, alternating fast/slow frames march every cloud pixel within 8 frames.
+  std::set<std::pair<int, int>> marched;
+  FastMotionHold h2;
+  for (std::uint32_t f = 0; f < 8; ++f) {
+    const int stride = h2.update(f % 2 == 0, true) ? 2 : 4;
+    const glm::ivec2 o = fresh_pixel_offset(stride, f);
+    for (int y = o.y; y < 8; y += stride)
+      for (int x = o.x; x < 8; x += stride) marched.insert({x, y});
+  }
+  EXPECT_EQ(marched.size(), 64u);
 }
 
 }  // namespace

@@ -2,16 +2,11 @@
 // disconnect of that client only; the service keeps rendering for the others and its
 // state is what it was before the bad message.
 #include <gtest/gtest.h>
-#include <poll.h>
-#include <sys/socket.h>
-#include <sys/un.h>
 
 #include <cmath>
-#include <cstring>
 #include <limits>
 
-#include "protocol/codec.h"
-#include "protocol/framing.h"
+#include "raw_client.h"
 #include "service_test_support.h"
 #include "sim_client/service_connection.h"
 
@@ -20,60 +15,6 @@ namespace {
 
 using namespace std::chrono_literals;
 using client::ServiceConnection;
-
-// A bare Unix-socket client that writes arbitrary bytes and reads decoded replies.
-class RawClient {
- public:
-  explicit RawClient(const std::string& path) {
-    fd_ = ::socket(AF_UNIX, SOCK_STREAM, 0);
-    sockaddr_un a{};
-    a.sun_family = AF_UNIX;
-    std::strncpy(a.sun_path, path.c_str(), sizeof a.sun_path - 1);
-    connected_ = ::connect(fd_, reinterpret_cast<sockaddr*>(&a), sizeof a) == 0;
-  }
-  ~RawClient() { close(); }
-  void close() {
-    if (fd_ >= 0) ::close(fd_);
-    fd_ = -1;
-  }
-  bool connected() const { return connected_; }
-  void write(const std::vector<std::uint8_t>& b) { ASSERT_EQ(::send(fd_, b.data(), b.size(), MSG_NOSIGNAL), static_cast<ssize_t>(b.size())); }
-  void send(const protocol::Message& m, std::uint64_t seq) { write(protocol::frame(protocol::encode(m, seq))); }
-  // Next decoded message, or nullopt on timeout; `closed` set when the service hung up.
-  std::optional<protocol::Message> receive(std::chrono::milliseconds timeout, bool* closed = nullptr) {
-    const auto deadline = std::chrono::steady_clock::now() + timeout;
-    for (;;) {
-      if (auto p = decoder_.next()) {
-        auto r = protocol::decode(*p);
-        if (r.ok()) return r.message;
-        continue;
-      }
-      const int left = static_cast<int>(std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now()).count());
-      if (left <= 0) return std::nullopt;
-      pollfd pfd{fd_, POLLIN, 0};
-      if (::poll(&pfd, 1, left) <= 0) return std::nullopt;
-      std::uint8_t buf[4096];
-      const ssize_t n = ::recv(fd_, buf, sizeof buf, 0);
-      if (n <= 0) {
-        if (closed) *closed = true;
-        return std::nullopt;
-      }
-      decoder_.feed(std::span<const std::uint8_t>(buf, static_cast<std::size_t>(n)));
-    }
-  }
-  // True when the service closed the connection within `timeout`.
-  bool closed_by_service(std::chrono::milliseconds timeout) {
-    bool closed = false;
-    const auto deadline = std::chrono::steady_clock::now() + timeout;
-    while (!closed && std::chrono::steady_clock::now() < deadline) receive(100ms, &closed);
-    return closed;
-  }
-
- private:
-  int fd_ = -1;
-  bool connected_ = false;
-  protocol::FrameDecoder decoder_;
-};
 
 protocol::Pose pose_at(double lat) {
   protocol::Pose p;
@@ -93,23 +34,9 @@ void expect_service_healthy(const ServiceProcess& svc, double lat) {
   EXPECT_EQ(ready.pose.lat_deg, lat);
 }
 
-protocol::Error expect_error(RawClient& c) {
-  for (int i = 0; i < 50; ++i) {
-    auto m = c.receive(200ms);
-    if (m && std::holds_alternative<protocol::Error>(*m)) return std::get<protocol::Error>(*m);
-  }
-  ADD_FAILURE() << "no Error received";
-  return {};
-}
-
 RawClient handshaken(const ServiceProcess& svc) {
   RawClient c(svc.socket_path());
-  EXPECT_TRUE(c.connected());
-  protocol::Hello h;
-  h.client_name = "raw";
-  c.send(h, 1);
-  auto w = c.receive(10s);
-  EXPECT_TRUE(w && std::holds_alternative<protocol::Welcome>(*w));
+  handshake(c);
   return c;
 }
 

@@ -74,8 +74,9 @@ float cloud_extinction(int li, vec3 p, float alt, int detail, out float coverage
   vec4 w = weather_at(p);
   coverage = local_coverage(L, w);
   if (coverage <= 0.0) return 0.0;
-  // vertical development: 0.5 = full layer depth, less = lower tops; stratiform sheets
-  // (base_offset.w = 1) are not driven by it (weather/cloud_layer.h)
+  // cloud-type channel t = w.g (the protocol's vertical development): 0.5 = full layer
+  // depth, less = lower tops; stratiform sheets (base_offset.w = 1) are not driven by it
+  // (weather::type_depth_fraction / type_height_profile, weather/cloud_layer.h)
   float depth_fraction = L.base_offset.w > 0.5 ? 1.0 : clamp(0.5 + w.g, 0.3, 1.0);
   float profile = height_profile(L.profile, f / depth_fraction) * step(f, depth_fraction);
   if (profile <= 0.0) return 0.0;

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include "weather/cloud_layer.h"
 
@@ -82,6 +83,85 @@ TEST(CloudTypeTraits, PhysicallyOrdered) {
     EXPECT_LT(cloud_type_traits(t).default_density_scale, 0.01) << cloud_type_name(t);
   }
   EXPECT_GT(ci.default_base_m, cb.default_base_m);
+}
+
+// Highest height fraction (0.001 resolution) where the profile is non-zero.
+float cloud_top_fraction(const HeightProfile& p, bool stratiform, float t) {
+  float top = 0.0f;
+  for (int i = 1; i < 1000; ++i) {
+    const float f = i / 1000.0f;
+    if (type_height_profile(p, stratiform, f, t) > 0.0f) top = f;
+  }
+  return top;
+}
+
+// The weather map's cloud-type channel t (G) selects the height profile of a convective
+// layer: t = 0 puts the cell tops at half the layer, t = 0.25 at three quarters, t >= 0.5
+// (neutral) uses the whole layer; the profile is the type's own, scaled into f_v(t).
+TEST(CloudTypeChannel, SelectsTheHeightProfileOfConvectiveLayers) {
+  for (CloudType type : {CloudType::Cumulus, CloudType::Cumulonimbus}) {
+    SCOPED_TRACE(std::string(cloud_type_name(type)));
+    const CloudTypeTraits& tr = cloud_type_traits(type);
+    ASSERT_FALSE(tr.stratiform);
+    EXPECT_FLOAT_EQ(type_depth_fraction(0.0f, false), 0.5f);
+    EXPECT_FLOAT_EQ(type_depth_fraction(0.25f, false), 0.75f);
+    EXPECT_FLOAT_EQ(type_depth_fraction(0.5f, false), 1.0f);
+    EXPECT_FLOAT_EQ(type_depth_fraction(1.0f, false), 1.0f);
+    EXPECT_NEAR(cloud_top_fraction(tr.profile, false, 0.0f), 0.5f, 0.002f);
+    EXPECT_NEAR(cloud_top_fraction(tr.profile, false, 0.25f), 0.75f, 0.002f);
+    EXPECT_NEAR(cloud_top_fraction(tr.profile, false, 0.5f), 1.0f, 0.002f);
+    // Cell tops rise monotonically with t up to the neutral value, then stay.
+    float previous = 0.0f;
+    for (float t = 0.0f; t <= 1.0f; t += 0.05f) {
+      const float top = cloud_top_fraction(tr.profile, false, t);
+      EXPECT_GE(top, previous) << "t " << t;
+      previous = top;
+    }
+    // The type's own shape, compressed: the profile at f under t equals the full profile
+    // at f / f_v(t) (same base ramp, rounded top at the lower top).
+    for (float t : {0.0f, 0.2f, 0.4f}) {
+      const float fv = type_depth_fraction(t, false);
+      for (float x : {0.02f, 0.1f, 0.3f, 0.6f, 0.9f, 0.98f})
+        EXPECT_NEAR(type_height_profile(tr.profile, false, x * fv, t), height_profile(tr.profile, x), 1e-5)
+            << "t " << t << " x " << x;  // x * fv / fv rounds in float
+    }
+    // Neutral and above: the layer as specified.
+    for (float f : {0.05f, 0.5f, 0.95f})
+      for (float t : {0.5f, 0.75f, 1.0f})
+        EXPECT_FLOAT_EQ(type_height_profile(tr.profile, false, f, t), height_profile(tr.profile, f));
+    // A low-development cell has no density in the upper half of the layer.
+    EXPECT_EQ(type_height_profile(tr.profile, false, 0.7f, 0.0f), 0.0f);
+    EXPECT_GT(type_height_profile(tr.profile, false, 0.7f, 0.5f), 0.0f);
+  }
+  // Non-finite t is the neutral value.
+  EXPECT_FLOAT_EQ(type_depth_fraction(std::nanf(""), false), 1.0f);
+}
+
+TEST(CloudTypeChannel, StratiformLayersIgnoreIt) {
+  for (CloudType type : all_cloud_types()) {
+    const CloudTypeTraits& tr = cloud_type_traits(type);
+    if (!tr.stratiform) continue;
+    SCOPED_TRACE(std::string(cloud_type_name(type)));
+    for (float t : {0.0f, 0.25f, 0.5f, 1.0f}) {
+      EXPECT_FLOAT_EQ(type_depth_fraction(t, true), 1.0f);
+      for (float f : {0.05f, 0.4f, 0.7f, 0.95f})
+        EXPECT_FLOAT_EQ(type_height_profile(tr.profile, true, f, t), height_profile(tr.profile, f));
+    }
+  }
+}
+
+// height_profile is the shader's formula: ramps at base and top, zero outside the layer.
+TEST(CloudTypeChannel, HeightProfileFormula) {
+  const HeightProfile cu = cloud_type_traits(CloudType::Cumulus).profile;  // 0.05 / 0.6 / 0
+  EXPECT_EQ(height_profile(cu, 0.0f), 0.0f);
+  EXPECT_EQ(height_profile(cu, 1.0f), 0.0f);
+  EXPECT_EQ(height_profile(cu, -0.1f), 0.0f);
+  EXPECT_FLOAT_EQ(height_profile(cu, 0.2f), 1.0f);     // above the base ramp, below the top ramp
+  EXPECT_FLOAT_EQ(height_profile(cu, 0.025f), 0.5f);   // middle of the base ramp
+  EXPECT_FLOAT_EQ(height_profile(cu, 0.7f), 1.0f - 0.5f);  // middle of the top ramp (0.4..1)
+  HeightProfile anvil = cu;
+  anvil.top_weight = 1.0f;
+  EXPECT_FLOAT_EQ(height_profile(anvil, 0.2f), 0.2f);  // grows linearly with height
 }
 
 TEST(Validate, AcceptsEmptyAndTouchingLayers) {

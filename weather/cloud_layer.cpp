@@ -155,6 +155,29 @@ std::optional<CloudType> cloud_type_from_name(std::string_view name) {
   return std::nullopt;
 }
 
+float height_profile(const HeightProfile& p, float x) {
+  if (!(x > 0.0f && x < 1.0f)) return 0.0f;
+  const auto smoothstep = [](float e0, float e1, float v) {
+    const float t = std::clamp((v - e0) / (e1 - e0), 0.0f, 1.0f);
+    return t * t * (3.0f - 2.0f * t);
+  };
+  const float bottom = smoothstep(0.0f, std::max(p.bottom_ramp, 1e-3f), x);
+  const float top = 1.0f - smoothstep(1.0f - std::max(p.top_ramp, 1e-3f), 1.0f, x);
+  return bottom * top * (1.0f + (x - 1.0f) * p.top_weight);  // mix(1, x, top_weight)
+}
+
+float type_depth_fraction(float t, bool stratiform) {
+  if (stratiform) return 1.0f;
+  if (!std::isfinite(t)) t = 0.5f;  // neutral
+  return std::clamp(0.5f + t, 0.3f, 1.0f);
+}
+
+float type_height_profile(const HeightProfile& p, bool stratiform, float f, float t) {
+  const float fv = type_depth_fraction(t, stratiform);
+  if (!(f <= fv)) return 0.0f;
+  return height_profile(p, f / fv);
+}
+
 const CloudTypeTraits& cloud_type_traits(CloudType t) {
   const int i = static_cast<int>(t);
   const auto& table = traits_table();

@@ -42,6 +42,33 @@ struct HeightProfile {
   float base_erosion = 0.5f; // 0..1: how strongly detail noise erodes (wispy edges)
 };
 
+// The profile above at height fraction x (ramps floored at 1e-3, as in the shader); 0
+// outside (0, 1).
+float height_profile(const HeightProfile& p, float x);
+
+// The weather map's cloud-type channel t (G, weather/weather_map.h) selects the height
+// profile per location, as the type channel of Schneider's Nubis weather map does: the
+// cloud occupies the lowest fraction f_v(t) of its layer, with the layer type's profile
+// scaled into it. In this model t spans the convective family, for convective layers
+// (cumulus, cumulonimbus; CloudTypeTraits::stratiform false):
+//   f_v(t) = clamp(0.5 + t, 0.3, 1)   (t >= 0: f_v in [0.5, 1]; the 0.3 floor is never reached)
+//   t = 0     cells top out at half the layer depth (cumulus humilis in a cumulus layer;
+//             towering cumulus reaching mid-layer in a cumulonimbus layer)
+//   t = 0.25  three quarters of the depth (cumulus mediocris / congestus)
+//   t >= 0.5  the full layer depth (the neutral value: the layer as specified; cumulus
+//             congestus, or cumulonimbus to the layer top). Values above 0.5 change nothing.
+// Stratiform layers ignore t (f_v = 1): their type (and so their profile) is the layer's.
+// Stratus-like sheets are not reached through t: a map texel cannot turn a cumulus layer
+// into stratus or a stratus layer into cumulus (that would need per-texel profile
+// parameters in shaders/cloud_density.glsl).
+float type_depth_fraction(float t, bool stratiform);
+
+// Profile of a layer with profile p at height fraction f where the type channel is t:
+// height_profile(p, f / f_v(t)) for f <= f_v(t), else 0. This is what
+// shaders/cloud_density.glsl evaluates (and renderer/reference/cloud_field.cpp
+// independently re-implements).
+float type_height_profile(const HeightProfile& p, bool stratiform, float f, float t);
+
 // Typical values of a cloud type (defaults for layers that do not give their own; see
 // weather/cloud_layer.cpp for the sources of each number).
 //   default_density_scale multiplies the microphysical extinction
@@ -50,7 +77,7 @@ struct HeightProfile {
 //   liquid (or ice) water content over the water content that N0 droplets of diameter d
 //   would hold, so that sigma_t matches the type's typical water content.
 //   stratiform: not convective (everything but cumulus and cumulonimbus): a sheet whose
-//   depth is not driven by the weather map's vertical-development channel.
+//   depth is not driven by the weather map's cloud-type channel (type_depth_fraction).
 struct CloudTypeTraits {
   HeightProfile profile;
   double default_base_m = 1000.0;

@@ -46,7 +46,7 @@ WeatherMap generate_procedural_map(std::uint32_t seed, int width, int height,
   const double radius_cells = kEarthRadius_km / feature_km;
   const ChannelNoise channels[3] = {
       {detail::PerlinFbm(kOctaves, 0, detail::sub_seed(seed, 1)), 1.25},   // R coverage
-      {detail::PerlinFbm(kOctaves, 0, detail::sub_seed(seed, 2)), 1.25},   // G development
+      {detail::PerlinFbm(kOctaves, 0, detail::sub_seed(seed, 2)), 1.25},   // G cloud type
       {detail::PerlinFbm(kOctaves, 0, detail::sub_seed(seed, 3)), 1.0}};   // B density
 
   // Unit vectors of the texel-centre longitudes, shared by all rows.

@@ -1,6 +1,10 @@
 // Global weather map: an equirectangular lat/lon grid of RGBA float channels.
 //   R: coverage modulation m in [0, 1]; 0.5 = the layer's own coverage
-//   G: vertical development v in [0, 1]; 0.5 = the layer's own depth
+//   G: cloud type t in [0, 1] (the map's type channel; the protocol and sim_client call it
+//      "vertical development"): selects the height profile of convective layers, from
+//      cells topping out at half the layer (t = 0, cumulus humilis) to the full layer
+//      (t >= 0.5 = the layer as specified, congestus / cumulonimbus); stratiform layers
+//      ignore it. Mapping: type_depth_fraction() in weather/cloud_layer.h
 //   B: density modulation in [0, 1]; 0.5 = the layer's own density (factor 2^(2(B-0.5)))
 //   A: reserved (precipitation), 0
 // Texel (i, j) is centred at lon = -180 + (i + 0.5) * 360 / width,

@@ -18,8 +18,9 @@
 
 namespace cloudsvc::weather {
 
-// Channel bits of a tile: bit 0 coverage (R), 1 vertical development (G), 2 density (B),
-// 3 precipitation (A). Values are interleaved per texel in ascending bit order.
+// Channel bits of a tile: bit 0 coverage (R), 1 cloud type (G; "vertical development" in
+// the protocol), 2 density (B), 3 precipitation (A). Values are interleaved per texel in
+// ascending bit order.
 struct MapTile {
   double lat_min_deg = 0.0, lon_min_deg = 0.0;  // south-west corner
   double lat_max_deg = 0.0, lon_max_deg = 0.0;  // north-east corner; lon_max may exceed 180 (wraps)

@@ -5,7 +5,8 @@
 //   1. weather map w at the latitude/longitude of p's direction from the shell centre
 //      (ECEF axes; atan2 for both angles), with the pole blend;
 //      local coverage c = clamp(c_L + 1.2 min(c_L, 1 - c_L)(2 w.r - 1), 0, 1);
-//   2. depth fraction f_v = clamp(0.5 + w.g, 0.3, 1) (see honour_stratiform below),
+//   2. depth fraction f_v = clamp(0.5 + w.g, 0.3, 1) of the cloud-type channel G
+//      (weather::type_depth_fraction; see honour_stratiform below),
 //      profile P = H(f / f_v) [f <= f_v], H(x) = smoothstep(0, r_b, x)
 //      (1 - smoothstep(1 - r_t, 1, x)) mix(1, x, top_weight), ramps floored at 1e-3;
 //   3. base shape S = trilinear base noise at (field position) / base period, where the
@@ -37,7 +38,7 @@ struct CloudSample {
 class CloudField {
  public:
   // honour_stratiform: when true (the model's definition, as in the shader), stratiform
-  // layers ignore the weather map's vertical-development channel (f_v = 1), as
+  // layers ignore the weather map's cloud-type channel G (f_v = 1), as
   // weather/cloud_layer.h and docs/WEATHER.md describe them; false applies f_v to every
   // layer (an older shader did; kept for comparisons).
   CloudField(const ReferenceScene& scene, const ReferenceInputs& inputs, bool honour_stratiform = true);

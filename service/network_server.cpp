@@ -42,14 +42,24 @@ class ClientSession : public std::enable_shared_from_this<ClientSession> {
     read();
   }
 
-  // Queues m. FrameReady notices are dropped when the client does not keep up.
+  // Queues m. FrameReady notices are dropped when the client does not keep up; any other
+  // message that would overflow the queue's bound closes the connection.
   void send(const protocol::Message& m) {
     if (closing_) return;
-    if (is_frame_ready(m) && queued_bytes_ > server_.config_.max_queued_bytes) {
+    const NetworkServer::Config& cfg = server_.config_;
+    if (is_frame_ready(m) && queued_bytes_ > cfg.max_queued_notice_bytes) {
       ++server_.notices_dropped_;
       return;
     }
     auto bytes = std::make_shared<std::vector<std::uint8_t>>(protocol::frame(protocol::encode(m, next_seq_++)));
+    if (queued_bytes_ + bytes->size() > cfg.max_queued_bytes) {
+      ++server_.clients_dropped_for_queue_;
+      std::printf("cloudsvc serve: client %llu disconnected: more than %zu bytes of replies queued (it does not read)\n",
+                  static_cast<unsigned long long>(id_), cfg.max_queued_bytes);
+      std::fflush(stdout);
+      close();
+      return;
+    }
     queued_bytes_ += bytes->size();
     queue_.push_back(std::move(bytes));
     if (queue_.size() == 1) write_next();
@@ -220,7 +230,9 @@ void NetworkServer::session_closed(std::uint64_t id) { sessions_.erase(id); }
 
 void NetworkServer::send_to(std::uint64_t client_id, const protocol::Message& m) {
   auto it = sessions_.find(client_id);
-  if (it != sessions_.end() && it->second->handshaken()) it->second->send(m);
+  if (it == sessions_.end()) return;
+  const std::shared_ptr<ClientSession> s = it->second;  // a send may close and erase it
+  if (s->handshaken()) s->send(m);
 }
 
 void NetworkServer::broadcast(const protocol::Message& m) {

@@ -2,7 +2,8 @@
 // one session per client with the handshake, framing, decoding and validation of
 // docs/PROTOCOL.md. Valid client messages go to a handler; bad ones get an Error (or, when
 // fatal, a disconnect) for that client only. Outgoing messages are queued per client and
-// never block: a slow client loses FrameReady notices (counted), not the service.
+// never block: a slow client loses FrameReady notices (counted), not the service, and a
+// client whose queue of other replies outgrows its bound is disconnected (counted).
 #pragma once
 
 #include <asio.hpp>
@@ -32,7 +33,12 @@ class NetworkServer {
     protocol::Welcome welcome;
     int max_clients = 16;
     std::chrono::milliseconds handshake_timeout{10000};  // a client that sends no Hello is dropped
-    std::size_t max_queued_bytes = 32u << 20;            // per client; beyond it FrameReady is dropped
+    // Per-client outbound queue (bytes of framed messages not yet taken by the socket;
+    // docs/PROTOCOL.md, "Limits"): above max_queued_notice_bytes FrameReady notices are
+    // dropped; a message that would take the queue above max_queued_bytes disconnects the
+    // client instead (it sends requests but does not read the replies).
+    std::size_t max_queued_notice_bytes = 1u << 20;  // 1 MiB
+    std::size_t max_queued_bytes = 4u << 20;         // 4 MiB
   };
 
   // Binds every listen address (throws std::runtime_error naming the address on failure).
@@ -46,6 +52,7 @@ class NetworkServer {
 
   std::size_t client_count() const { return sessions_.size(); }
   std::uint64_t notices_dropped() const { return notices_dropped_; }
+  std::uint64_t clients_dropped_for_queue() const { return clients_dropped_for_queue_; }
   const Config& config() const { return config_; }
 
  private:
@@ -64,6 +71,7 @@ class NetworkServer {
   std::map<std::uint64_t, std::shared_ptr<ClientSession>> sessions_;
   std::uint64_t next_id_ = 1;
   std::uint64_t notices_dropped_ = 0;
+  std::uint64_t clients_dropped_for_queue_ = 0;
   bool stopped_ = false;
 };
 

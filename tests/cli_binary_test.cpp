@@ -8,12 +8,15 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <unistd.h>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
+
+#include "service/demo_scenes.h"
 
 namespace {
 
@@ -117,6 +120,45 @@ TEST_F(CliBinary, RenderWritesExrAndPngAndPrintsStats) {
   int files = 0;
   for (const auto& e : fs::directory_iterator(dir_)) files += e.path().extension() == ".exr" || e.path().extension() == ".png";
   EXPECT_EQ(files, 2);
+}
+
+// `cloudsvc demo` at a tiny size: every documented scene is written as PNG and EXR at the
+// requested size with finite, non-negative radiance, and gets its stats line.
+TEST_F(CliBinary, DemoRendersEverySceneAtATinySize) {
+  const fs::path out_dir = dir_ / "demo" / "nested";  // missing parents are created
+  const RunResult r = run_cloudsvc({"demo", "--out-dir", out_dir.string(), "--size", "48x27"}, dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto& scenes = cloudsvc::demo_scenes();
+  ASSERT_GE(scenes.size(), 6u);
+  EXPECT_NE(r.out.find(std::to_string(scenes.size()) + " scenes at 48x27"), std::string::npos) << r.out;
+  for (const auto& scene : scenes) {
+    SCOPED_TRACE(scene.name);
+    const fs::path png = out_dir / (scene.name + ".png"), exr = out_dir / (scene.name + ".exr");
+    EXPECT_NE(r.out.find(png.string() + ": 48x27"), std::string::npos) << r.out;
+    for (const fs::path& f : {png, exr}) {
+      auto in = OIIO::ImageInput::open(f.string());
+      ASSERT_TRUE(in) << f;
+      EXPECT_EQ(in->spec().width, 48);
+      EXPECT_EQ(in->spec().height, 27);
+      EXPECT_EQ(in->spec().nchannels, 4);
+      if (f == exr) {
+        std::vector<float> px(48 * 27 * 4);
+        ASSERT_TRUE(in->read_image(0, 0, 0, 4, OIIO::TypeDesc::FLOAT, px.data()));
+        int bad = 0;
+        double sum = 0;
+        for (float v : px) {
+          bad += !std::isfinite(v) || v < 0.0f;
+          sum += v;
+        }
+        EXPECT_EQ(bad, 0);
+        EXPECT_GT(sum, 0.0);  // even the night scene is not black in linear radiance
+      }
+      in->close();
+    }
+  }
+  int files = 0;
+  for (const auto& e : fs::directory_iterator(out_dir)) files += e.is_regular_file();
+  EXPECT_EQ(files, static_cast<int>(2 * scenes.size()));
 }
 
 TEST_F(CliBinary, HelpDocumentsUnits) {

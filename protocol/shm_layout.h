@@ -14,6 +14,9 @@
  * `seq` and keeps the copy only if both are equal and even: it never returns a torn
  * frame and never blocks the writer (a reader that dies holds nothing). The writer fills
  * slots round-robin and then publishes `latest_slot` / `latest_frame`.
+ *
+ * Versions: 2 added cloudsvc_shm_slot.publish_unix_ns (version 1 readers refuse a version
+ * 2 ring and vice versa: the reader checks `version`).
  */
 #ifndef CLOUDSVC_PROTOCOL_SHM_LAYOUT_H
 #define CLOUDSVC_PROTOCOL_SHM_LAYOUT_H
@@ -21,7 +24,7 @@
 #include <stdint.h>
 
 #define CLOUDSVC_SHM_MAGIC 0x4D485343u /* "CSHM" little-endian */
-#define CLOUDSVC_SHM_VERSION 1u
+#define CLOUDSVC_SHM_VERSION 2u
 #define CLOUDSVC_SHM_HEADER_BYTES 4096u
 #define CLOUDSVC_SHM_SLOT_HEADER_BYTES 256u
 
@@ -61,6 +64,10 @@ typedef struct cloudsvc_shm_slot {
   uint32_t pixel_format;   /* CLOUDSVC_SHM_* */
   uint32_t row_bytes;      /* bytes per row (width * 8 or width * 4) */
   uint64_t pixel_bytes;    /* height * row_bytes */
+  int64_t publish_unix_ns; /* CLOCK_REALTIME when the writer published the slot (just before
+                              `seq` became even), ns since 1970-01-01T00:00:00Z; a reader on the
+                              same machine gets its delivery latency as its own CLOCK_REALTIME
+                              minus this (version 2) */
 } cloudsvc_shm_slot;
 
 #ifdef __cplusplus

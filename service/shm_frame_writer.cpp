@@ -9,6 +9,7 @@
 #include <atomic>
 #include <cerrno>
 #include <cstring>
+#include <ctime>
 #include <stdexcept>
 
 namespace cloudsvc {
@@ -111,6 +112,9 @@ std::uint32_t ShmFrameWriter::write(const ShmFrameMeta& meta, std::uint32_t pixe
   slot->row_bytes = static_cast<std::uint32_t>(row_bytes);
   slot->pixel_bytes = static_cast<std::uint64_t>(row_bytes) * height;
   std::memcpy(slot_base + CLOUDSVC_SHM_SLOT_HEADER_BYTES, pixels, row_bytes * static_cast<std::size_t>(height));
+  timespec now{};
+  ::clock_gettime(CLOCK_REALTIME, &now);
+  slot->publish_unix_ns = static_cast<std::int64_t>(now.tv_sec) * 1000000000 + now.tv_nsec;
   seq.store(s + 2, std::memory_order_release);  // even: complete
   std::atomic_ref<std::uint32_t>(h->latest_slot).store(index, std::memory_order_release);
   std::atomic_ref<std::uint64_t>(h->latest_frame).store(meta.frame_number, std::memory_order_release);

@@ -6,6 +6,7 @@
  *   cloudsvc_shm_slot info;
  *   int rc = cloudsvc_shm_read_latest(r, last_frame, &info, buffer, buffer_bytes);
  *   if (rc == 1) { last_frame = info.frame_number; ... }
+ *   // delivery latency, ns: own CLOCK_REALTIME now - info.publish_unix_ns (same machine)
  *   cloudsvc_shm_close(r);
  */
 #ifndef CLOUDSVC_SIM_CLIENT_CLOUDSVC_SHM_H

@@ -1,10 +1,13 @@
 // `sim_client watch --shm NAME`: follows the service's shared-memory frame ring and prints,
-// once a second, how many frames arrived, the frame rate, the newest frame and gaps.
+// once a second, how many frames arrived, the frame rate, the newest frame, gaps and the
+// delivery latency (watcher's clock minus the slot's publish time).
 #include <CLI/CLI.hpp>
 
 #include <atomic>
 #include <chrono>
 #include <csignal>
+#include <cstdint>
+#include <ctime>
 #include <cstdio>
 #include <memory>
 #include <thread>
@@ -24,6 +27,13 @@ constexpr std::chrono::milliseconds kPollInterval{1};  // latest_frame() is one 
 constexpr std::chrono::seconds kReportInterval{1};
 
 std::atomic<bool> g_interrupted{false};
+
+// CLOCK_REALTIME, ns since 1970 (the clock of cloudsvc_shm_slot.publish_unix_ns).
+std::int64_t realtime_ns() {
+  timespec ts{};
+  ::clock_gettime(CLOCK_REALTIME, &ts);
+  return static_cast<std::int64_t>(ts.tv_sec) * 1000000000 + ts.tv_nsec;
+}
 extern "C" void on_interrupt(int) { g_interrupted = true; }
 
 struct WatchArgs {
@@ -56,17 +66,24 @@ int run_watch(const WatchOptions& o) {
   const auto start = Clock::now();
   WatchStats stats(reader->latest_frame());
   auto next_report = start + kReportInterval;
-  client::ShmFrame frame;
-  std::uint64_t described = 0;  // frame number whose slot header `frame` holds
+  cloudsvc_shm_slot newest{};  // header of the newest frame read
+  std::uint64_t described = 0;  // its frame number, 0 before any
   for (;;) {
     const auto now = Clock::now();
     const double t = std::chrono::duration<double>(now - start).count();
     const bool done = g_interrupted || (o.seconds > 0.0 && t >= o.seconds);
-    stats.observe(reader->latest_frame(), t);
+    const std::uint64_t latest = reader->latest_frame();
+    if (latest != stats.newest()) {
+      // A new frame: its slot header (no pixels) for size, format and publish time.
+      const std::uint64_t after = latest > described ? described : 0;  // a restarted service counts from 1
+      if (reader->read_latest_header(after, newest)) {
+        described = newest.frame_number;
+        stats.record_latency(static_cast<double>(realtime_ns() - newest.publish_unix_ns) / 1e6);
+      }
+    }
+    stats.observe(latest, t);
     if (now >= next_report || done) {
-      // One copy per report for size and format (the counters need no copy).
-      if (stats.newest() > described && reader->read_latest(described, frame)) described = frame.info.frame_number;
-      std::printf("%s\n", stats.report_line(t, described ? &frame.info : nullptr).c_str());
+      std::printf("%s\n", stats.report_line(t, described ? &newest : nullptr).c_str());
       std::fflush(stdout);
       stats.start_interval(t);
       next_report += kReportInterval;
@@ -85,7 +102,8 @@ Command add_watch_command(CLI::App& app) {
   auto args = std::make_shared<WatchArgs>();
   CLI::App* cmd = app.add_subcommand(
       kName, "Follow the service's shared-memory frame ring: once a second print frames received, frame rate, newest "
-             "frame number, size and format, frames skipped and the age of the newest frame");
+             "frame number, size and format, frames skipped and the latency from the service publishing a frame "
+             "to the watcher reading it");
   cmd->add_option("--shm", args->shm, "Name of the ring, as given to cloudsvc serve --shm (without '/'); required")
       ->type_name("NAME");
   cmd->add_option("--seconds", args->seconds, "Stop after this many seconds, (0, 31536000]; default: until Ctrl-C")

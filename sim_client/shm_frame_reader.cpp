@@ -82,4 +82,23 @@ bool ShmFrameReader::read_latest(std::uint64_t after_frame, ShmFrame& out) {
   return false;
 }
 
+bool ShmFrameReader::read_latest_header(std::uint64_t after_frame, cloudsvc_shm_slot& out) {
+  const auto* h = reinterpret_cast<const cloudsvc_shm_header*>(base_);
+  for (int attempt = 0; attempt < 1000; ++attempt) {
+    if (load_acquire(h->latest_frame) <= after_frame) return false;
+    const std::uint32_t index = load_acquire(h->latest_slot);
+    if (index >= h->slot_count) return false;
+    const auto* slot = reinterpret_cast<const cloudsvc_shm_slot*>(base_ + h->header_bytes + h->slot_stride * index);
+    const std::uint64_t s1 = load_acquire(slot->seq);
+    if (s1 & 1u) continue;  // being written
+    std::memcpy(&out, slot, sizeof(cloudsvc_shm_slot));
+    std::atomic_thread_fence(std::memory_order_acquire);
+    const std::uint64_t s2 = std::atomic_ref<std::uint64_t>(const_cast<std::uint64_t&>(slot->seq)).load(std::memory_order_relaxed);
+    if (s1 != s2) continue;  // torn: the writer lapped us
+    out.seq = s1;
+    return out.frame_number > after_frame;
+  }
+  return false;
+}
+
 }  // namespace cloudsvc::client

@@ -30,6 +30,9 @@ class ShmFrameReader {
   // Returns false when there is none (yet). Retries internally when a slot is being
   // rewritten while it is copied.
   bool read_latest(std::uint64_t after_frame, ShmFrame& out);
+  // The same for the slot header only (frame number, pose echo, size, format, publish
+  // time): no pixel copy, for readers that only follow the ring.
+  bool read_latest_header(std::uint64_t after_frame, cloudsvc_shm_slot& out);
 
   // Newest published frame number (0 before the first frame).
   std::uint64_t latest_frame() const;

@@ -14,12 +14,31 @@ void WatchStats::observe(std::uint64_t latest, double t_s) {
   ++received_;
   ++interval_received_;
   last_ = latest;
-  newest_seen_s_ = t_s;
+  (void)t_s;
+}
+
+void WatchStats::Latency::add(double ms) {
+  ++count;
+  sum_ms += ms;
+  if (count == 1 || ms > max_ms) max_ms = ms;
+}
+
+std::string WatchStats::Latency::text() const {
+  if (count == 0) return "latency -";
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "latency mean %.1f ms max %.1f ms", sum_ms / static_cast<double>(count), max_ms);
+  return buf;
+}
+
+void WatchStats::record_latency(double ms) {
+  interval_latency_.add(ms);
+  total_latency_.add(ms);
 }
 
 void WatchStats::start_interval(double t_s) {
   interval_start_s_ = t_s;
   interval_received_ = 0;
+  interval_latency_ = {};
 }
 
 std::string shm_format_name(std::uint32_t f) {
@@ -40,15 +59,8 @@ std::string WatchStats::report_line(double t_s, const cloudsvc_shm_slot* info) c
     std::snprintf(buf, sizeof buf, " %ux%u %s", info->width, info->height, shm_format_name(info->pixel_format).c_str());
     out += buf;
   }
-  std::snprintf(buf, sizeof buf, ", skipped %llu, age ", static_cast<unsigned long long>(skipped_));
-  out += buf;
-  if (newest_seen_s_ < 0.0) {
-    out += "-";
-  } else {
-    std::snprintf(buf, sizeof buf, "%.2f s", t_s - newest_seen_s_);
-    out += buf;
-  }
-  return out;
+  std::snprintf(buf, sizeof buf, ", skipped %llu, ", static_cast<unsigned long long>(skipped_));
+  return out + buf + interval_latency_.text();
 }
 
 std::string WatchStats::summary_line(double t_s) const {
@@ -56,7 +68,9 @@ std::string WatchStats::summary_line(double t_s) const {
   std::snprintf(buf, sizeof buf, "watch: %llu frames in %.1f s (%.1f frames/s), newest #%llu, skipped %llu",
                 static_cast<unsigned long long>(received_), t_s, t_s > 0.0 ? static_cast<double>(received_) / t_s : 0.0,
                 static_cast<unsigned long long>(last_), static_cast<unsigned long long>(skipped_));
-  return buf;
+  std::string out = buf;
+  if (total_latency_.count > 0) out += ", " + total_latency_.text();
+  return out;
 }
 
 }  // namespace cloudsvc::sim

@@ -1,5 +1,6 @@
 // Counters of `sim_client watch`: frames seen in the shared-memory ring, gaps in their
-// numbers, frame rate per report interval, and the age of the newest frame.
+// numbers, frame rate per report interval, and the delivery latency of the frames (the
+// watcher's clock when it first read a frame minus the frame's publish time in the ring).
 #pragma once
 
 #include <cstdint>
@@ -20,6 +21,9 @@ class WatchStats {
   // polled too slowly, or frames went to other sinks only). A lower number means the
   // service restarted: counting continues from it.
   void observe(std::uint64_t latest, double t_s);
+  // Latency of a newly seen frame, ms: CLOCK_REALTIME when the watcher read its slot header
+  // minus the slot's publish_unix_ns.
+  void record_latency(double ms);
   // Starts a new report interval at t_s.
   void start_interval(double t_s);
 
@@ -27,12 +31,14 @@ class WatchStats {
   std::uint64_t received() const { return received_; }
   std::uint64_t skipped() const { return skipped_; }
 
-  // "t 3.0 s: 12 frames (+4), 4.0 frames/s, newest #57 64x36 RGBA16F linear, skipped 0, age 0.21 s"
+  // "t 3.0 s: 12 frames (+4), 4.0 frames/s, newest #57 64x36 RGBA16F linear, skipped 0,
+  //  latency mean 0.6 ms max 1.1 ms"
   // info: the newest frame's slot header (size and format), or null when none was read.
-  // The rate counts frames since start_interval; age is the time since the newest frame was
-  // first seen ("-" before any).
+  // The rate and the latency count the frames since start_interval ("latency -" when no
+  // latency was recorded in it).
   std::string report_line(double t_s, const cloudsvc_shm_slot* info) const;
-  // "watch: 12 frames in 3.0 s (4.0 frames/s), newest #57, skipped 0"
+  // "watch: 12 frames in 3.0 s (4.0 frames/s), newest #57, skipped 0, latency mean 0.6 ms max 1.1 ms"
+  // (the latency part only when some was recorded).
   std::string summary_line(double t_s) const;
 
  private:
@@ -40,7 +46,13 @@ class WatchStats {
   std::uint64_t received_ = 0, skipped_ = 0;
   std::uint64_t interval_received_ = 0;
   double interval_start_s_ = 0.0;
-  double newest_seen_s_ = -1.0;  // when last_ was first seen, s; < 0 before any frame
+  struct Latency {
+    std::uint64_t count = 0;
+    double sum_ms = 0.0, max_ms = 0.0;
+    void add(double ms);
+    std::string text() const;  // "latency mean 0.6 ms max 1.1 ms" or "latency -"
+  };
+  Latency interval_latency_, total_latency_;
 };
 
 // "RGBA16F linear", "RGBA8 sRGB" or "format N".

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <ctime>
 
 #include "service_test_support.h"
 #include "shm_frame_stats.h"
@@ -38,13 +39,25 @@ protocol::SetView shm_view(protocol::ShmPixelFormat format) {
   return v;
 }
 
+std::int64_t realtime_ns() {
+  timespec ts{};
+  ::clock_gettime(CLOCK_REALTIME, &ts);
+  return static_cast<std::int64_t>(ts.tv_sec) * 1000000000 + ts.tv_nsec;
+}
+
+// Renders a pose and reads its frame; the slot's publish time lies between sending the
+// pose and receiving FrameReady (the service publishes before announcing).
 client::ShmFrame render(ServiceConnection& c, const ServiceProcess& svc, double lat) {
+  const std::int64_t sent = realtime_ns();
   c.send(day_pose(lat));
   const auto ready = c.receive_until<protocol::FrameReady>(60s);
+  const std::int64_t received = realtime_ns();
   EXPECT_TRUE(ready.shm_slot.has_value());
   client::ShmFrame f;
   EXPECT_TRUE(read_frame(svc.shm_name(), ready.frame_number, f));
   EXPECT_EQ(f.info.lat_deg, lat);
+  EXPECT_GT(f.info.publish_unix_ns, sent);
+  EXPECT_LT(f.info.publish_unix_ns, received);
   return f;
 }
 

@@ -7,6 +7,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <ctime>
 #include <stdexcept>
 #include <thread>
 #include <vector>
@@ -130,6 +131,49 @@ TEST(ShmRing, RejectsOversizeFramesAndBadNames) {
   ShmFrameWriter writer(unique_name("size"), 16, 16);
   std::vector<std::uint8_t> px(32 * 32 * 8);
   EXPECT_THROW(writer.write({}, CLOUDSVC_SHM_RGBA16F_LINEAR, 32, 32, px.data(), 32 * 8), std::runtime_error);
+}
+
+std::int64_t realtime_ns() {
+  timespec ts{};
+  ::clock_gettime(CLOCK_REALTIME, &ts);
+  return static_cast<std::int64_t>(ts.tv_sec) * 1000000000 + ts.tv_nsec;
+}
+
+// Every slot carries CLOCK_REALTIME of its publication (layout version 2): between the
+// clock before and after write(), and the same through the C++ reader (with and without
+// pixels) and the C ABI.
+TEST(ShmRing, SlotCarriesItsPublishTime) {
+  const std::string name = unique_name("publish");
+  ShmFrameWriter writer(name, 16, 8);
+  client::ShmFrameReader reader(name);
+  char err[256] = {};
+  cloudsvc_shm_reader* c = cloudsvc_shm_open(name.c_str(), err, sizeof err);
+  ASSERT_NE(c, nullptr) << err;
+  std::vector<std::uint8_t> px(16 * 8 * 4, 7);
+  std::int64_t previous = 0;
+  for (std::uint64_t n = 1; n <= 3; ++n) {
+    ShmFrameMeta meta;
+    meta.frame_number = n;
+    const std::int64_t before = realtime_ns();
+    writer.write(meta, CLOUDSVC_SHM_RGBA8_SRGB, 16, 8, px.data(), 16 * 4);
+    const std::int64_t after = realtime_ns();
+    client::ShmFrame f;
+    ASSERT_TRUE(reader.read_latest(n - 1, f));
+    EXPECT_EQ(f.info.frame_number, n);
+    EXPECT_GE(f.info.publish_unix_ns, before);
+    EXPECT_LE(f.info.publish_unix_ns, after);
+    EXPECT_GE(f.info.publish_unix_ns, previous);
+    previous = f.info.publish_unix_ns;
+    cloudsvc_shm_slot header{};
+    ASSERT_TRUE(reader.read_latest_header(n - 1, header));
+    EXPECT_EQ(header.frame_number, n);
+    EXPECT_EQ(header.publish_unix_ns, f.info.publish_unix_ns);
+    EXPECT_FALSE(reader.read_latest_header(n, header)) << "no frame newer than the newest";
+    cloudsvc_shm_slot info{};
+    ASSERT_EQ(cloudsvc_shm_read_latest(c, n - 1, &info, px.data(), px.size()), 1);
+    EXPECT_EQ(info.publish_unix_ns, f.info.publish_unix_ns);
+  }
+  cloudsvc_shm_close(c);
 }
 
 }  // namespace

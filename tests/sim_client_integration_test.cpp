@@ -227,6 +227,15 @@ TEST(SimClientCli, WatchCountsFramesForOneSecond) {
   ASSERT_EQ(std::sscanf(lines.back().c_str(), "watch: %llu frames in", &frames), 1) << lines.back();
   EXPECT_GE(frames, 1u);
   EXPECT_LE(frames, static_cast<unsigned long long>(sent - before));
+  // Latency = watcher's clock at first sight - the slot's publish time: the watcher polls
+  // every millisecond, so it is far below a frame time, and never negative.
+  const auto at = lines.back().find(", latency mean ");
+  ASSERT_NE(at, std::string::npos) << lines.back();
+  double mean_ms = -1.0, max_ms = -1.0;
+  ASSERT_EQ(std::sscanf(lines.back().c_str() + at, ", latency mean %lf ms max %lf ms", &mean_ms, &max_ms), 2) << lines.back();
+  EXPECT_GE(mean_ms, 0.0);
+  EXPECT_LE(mean_ms, max_ms);
+  EXPECT_LT(max_ms, 500.0);
   EXPECT_EQ(svc.stop(), 0);
 }
 

@@ -610,27 +610,35 @@ TEST(ContactSheet, MosaicOfExrFramesHasTheGridLayoutAndToneMappedTiles) {
   EXPECT_THROW(write_contact_sheet({{(dir.path() / "absent.exr").string(), 1}}, out.string()), std::runtime_error);
 }
 
-TEST(WatchStats, CountsFramesGapsAndRate) {
+TEST(WatchStats, CountsFramesGapsRateAndLatency) {
   WatchStats w(10);  // frames 1..10 were there before watching
   w.observe(10, 0.1);
   EXPECT_EQ(w.received(), 0u);
   w.observe(11, 0.2);
+  w.record_latency(0.5);
   w.observe(12, 0.3);
+  w.record_latency(1.5);
   w.observe(15, 0.4);  // 13 and 14 missed
+  w.record_latency(0.25);
   EXPECT_EQ(w.received(), 3u);
   EXPECT_EQ(w.skipped(), 2u);
   cloudsvc_shm_slot info{};
   info.width = 64;
   info.height = 36;
   info.pixel_format = CLOUDSVC_SHM_RGBA8_SRGB;
-  EXPECT_EQ(w.report_line(1.0, &info),
-            "t 1.0 s: 3 frames (+3), 3.0 frames/s, newest #15 64x36 RGBA8 sRGB, skipped 2, age 0.60 s");
+  EXPECT_EQ(w.report_line(1.0, &info), "t 1.0 s: 3 frames (+3), 3.0 frames/s, newest #15 64x36 RGBA8 sRGB, skipped 2, "
+                                       "latency mean 0.8 ms max 1.5 ms");
   w.start_interval(1.0);
+  EXPECT_EQ(w.report_line(1.5, nullptr), "t 1.5 s: 3 frames (+0), 0.0 frames/s, newest #15, skipped 2, latency -");
   w.observe(1, 1.5);  // the service restarted
+  w.record_latency(3.0);
   EXPECT_EQ(w.newest(), 1u);
-  EXPECT_EQ(w.report_line(2.0, nullptr), "t 2.0 s: 4 frames (+1), 1.0 frames/s, newest #1, skipped 2, age 0.50 s");
-  EXPECT_EQ(w.summary_line(2.0), "watch: 4 frames in 2.0 s (2.0 frames/s), newest #1, skipped 2");
-  EXPECT_EQ(WatchStats(0).report_line(1.0, nullptr), "t 1.0 s: 0 frames (+0), 0.0 frames/s, newest #0, skipped 0, age -");
+  EXPECT_EQ(w.report_line(2.0, nullptr),
+            "t 2.0 s: 4 frames (+1), 1.0 frames/s, newest #1, skipped 2, latency mean 3.0 ms max 3.0 ms");
+  EXPECT_EQ(w.summary_line(2.0),
+            "watch: 4 frames in 2.0 s (2.0 frames/s), newest #1, skipped 2, latency mean 1.3 ms max 3.0 ms");
+  EXPECT_EQ(WatchStats(0).report_line(1.0, nullptr), "t 1.0 s: 0 frames (+0), 0.0 frames/s, newest #0, skipped 0, latency -");
+  EXPECT_EQ(WatchStats(0).summary_line(1.0), "watch: 0 frames in 1.0 s (0.0 frames/s), newest #0, skipped 0");
 }
 
 }  // namespace

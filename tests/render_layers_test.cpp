@@ -378,5 +378,72 @@ TEST(RenderIsolatedCloud, ShadowFallsWhereTheSunProjectsTheCloud) {
   EXPECT_LT(mirrored.shade, 0.05) << "a mirrored sun must not explain the shadow";
 }
 
+// The weather map's cloud-type channel t (G) selects the height profile on the GPU:
+// a cumulus layer 1000-2800 m under a tile of constant t, seen level from inside the
+// layer. Pixels above the horizon see only air above the camera, so cloud there means
+// cell tops above the camera. t = 0 puts the tops at half the layer (1900 m), t = 0.25 at
+// three quarters (2350 m), t = 0.5 (neutral) at the layer top (weather/cloud_layer.h,
+// type_depth_fraction): from 1700 m cloud shows above the horizon for t = 0.25 and 0.5 but
+// not for t = 0; from 2000 m only for t = 0.5. (The cumulus profile's rounded top leaves no
+// cloud in the upper third or so of each f_v, hence the camera altitudes.)
+TEST(RenderTypeChannel, LowerTypeValuesLowerTheCumulusTops) {
+  const char* when = kNoonZurich;
+  const double t_view = *geo::parse_utc_iso8601(when);
+  auto cloud_above_horizon = [&](double alt, float type_value, std::uint32_t seed) {
+    weather::Weather w;
+    w.name = "type-channel";
+    w.map_seed = seed;
+    w.layers = {layer(weather::CloudType::Cumulus, 1000, 2800, 0.7)};
+    weather::MapTile tile;  // coverage neutral (0.5: the layer's 0.7), type t, around the camera
+    tile.lat_min_deg = 42.0;
+    tile.lat_max_deg = 52.0;
+    tile.lon_min_deg = 2.0;
+    tile.lon_max_deg = 15.0;
+    tile.width = tile.height = 2;
+    tile.channels = 0b11;
+    tile.valid_at_utc_s = t_view - 600.0;
+    for (int k = 0; k < 4; ++k) {
+      tile.data.push_back(0.5f);
+      tile.data.push_back(type_value);
+    }
+    CloudRenderer& r = shared_renderer();
+    r.set_weather(w);
+    r.apply_tile(tile, t_view - 1200.0);
+    const ViewRequest v = make_view(47.45, 8.56, alt, 90.0, 0.0, when, 160, 90);
+    const FrameImage img = r.render(v);
+    maybe_save("type_channel_" + std::to_string(static_cast<int>(alt)) + "m_t" +
+                   std::to_string(static_cast<int>(type_value * 100)), img);
+    EXPECT_EQ(count_bad_values(img), 0);
+    const Camera cam(v);
+    int above = 0, cloudy = 0, below_cloudy = 0, below = 0;
+    for (int y = 0; y < v.height; ++y)
+      for (int x = 0; x < v.width; ++x) {
+        const bool up = cam.ray(x, y).z > 0.0;
+        const bool c = img.pixel(x, y)[3] > 0.05f;
+        (up ? above : below) += 1;
+        (up ? cloudy : below_cloudy) += c;
+      }
+    std::printf("camera %.0f m, t = %.2f: cloud in %.3f of the pixels above the horizon, %.3f below\n", alt,
+                type_value, double(cloudy) / above, double(below_cloudy) / below);
+    EXPECT_GT(below_cloudy, below / 10) << "the lower part of the layer is there for every t";
+    return double(cloudy) / above;
+  };
+  std::uint32_t seed = 911;
+  for (double alt : {1700.0, 2000.0}) {
+    const double f0 = cloud_above_horizon(alt, 0.0f, seed++);
+    const double f25 = cloud_above_horizon(alt, 0.25f, seed++);
+    const double f50 = cloud_above_horizon(alt, 0.5f, seed++);
+    EXPECT_LT(f0, 0.002) << alt << " m: t = 0 tops out at 1900 m";
+    if (alt == 1700.0) {
+      EXPECT_GT(f25, 0.02) << alt << " m: t = 0.25 tops out at 2350 m";
+    } else {
+      EXPECT_LT(f25, 0.002) << alt << " m: too close under the rounded 2350 m tops";
+    }
+    EXPECT_GT(f50, 0.02) << alt << " m: t = 0.5 uses the whole layer";
+    EXPECT_LE(f0, f25 + 1e-9);
+    EXPECT_LE(f25, f50 + 1e-9);
+  }
+}
+
 }  // namespace
 }  // namespace cloudsvc::test

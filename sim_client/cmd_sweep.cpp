@@ -15,6 +15,7 @@
 #include "sim_client/image_stats.h"
 #include "sim_client/manifest.h"
 #include "sim_client/progress.h"
+#include "sim_client/run_summary.h"
 #include "sim_client/sweep_plan.h"
 #include "sim_client/tone_map.h"
 
@@ -79,6 +80,7 @@ int run_sweep(const SweepOptions& o, const SweepPlan& plan) {
   const auto start = Clock::now();
   std::optional<std::size_t> weather_sent;  // index into plan.weathers
   std::size_t rows = 0, refused = 0, nonfinite_frames = 0;
+  std::vector<double> latency_ms;  // FrameReady.latency_ms per rendered entry, ms
   for (std::size_t i = 0; i < plan.entries.size(); ++i) {
     const SweepEntry& e = plan.entries[i];
     if (e.weather && e.weather != weather_sent) {
@@ -123,6 +125,7 @@ int run_sweep(const SweepOptions& o, const SweepPlan& plan) {
     row.weather = weather_sent ? plan.weathers[*weather_sent].label : kServiceWeather;
     row.render_ms = frame->render_ms;
     row.latency_ms = frame->latency_ms;
+    latency_ms.push_back(frame->latency_ms);
     row.file = *frame->file_path;
     try {
       row.stats = read_image_stats(row.file);
@@ -138,11 +141,15 @@ int run_sweep(const SweepOptions& o, const SweepPlan& plan) {
   const double wall_s = std::chrono::duration<double>(Clock::now() - start).count();
   progress.finish(plan.entries.size(), wall_s);
   if (!manifest) throw RunError(manifest_path.string() + ": write failed");
-  std::printf("sweep: %zu of %zu entries rendered in %.2f s, manifest %s", rows, plan.entries.size(), wall_s,
-              manifest_path.string().c_str());
-  if (refused) std::printf("; %zu refused by the service", refused);
-  if (nonfinite_frames) std::printf("; %zu frames with NaN/Inf pixels", nonfinite_frames);
-  std::printf("\n");
+  SweepSummary summary;
+  summary.rows = rows;
+  summary.entries = plan.entries.size();
+  summary.refused = refused;
+  summary.nonfinite_frames = nonfinite_frames;
+  summary.wall_s = wall_s;
+  summary.latency_ms = std::move(latency_ms);
+  summary.manifest = manifest_path.string();
+  std::printf("%s\n", format_sweep_summary(summary).c_str());
   std::fflush(stdout);
   return rows == plan.entries.size() ? kExitOk : kExitFailure;
 }

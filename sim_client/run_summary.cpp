@@ -14,8 +14,12 @@ Distribution summarize(std::vector<double> values) {
   if (values.empty()) return d;
   std::sort(values.begin(), values.end());
   d.mean = std::accumulate(values.begin(), values.end(), 0.0) / static_cast<double>(values.size());
-  const auto rank = static_cast<std::size_t>(std::ceil(0.95 * static_cast<double>(values.size())));
-  d.p95 = values[std::max<std::size_t>(rank, 1) - 1];
+  auto nearest_rank = [&](double q) {
+    const auto rank = static_cast<std::size_t>(std::ceil(q * static_cast<double>(values.size())));
+    return values[std::max<std::size_t>(rank, 1) - 1];
+  };
+  d.median = nearest_rank(0.5);
+  d.p95 = nearest_rank(0.95);
   d.max = values.back();
   return d;
 }
@@ -33,6 +37,18 @@ std::string format_replay_summary(const ReplaySummary& s) {
   const std::size_t unrendered = s.poses_sent - std::min(s.poses_sent, s.frames + s.poses_refused);
   if (s.realtime) out += "; " + std::to_string(unrendered) + " poses superseded before rendering (latest wins)";
   if (s.poses_refused > 0) out += "; " + std::to_string(s.poses_refused) + " poses refused by the service";
+  return out;
+}
+
+std::string format_sweep_summary(const SweepSummary& s) {
+  const Distribution latency = summarize(s.latency_ms);
+  const double rate = s.wall_s > 0.0 ? static_cast<double>(s.rows) / s.wall_s : 0.0;  // frames/s
+  char buf[256];
+  std::snprintf(buf, sizeof buf, "sweep: %zu of %zu entries rendered in %.2f s, %.2f frames/s, latency median %.1f ms p95 %.1f ms, manifest ",
+                s.rows, s.entries, s.wall_s, rate, latency.median, latency.p95);
+  std::string out = buf + s.manifest;
+  if (s.refused) out += "; " + std::to_string(s.refused) + " refused by the service";
+  if (s.nonfinite_frames) out += "; " + std::to_string(s.nonfinite_frames) + " frames with NaN/Inf pixels";
   return out;
 }
 

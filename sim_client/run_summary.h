@@ -1,5 +1,5 @@
-// The numbers a replay reports at the end: frames, poses, wall time, throughput and the
-// latency and render-time distributions from FrameReady.
+// The numbers a replay or a sweep reports at the end: frames, poses, wall time, throughput
+// and the latency and render-time distributions from FrameReady.
 #pragma once
 
 #include <cstddef>
@@ -10,9 +10,10 @@ namespace cloudsvc::sim {
 
 struct Distribution {
   std::size_t count = 0;
-  double mean = 0.0, p95 = 0.0, max = 0.0;  // in the unit of the values
+  double mean = 0.0, median = 0.0, p95 = 0.0, max = 0.0;  // in the unit of the values
 };
-// p95 by nearest rank: the ceil(0.95 n)-th smallest value. All zero for no values.
+// median and p95 by nearest rank: the ceil(0.5 n)-th and ceil(0.95 n)-th smallest value.
+// All zero for no values.
 Distribution summarize(std::vector<double> values);
 
 struct ReplaySummary {
@@ -31,5 +32,22 @@ struct ReplaySummary {
 // followed, with --realtime, by "; 63 poses superseded before rendering (latest wins)" and,
 // when some were refused, "; 2 poses refused by the service".
 std::string format_replay_summary(const ReplaySummary& s);
+
+struct SweepSummary {
+  std::size_t rows = 0;              // entries rendered (manifest rows)
+  std::size_t entries = 0;           // entries in the sweep file
+  std::size_t refused = 0;           // poses the service refused
+  std::size_t nonfinite_frames = 0;  // frames with NaN/Inf pixels
+  double wall_s = 0.0;               // from the first message sent to the last row, s
+  std::vector<double> latency_ms;    // FrameReady.latency_ms of the rendered entries, ms
+  std::string manifest;              // path of manifest.csv
+};
+
+// One line, e.g.
+// "sweep: 3 of 3 entries rendered in 1.50 s, 2.00 frames/s, latency median 40.0 ms p95
+//  55.0 ms, manifest /x/manifest.csv"
+// followed, when some were, by "; 1 refused by the service" and "; 2 frames with NaN/Inf
+// pixels". frames/s = rows / wall_s (including the EXR read-back per frame).
+std::string format_sweep_summary(const SweepSummary& s);
 
 }  // namespace cloudsvc::sim

@@ -120,6 +120,14 @@ TEST(SimClientCli, SweepOfThreePosesWritesAManifestWithFiniteStatistics) {
                                                     out.string() + " --size 64x36 --png");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("sweep: 3 of 3 entries rendered"), std::string::npos) << r.out;
+  double fps = -1.0, median_ms = -1.0, p95_ms = -1.0;
+  const auto at = r.out.find(" s, ");
+  ASSERT_NE(at, std::string::npos) << r.out;
+  ASSERT_EQ(std::sscanf(r.out.c_str() + at, " s, %lf frames/s, latency median %lf ms p95 %lf ms, manifest ", &fps,
+                        &median_ms, &p95_ms), 3) << r.out;
+  EXPECT_GT(fps, 0.0);
+  EXPECT_GT(median_ms, 0.0);
+  EXPECT_LE(median_ms, p95_ms);
   const auto rows = lines_of(read_file(out / "manifest.csv"));
   ASSERT_EQ(rows.size(), 4u);
   EXPECT_EQ(rows[0],

@@ -467,8 +467,10 @@ TEST(RunSummary, NearestRankP95AndTheSummaryLine) {
   const Distribution d = summarize(v);
   EXPECT_EQ(d.count, 20u);
   EXPECT_EQ(d.mean, 10.5);
+  EXPECT_EQ(d.median, 10.0);  // the 10th of 20
   EXPECT_EQ(d.p95, 19.0);
   EXPECT_EQ(d.max, 20.0);
+  EXPECT_EQ(summarize({3.0, 1.0, 2.0}).median, 2.0);
   EXPECT_EQ(summarize({}).count, 0u);
 
   ReplaySummary s;
@@ -482,6 +484,26 @@ TEST(RunSummary, NearestRankP95AndTheSummaryLine) {
   EXPECT_EQ(format_replay_summary(s),
             "replay: 4 frames, 10 poses sent, 2.00 s, 2.00 frames/s, latency mean 25.0 ms p95 40.0 ms max 40.0 ms, "
             "render mean 6.0 ms; 5 poses superseded before rendering (latest wins); 1 poses refused by the service");
+}
+
+TEST(RunSummary, SweepLineHasRateAndLatencyMedianAndP95) {
+  SweepSummary s;
+  s.rows = 4;
+  s.entries = 5;
+  s.wall_s = 2.0;
+  s.latency_ms = {40, 10, 30, 20};
+  s.manifest = "/x/manifest.csv";
+  s.refused = 1;
+  EXPECT_EQ(format_sweep_summary(s),
+            "sweep: 4 of 5 entries rendered in 2.00 s, 2.00 frames/s, latency median 20.0 ms p95 40.0 ms, manifest "
+            "/x/manifest.csv; 1 refused by the service");
+  s.refused = 0;
+  s.nonfinite_frames = 2;
+  s.rows = 0;
+  s.latency_ms.clear();
+  EXPECT_EQ(format_sweep_summary(s),
+            "sweep: 0 of 5 entries rendered in 2.00 s, 0.00 frames/s, latency median 0.0 ms p95 0.0 ms, manifest "
+            "/x/manifest.csv; 2 frames with NaN/Inf pixels");
 }
 
 TEST(Manifest, HeaderAndRowWithQuotedText) {

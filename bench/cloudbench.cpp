@@ -43,6 +43,7 @@
 #include <vector>
 
 #include "../tests/accuracy_scenes.h"
+#include "bench/cost_command.h"
 #include "bench/sequence_command.h"
 #include "bench/stability_command.h"
 #include "renderer/atmosphere_luts.h"
@@ -425,6 +426,12 @@ int main(int argc, char** argv) {
     std::vector<char*> rest = {argv[0]};
     for (int i = 2; i < argc; ++i) rest.push_back(argv[i]);
     return cloudsvc::stability_command::run(static_cast<int>(rest.size()), rest.data());
+  }
+  // `cloudbench --cost ...`: preset cost on the scene set, no reference (bench/cost_command.h).
+  if (argc > 1 && std::string(argv[1]) == "--cost") {
+    std::vector<char*> rest = {argv[0]};
+    for (int i = 2; i < argc; ++i) rest.push_back(argv[i]);
+    return cloudsvc::cost_command::run(static_cast<int>(rest.size()), rest.data());
   }
   // `cloudbench --sequence ...`: temporal reuse on a flying camera (bench/sequence_command.h).
   if (argc > 1 && std::string(argv[1]) == "--sequence") {

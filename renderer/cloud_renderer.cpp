@@ -206,8 +206,7 @@ FrameImage CloudRenderer::render(const ViewRequest& view, const RenderQuality& q
   const TemporalUniforms tu = march_and_resolve(view, quality);
 
   scene_prog_.use();
-  glBindTextureUnit(12, cloud_a_[history_].id());
-  glBindTextureUnit(13, cloud_b_[history_].id());
+  glBindTextureUnit(12, cloud_a_[history_].id());  // the composite needs the radiance and transmittance only
   glBindImageTexture(0, target_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   timer_.begin(3);
   dispatch_2d(view.width, view.height);

@@ -18,7 +18,9 @@ vec4 weather_at(vec3 p) {
   float lat = atan(q.z, length(q.xy));
   float lon = atan(q.y, q.x);
   vec2 uv = vec2(lon * (0.5 / PI) + 0.5, lat / PI + 0.5);
-  vec4 w = mix(textureLod(weather_map, uv, 0.0), textureLod(weather_map_next, uv, 0.0), U.ap_params.z);
+  // the next keyframe only while one is fading in (a uniform branch: no divergence)
+  vec4 w = textureLod(weather_map, uv, 0.0);
+  if (U.ap_params.z > 0.0) w = mix(w, textureLod(weather_map_next, uv, 0.0), U.ap_params.z);
   // Within half a texel row of a pole, blend to the pole's value (as WeatherMap::sample
   // does): every longitude meets at the same value, no pinwheel at the pole.
   float y = uv.y * U.ap_params.y - 0.5;
@@ -62,16 +64,17 @@ const int DETAIL_NONE = 0;
 const int DETAIL_SAMPLED = 1;
 const int DETAIL_MEAN = 2;
 
-// sigma_t (1/m) of layer li at local point p with altitude alt; also returns the local
+// sigma_t (1/m) of layer li at local point p with altitude alt, where the weather map
+// reads w (weather_at; the light march passes its sample's value: the map's texels are
+// ~40 km, a light march spans at most LIGHT_MAX_DIST = 4 km); also returns the local
 // coverage (0 outside the layer).
-float cloud_extinction(int li, vec3 p, float alt, int detail, out float coverage) {
+float cloud_extinction_in(int li, vec3 p, float alt, int detail, vec4 w, out float coverage) {
   coverage = 0.0;
   CloudLayerGpu L = U.layers[li];
   float thickness = L.altitude.y - L.altitude.x;
   float f = (alt - L.altitude.x) / thickness;
   if (f <= 0.0 || f >= 1.0) return 0.0;
   g_density_evals += 1u;
-  vec4 w = weather_at(p);
   coverage = local_coverage(L, w);
   if (coverage <= 0.0) return 0.0;
   // cloud-type channel t = w.g (the protocol's vertical development): 0.5 = full layer
@@ -96,6 +99,15 @@ float cloud_extinction(int li, vec3 p, float alt, int detail, out float coverage
   }
   float density_mod = exp2(2.0 * (w.b - 0.5));
   return d * L.altitude.w * density_mod * L.optics.x;
+}
+
+// The same where the weather is read at p itself.
+float cloud_extinction(int li, vec3 p, float alt, int detail, out float coverage) {
+  CloudLayerGpu L = U.layers[li];
+  float f = (alt - L.altitude.x) / (L.altitude.y - L.altitude.x);
+  coverage = 0.0;
+  if (f <= 0.0 || f >= 1.0) return 0.0;
+  return cloud_extinction_in(li, p, alt, detail, weather_at(p), coverage);
 }
 
 float cloud_extinction(int li, vec3 p, float alt, int detail) {

@@ -25,8 +25,10 @@ float slab_beam_transmittance(float tau, float mu0) {
 }
 
 // Optical depth from point p (altitude alt) towards the sun inside layer li, in n steps
-// spaced quadratically (fine near the sample, coarse far away).
-float light_optical_depth(int li, vec3 p, float alt, vec3 sun, float mu_s, int n) {
+// spaced quadratically (fine near the sample, coarse far away), with the weather map
+// value w of the sample (cloud_extinction_in: the map varies over ~40 km, the march
+// spans at most 4 km; one map read instead of n).
+float light_optical_depth(int li, vec3 p, float alt, vec3 sun, float mu_s, int n, vec4 w) {
   float R = U.planet.x;
   vec2 exit_top = intersect_shell(R, alt, U.layers[li].altitude.y, mu_s);
   vec2 hit_base = intersect_shell(R, alt, U.layers[li].altitude.x, mu_s);
@@ -39,7 +41,8 @@ float light_optical_depth(int li, vec3 p, float alt, vec3 sun, float mu_s, int n
     float s = len * f * f;
     vec3 x = p + sun * (0.5 * (s + s_prev));
     float ax = altitude_of(x, R, U.planet.y);
-    tau += cloud_extinction(li, x, ax, DETAIL_NONE) * (s - s_prev);
+    float coverage;
+    tau += cloud_extinction_in(li, x, ax, DETAIL_NONE, w, coverage) * (s - s_prev);
     s_prev = s;
   }
   return tau;
@@ -76,8 +79,12 @@ float layer_shadow_optical_depth(int li, vec3 p, float ground_alt, vec3 sun, flo
 // brighter looking up into a cloud than down onto it, as transport gives. The sun term of
 // the march is single scattering only (one octave); this term carries the rest.
 // Checked against Monte Carlo in renderer/model/slab_renderer_model.h (docs/ACCURACY.md).
+//
+// E_ground (ground_irradiance below) is the irradiance reflected by the ground under the
+// point; the caller evaluates it once per ray: the sun's zenith cosine at the ground below
+// a sample changes by ~1e-3 over the 10 km of a long in-cloud path (1.6e-4 rad per km).
 vec3 diffuse_inscatter(CloudLayerGpu L, float alt, float mu_s, vec3 T_atm, float coverage, vec3 E_sun,
-                       float ground_alt, float w_up) {
+                       vec3 E_ground, float w_up) {
   float sigma_nominal = L.optics.x * L.altitude.w * coverage;
   float tau_a = sigma_nominal * max(L.altitude.y - alt, 0.0);
   float tau_b = sigma_nominal * max(alt - L.altitude.x, 0.0);
@@ -85,8 +92,6 @@ vec3 diffuse_inscatter(CloudLayerGpu L, float alt, float mu_s, vec3 T_atm, float
   float mu_pos = max(mu_s, 0.0);
   vec3 F_sun = E_sun * T_atm * mu_pos;
   vec3 E_sky = E_sun * sky_irradiance(alt, mu_s);
-  vec3 E_ground = U.ground_albedo.rgb * E_sun *
-                  (transmittance_to_space(ground_alt, mu_s) * mu_pos + sky_irradiance(ground_alt, mu_s));
   float mu0 = max(mu_pos, 0.05);
   float direct_a = mu_pos > 0.0 ? exp(-(1.0 - DELTA_F) * tau_a / mu0) : 0.0;
   float T_beam = mu_pos > 0.0 ? slab_beam_transmittance(tau_a, mu0) : 0.0;
@@ -94,4 +99,12 @@ vec3 diffuse_inscatter(CloudLayerGpu L, float alt, float mu_s, vec3 T_atm, float
   vec3 F_up = (F_sun * T_beam + E_sky * Ta) * (1.0 - Tb) + E_ground * Tb;
   vec3 J = (2.0 * (F_down + F_up) + 3.0 * MEAN_COSINE * (F_up - F_down) * w_up) / (4.0 * PI);
   return max(J, vec3(0.0));
+}
+
+// Radiance-weighted irradiance leaving the ground upwards (W m^-2 nm^-1): albedo times sun
+// (through the atmosphere, no cloud) plus sky light, at ground altitude ground_alt for a sun
+// at zenith cosine mu_s. The upward boundary flux of diffuse_inscatter.
+vec3 ground_irradiance(float ground_alt, float mu_s, vec3 E_sun) {
+  return U.ground_albedo.rgb * E_sun *
+         (transmittance_to_space(ground_alt, mu_s) * max(mu_s, 0.0) + sky_irradiance(ground_alt, mu_s));
 }

@@ -1,9 +1,9 @@
 #version 450 core
 // The cloud march: for this frame's fresh cloud pixels (every stride-th, see
 // temporal_uniforms.glsl), the clouds along the ray through the layer intervals. Output
-// (fresh_a) rgb: in-
-// scattered radiance from the clouds at the camera before aerial perspective (W m^-2
-// sr^-1 nm^-1, 680/550/440 nm), a: cloud transmittance; (fresh_b) x: depth (m; the
+// (fresh_a) rgb: radiance the clouds send to the camera, in-scattered in the clouds and
+// seen through the aerial perspective in front of them (W m^-2 sr^-1 nm^-1, 680/550/440
+// nm), a: cloud transmittance; (fresh_b) x: depth (m; the
 // transmittance-weighted cloud distance, or where the ray enters the first layer when it
 // meets no cloud), y: 0 (unused), z: layer of that depth (-1 none), w: 1.
 #include "common.glsl"
@@ -17,6 +17,7 @@
 #include "cloud_lighting.glsl"
 #include "ground_shadow_map.glsl"
 #include "light_volume.glsl"
+#include "aerial_perspective_lookup.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba32f, binding = 0) uniform writeonly image2D fresh_a;
@@ -81,6 +82,7 @@ void main() {
   int depth_layer = n_iv > 0 ? iv[0].layer : -1;
   float strongest = 0.0;  // largest single-step contribution T * absorbed, and its layer
   int cloud_layer = -1;
+  vec3 E_ground = vec3(-1.0);  // ground_irradiance at the first in-cloud sample (< 0: not yet)
   if (n_iv > 0) {
     float jitter = hash12(uvec2(q) + uvec2(U.counts.y * 7919, U.counts.y * 104729));
     float nominal_du = total_len / U.quality.x;
@@ -98,7 +100,8 @@ void main() {
         vec3 p = t * dir;
         float alt = altitude_of(p, R, h);
         float coverage;
-        float sigma = cloud_extinction(li, p, alt, probing ? DETAIL_NONE : detail_mode_at(t, L), coverage);
+        vec4 w = weather_at(p);
+        float sigma = cloud_extinction_in(li, p, alt, probing ? DETAIL_NONE : detail_mode_at(t, L), w, coverage);
         if (probing) {
           if (sigma > 0.0) {
             probing = false;  // step back: re-march the probed span at the normal step
@@ -133,7 +136,7 @@ void main() {
         vec3 L_sun = vec3(0.0);
         if (max(T_atm.r, max(T_atm.g, T_atm.b)) > 0.0) {
           float tau = SM.volume.z != 0.0 ? light_volume_optical_depth(li, p, alt)
-                                         : light_optical_depth(li, p, alt, sun, mu_s, light_steps_at(t, L));
+                                         : light_optical_depth(li, p, alt, sun, mu_s, light_steps_at(t, L), w);
           float s_sum = 0.0, a = 1.0, b = 1.0, c = 1.0;
           for (int o = 0; o < int(U.quality.z); ++o) {
             s_sum += b * cloud_phase(cos_view_sun, L.optics.y, L.optics.z, L.optics.w, L.optics2.x, c) * exp(-a * tau);
@@ -141,7 +144,8 @@ void main() {
           }
           L_sun = E_sun * T_atm * s_sum;
         }
-        vec3 L_diffuse = diffuse_inscatter(L, alt, mu_s, T_atm, coverage, E_sun, ground_alt, -dot(dir, up));
+        if (E_ground.r < 0.0) E_ground = ground_irradiance(ground_alt, mu_s, E_sun);  // once per ray
+        vec3 L_diffuse = diffuse_inscatter(L, alt, mu_s, T_atm, coverage, E_sun, E_ground, -dot(dir, up));
         float absorbed = one_minus_exp_neg(sigma * dt);  // albedo 1: scattered fraction
         C += T * absorbed * (L_sun + L_diffuse);
         depth_acc += t * T * absorbed;
@@ -153,6 +157,13 @@ void main() {
   float opacity = 1.0 - T;
   if (opacity > 1e-4) depth = depth_acc / opacity;
   if (cloud_layer >= 0) depth_layer = cloud_layer;
+  // aerial perspective between the camera and the clouds, at their transmittance-weighted
+  // depth: evaluated with the sample, so temporal reuse reuses it too
+  if (opacity > 0.0) {
+    vec3 ap_in, ap_T;
+    aerial_perspective(cloud_pixel_ndc(vec2(q)), max(depth, 0.0), ap_in, ap_T);
+    C = C * ap_T + opacity * E_sun * ap_in;
+  }
 
   if (U.counts.z != 0) atomicAdd(counters.density_evals, g_density_evals);
   imageStore(fresh_a, cell, vec4(C, T));

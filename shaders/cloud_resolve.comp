@@ -80,36 +80,35 @@ void main() {
   ivec2 fsize = max((TU.buffer_size.xy - TU.grid.yz + s - 1) / s, ivec2(1));  // fresh samples per axis
   bool is_fresh = all(greaterThanEqual(rel, ivec2(0))) && rel.x % s == 0 && rel.y % s == 0;
 
-  // The fresh samples around q: bilinear weights, their range, and the ground depth.
+  // The fresh samples around q: bilinear weights; their interpolation and range are read
+  // only where they are used (no or stale history, the clamp of a moving view), the
+  // nearest one's depth only where there is no history (5 texel reads a pixel saved where
+  // the history is kept as it is).
   vec2 cf = vec2(rel) / float(s);
   ivec2 c0 = clamp(ivec2(floor(cf)), ivec2(0), fsize - 1);
   ivec2 c1 = min(c0 + 1, fsize - 1);
   vec2 f = clamp(cf - vec2(c0), 0.0, 1.0);
   ivec2 cs[4] = ivec2[4](c0, ivec2(c1.x, c0.y), ivec2(c0.x, c1.y), c1);
   float ws[4] = float[4]((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y, f.x * f.y);
-  vec4 up_a = vec4(0.0), lo = vec4(1e30), hi = vec4(-1e30);
-  vec4 near_b = texelFetch(fresh_b, cs[0], 0);
-  float best_w = -1.0;
-  for (int i = 0; i < 4; ++i) {
-    vec4 a = texelFetch(fresh_a, cs[i], 0);
-    vec4 b = texelFetch(fresh_b, cs[i], 0);
-    up_a += ws[i] * a;
-    lo = min(lo, a);
-    hi = max(hi, a);
-    if (ws[i] > best_w) { best_w = ws[i]; near_b = b; }
-  }
-  vec4 fresh_value_a = is_fresh ? texelFetch(fresh_a, rel / s, 0) : up_a;
-  vec4 fresh_value_b = is_fresh ? texelFetch(fresh_b, rel / s, 0) : vec4(near_b.x, 0.0, near_b.z, 0.0);
+  vec4 fresh_own_a = is_fresh ? texelFetch(fresh_a, rel / s, 0) : vec4(0.0);
+  vec4 fresh_own_b = is_fresh ? texelFetch(fresh_b, rel / s, 0) : vec4(0.0);
 
-  vec4 out_a = fresh_value_a, out_b = fresh_value_b;
-  out_b.w = is_fresh ? 1.0 : 0.0;
+  // The neighbourhood is needed without history (the interpolated fresh samples stand in)
+  // and for a moving view (change detection, clamp); a still view with history skips it.
+  bool moving = TU.blend.y == 0.0;
+  vec4 up_a = vec4(0.0), lo = vec4(1e30), hi = vec4(-1e30), near_b = vec4(0.0);
+  vec4 fresh_at[4];
+
+  vec4 out_a = vec4(0.0), out_b = vec4(0.0);
+  bool from_history = false;
   if (TU.grid.w != 0) {
     vec3 dir = view_ray(cloud_pixel_ndc(vec2(q)));
-    // clouds: the point at the depth stored where this ray pointed last frame, twice
+    // clouds: the point at the depth stored where this ray pointed last frame, twice (the
+    // second read is skipped where it would read the same texel again)
     vec4 hb = texelFetch(history_b, q, 0);
     vec2 uv;
     bool ok = reproject(hb.x * dir, transform_of(hb.z), uv);
-    if (ok) {
+    if (ok && texel_of(uv) != q) {
       hb = texelFetch(history_b, texel_of(uv), 0);
       ok = reproject(hb.x * dir, transform_of(hb.z), uv);
     }
@@ -119,33 +118,54 @@ void main() {
     vec4 ha = moved < 1e-3 ? texelFetch(history_a, q, 0) : history_cubic(uv);
     ok = ok && finite4(ha) && finite4(hb);
     if (ok) {
+      from_history = true;
       float n = hb.w;
       // Has the scene changed around q? Compare the fresh samples with the history at
       // their positions (moved by q's motion); a cloud flown into, or one uncovered, shows
-      // there even when q's own reprojection looks still. Only for a moving camera.
+      // there even when q's own reprojection looks still. Only for a moving camera: a
+      // still camera sees the same scene (its drift is in the reprojection), differences
+      // there are the jitter noise that accumulation removes.
       int n_changed = 0;
-      for (int i = 0; i < 4 && TU.blend.y == 0.0; ++i) {
-        vec2 pos_i = vec2(cs[i] * s + TU.grid.yz) + 0.5 + motion;
-        vec4 hi_ = textureLod(history_a, pos_i / vec2(TU.buffer_size.xy), 0.0);
-        vec4 fi = texelFetch(fresh_a, cs[i], 0);
-        float y_f = dot(fi.rgb, vec3(1.0)), y_h = dot(hi_.rgb, vec3(1.0));
-        n_changed += (abs(fi.a - hi_.a) > CHANGE_T || abs(y_f - y_h) > CHANGE_REL * (y_f + y_h) + 1e-9) ? 1 : 0;
+      if (moving || (TU.buffer_size.w != 0 && moved > 0.5)) {
+        for (int i = 0; i < 4; ++i) {
+          fresh_at[i] = texelFetch(fresh_a, cs[i], 0);
+          vec2 pos_i = vec2(cs[i] * s + TU.grid.yz) + 0.5 + motion;
+          vec4 hi_ = textureLod(history_a, pos_i / vec2(TU.buffer_size.xy), 0.0);
+          float y_f = dot(fresh_at[i].rgb, vec3(1.0)), y_h = dot(hi_.rgb, vec3(1.0));
+          n_changed += (abs(fresh_at[i].a - hi_.a) > CHANGE_T || abs(y_f - y_h) > CHANGE_REL * (y_f + y_h) + 1e-9) ? 1 : 0;
+          up_a += ws[i] * fresh_at[i];
+          lo = min(lo, fresh_at[i]);
+          hi = max(hi, fresh_at[i]);
+        }
       }
-      // a still camera sees the same scene (its drift is in the reprojection): differences
-      // there are the jitter noise that accumulation removes
-      bool changed = TU.blend.y == 0.0 && n_changed >= CHANGE_MIN_NEIGHBOURS;
+      bool changed = moving && n_changed >= CHANGE_MIN_NEIGHBOURS;
       if (TU.buffer_size.w != 0 && changed) ha = up_a;  // stale: the fresh samples around it
       else if (TU.buffer_size.w != 0 && moved > 0.5) ha = clamp(ha, lo, hi);
       if (is_fresh) {
         // a moved or changed history is resampled or stale: a fresh sample replaces it; a
         // still one is averaged with it
-        float w = (TU.blend.y == 0.0 || moved > 0.1 || changed) ? 1.0 : max(1.0 / (n + 1.0), TU.blend.x);
-        out_a = mix(ha, fresh_value_a, w);
-        out_b = vec4(mix(hb.x, fresh_value_b.x, w), 0.0, fresh_value_b.z, min(n + 1.0, 255.0));
+        float w = (moving || moved > 0.1 || changed) ? 1.0 : max(1.0 / (n + 1.0), TU.blend.x);
+        out_a = mix(ha, fresh_own_a, w);
+        out_b = vec4(mix(hb.x, fresh_own_b.x, w), 0.0, fresh_own_b.z, min(n + 1.0, 255.0));
       } else {
         out_a = ha;
         out_b = vec4(hb.x, 0.0, hb.z, n);
       }
+    }
+  }
+  if (!from_history) {
+    if (is_fresh) {
+      out_a = fresh_own_a;
+      out_b = vec4(fresh_own_b.xyz, 1.0);
+    } else {
+      // the fresh samples around q, interpolated; the depth of the nearest one
+      int nearest = 0;
+      for (int i = 0; i < 4; ++i) {
+        out_a += ws[i] * texelFetch(fresh_a, cs[i], 0);
+        if (ws[i] > ws[nearest]) nearest = i;
+      }
+      near_b = texelFetch(fresh_b, cs[nearest], 0);
+      out_b = vec4(near_b.x, 0.0, near_b.z, 0.0);
     }
   }
   imageStore(next_a, q, out_a);

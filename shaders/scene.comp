@@ -1,8 +1,8 @@
 #version 450 core
 // One frame, composited at full resolution: the resolved cloud buffer (cloud_march.comp,
-// cloud_resolve.comp) over the sky (sky-view LUT + sun disk) or the ground (lit by sun and
-// sky, shadowed by the clouds' optical depth from the ground shadow map), with aerial
-// perspective on both. Output: linear spectral radiance at 680/550/440 nm
+// cloud_resolve.comp; aerial perspective already applied there) over the sky (sky-view LUT
+// + sun disk) or the ground (lit by sun and sky, shadowed by the clouds' optical depth from
+// the ground shadow map, seen through the aerial perspective). Output: linear spectral radiance at 680/550/440 nm
 // (W m^-2 sr^-1 nm^-1) in rgb, cloud opacity (1 - cloud transmittance) in a.
 #include "common.glsl"
 #include "frame_uniforms.glsl"
@@ -14,15 +14,13 @@
 #include "phase_function.glsl"
 #include "cloud_density.glsl"
 #include "cloud_lighting.glsl"
+#include "aerial_perspective_lookup.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 const float BACKGROUND_T_EPS = 1e-3;  // = CLOUD_T_EPS of cloud_march.comp
 layout(rgba32f, binding = 0) uniform writeonly image2D out_image;
 layout(binding = 6) uniform sampler2D sky_view_lut;
-layout(binding = 7) uniform sampler3D ap_inscatter;
-layout(binding = 8) uniform sampler3D ap_transmittance;
 layout(binding = 12) uniform sampler2D cloud_a;  // resolved cloud buffer (temporal_uniforms.glsl)
-layout(binding = 13) uniform sampler2D cloud_b;
 layout(binding = 14) uniform sampler2DArray ground_shadow;  // ground_shadow_map.glsl
 layout(std430, binding = 0) buffer FrameCounters {
   uint density_evals;
@@ -31,41 +29,21 @@ layout(std430, binding = 0) buffer FrameCounters {
 } counters;
 
 
-// Aerial perspective lookup: in-scatter (unit sun) and transmittance to distance t along
-// the pixel with normalised device coordinates ndc.
-// Slices sit at d_max (k / (n - 1))^2, so the slice coordinate is interpolated linearly in
-// distance between the two neighbouring slices (linear in k would overestimate the
-// in-scatter by up to 8 % near the camera).
-void aerial_perspective(vec2 ndc, float t, out vec3 inscatter, out vec3 transmittance) {
-  vec3 n = vec3(textureSize(ap_inscatter, 0));
-  float k = sqrt(saturate(t / U.ap_params.x)) * (n.z - 1.0);
-  float k0 = min(floor(k), n.z - 2.0);
-  float d0 = U.ap_params.x * (k0 / (n.z - 1.0)) * (k0 / (n.z - 1.0));
-  float d1 = U.ap_params.x * ((k0 + 1.0) / (n.z - 1.0)) * ((k0 + 1.0) / (n.z - 1.0));
-  k = k0 + saturate((t - d0) / max(d1 - d0, 1e-3));
-  vec3 tc = vec3((ndc * 0.5 + 0.5) * (n.xy - 1.0) + 0.5, k + 0.5) / n;
-  inscatter = textureLod(ap_inscatter, tc, 0.0).rgb;
-  transmittance = textureLod(ap_transmittance, tc, 0.0).rgb;
-}
-
-// The cloud buffer at frame pixel px. At divisor 1 its own pixel; else the four nearest
-// cloud pixels weighted bilinearly and by how alike their background distance is to this
-// pixel's (depth-aware upsampling: cloud over the horizon does not bleed onto the ground).
-void cloud_at(ivec2 px, float t_background, out vec4 a, out vec4 b) {
+// The cloud buffer at frame pixel px: radiance the clouds send to the camera (aerial
+// perspective included, cloud_march.comp) and their transmittance. At divisor 1 its own
+// pixel; else the four nearest cloud pixels weighted bilinearly and by how alike their
+// background distance is to this pixel's (depth-aware upsampling: cloud over the horizon
+// does not bleed onto the ground).
+vec4 cloud_at(ivec2 px, float t_background) {
   int r = TU.buffer_size.z;
-  if (r == 1) {
-    a = texelFetch(cloud_a, px, 0);
-    b = texelFetch(cloud_b, px, 0);
-    return;
-  }
+  if (r == 1) return texelFetch(cloud_a, px, 0);
   vec2 c = (vec2(px) + 0.5) / float(r) - 0.5;
   ivec2 c0 = clamp(ivec2(floor(c)), ivec2(0), TU.buffer_size.xy - 1);
   ivec2 c1 = min(c0 + 1, TU.buffer_size.xy - 1);
   vec2 f = clamp(c - vec2(c0), 0.0, 1.0);
   ivec2 cs[4] = ivec2[4](c0, ivec2(c1.x, c0.y), ivec2(c0.x, c1.y), c1);
   float ws[4] = float[4]((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y, f.x * f.y);
-  a = vec4(0.0);
-  b = vec4(0.0);
+  vec4 a = vec4(0.0);
   float wsum = 0.0;
   for (int i = 0; i < 4; ++i) {
     vec3 d = view_ray(cloud_pixel_ndc(vec2(cs[i])));
@@ -74,13 +52,10 @@ void cloud_at(ivec2 px, float t_background, out vec4 a, out vec4 b) {
     float likeness = t_background >= 1e29 || t_i >= 1e29 ? (t_background == t_i ? 1.0 : 1e-3)
                                                           : 1.0 / (1.0 + 8.0 * abs(t_i - t_background) / t_background);
     float w = ws[i] * likeness + 1e-6;
-    vec4 ai = texelFetch(cloud_a, cs[i], 0), bi = texelFetch(cloud_b, cs[i], 0);
-    a += w * ai;
-    b.x += w * bi.x;
+    a += w * texelFetch(cloud_a, cs[i], 0);
     wsum += w;
   }
-  a /= wsum;
-  b.x /= wsum;
+  return a / wsum;
 }
 
 // Radiance of the sun disk (uniform over its solid angle, through the atmosphere) along a
@@ -109,9 +84,8 @@ void main() {
   bool hits_ground = g.x >= 0.0;
   float t_ground = hits_ground ? g.x : 1e30;
 
-  vec4 cloud, cloud_b;
-  cloud_at(px, t_ground, cloud, cloud_b);
-  vec3 C = cloud.rgb;  // in-scattered radiance from clouds
+  vec4 cloud = cloud_at(px, t_ground);
+  vec3 C = cloud.rgb;  // radiance from the clouds, through the air in front of them
   float T = clamp(cloud.a, 0.0, 1.0);  // cloud transmittance
 
   // ---- background: ground or sky, faded out behind clouds as their transmittance falls
@@ -153,13 +127,7 @@ void main() {
     background += vec3(U.ground_albedo.w);
   }
 
-  // ---- aerial perspective on the clouds at their transmittance-weighted depth
   float opacity = 1.0 - T;
-  if (opacity > 0.0) {
-    vec3 ap_in, ap_T;
-    aerial_perspective(ndc, max(cloud_b.x, 0.0), ap_in, ap_T);
-    C = C * ap_T + opacity * E_sun * ap_in;
-  }
   vec3 radiance = C + T * (background_weight * background + sun_seen);
 
   if (any(isnan(radiance)) || any(isinf(radiance)) || any(lessThan(radiance, vec3(0.0)))) {

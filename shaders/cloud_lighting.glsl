@@ -81,8 +81,8 @@ float layer_shadow_optical_depth(int li, vec3 p, float ground_alt, vec3 sun, flo
 // Checked against Monte Carlo in renderer/model/slab_renderer_model.h (docs/ACCURACY.md).
 //
 // E_ground (ground_irradiance below) is the irradiance reflected by the ground under the
-// point; the caller evaluates it once per ray: the sun's zenith cosine at the ground below
-// a sample changes by ~1e-3 over the 10 km of a long in-cloud path (1.6e-4 rad per km).
+// point; the march holds it over 10 km of its ray (the sun's zenith angle at the ground
+// below a sample moves by 1.6e-4 rad per km).
 vec3 diffuse_inscatter(CloudLayerGpu L, float alt, float mu_s, vec3 T_atm, float coverage, vec3 E_sun,
                        vec3 E_ground, float w_up) {
   float sigma_nominal = L.optics.x * L.altitude.w * coverage;

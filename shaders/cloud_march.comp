@@ -29,6 +29,9 @@ layout(std430, binding = 0) buffer FrameCounters {
 } counters;
 
 const float CLOUD_T_EPS = 1e-3;  // early exit below this cloud transmittance
+// Distance (m) over which the ground irradiance under a cloud sample is held: the sun's
+// zenith angle at the ground below moves by 1.6e-3 rad over it (10 km / 6371 km).
+const float GROUND_IRRADIANCE_SPACING = 10000.0;
 
 // Light steps at distance t: the full count while the pixel footprint is finer than a
 // base-noise texel, falling in proportion beyond (no finer lighting than the pixel can
@@ -82,7 +85,10 @@ void main() {
   int depth_layer = n_iv > 0 ? iv[0].layer : -1;
   float strongest = 0.0;  // largest single-step contribution T * absorbed, and its layer
   int cloud_layer = -1;
-  vec3 E_ground = vec3(-1.0);  // ground_irradiance at the first in-cloud sample (< 0: not yet)
+  // ground_irradiance, evaluated at the first cloud sample and again every
+  // GROUND_IRRADIANCE_SPACING along the ray (at t_ground_irradiance)
+  vec3 E_ground = vec3(0.0);
+  float t_ground_irradiance = -1e30;
   if (n_iv > 0) {
     float jitter = hash12(uvec2(q) + uvec2(U.counts.y * 7919, U.counts.y * 104729));
     float nominal_du = total_len / U.quality.x;
@@ -144,7 +150,10 @@ void main() {
           }
           L_sun = E_sun * T_atm * s_sum;
         }
-        if (E_ground.r < 0.0) E_ground = ground_irradiance(ground_alt, mu_s, E_sun);  // once per ray
+        if (abs(t - t_ground_irradiance) > GROUND_IRRADIANCE_SPACING) {
+          E_ground = ground_irradiance(ground_alt, mu_s, E_sun);
+          t_ground_irradiance = t;
+        }
         vec3 L_diffuse = diffuse_inscatter(L, alt, mu_s, T_atm, coverage, E_sun, E_ground, -dot(dir, up));
         float absorbed = one_minus_exp_neg(sigma * dt);  // albedo 1: scattered fraction
         C += T * absorbed * (L_sun + L_diffuse);

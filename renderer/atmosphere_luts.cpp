@@ -42,28 +42,40 @@ AtmosphereLuts::AtmosphereLuts()
   }
 }
 
-bool AtmosphereLuts::same_view(const ViewKey& a, const ViewKey& b) {
+bool AtmosphereLuts::same_sky(const ViewKey& a, const ViewKey& b) {
+  return std::abs(a.planet.y - b.planet.y) < 1.0f && std::abs(a.sun_dir.z - b.sun_dir.z) < 1e-4f;
+}
+
+bool AtmosphereLuts::same_froxels(const ViewKey& a, const ViewKey& b) {
   const glm::vec3 sa(a.sun_dir), sb(b.sun_dir);
   return a.camera_forward == b.camera_forward && a.camera_right == b.camera_right && a.camera_up == b.camera_up &&
          a.view == b.view && std::abs(a.planet.y - b.planet.y) < 1.0f && glm::length(sa - sb) < 1e-4f &&
          std::abs(a.ap_params.x - b.ap_params.x) < 1.0f;
 }
 
-bool AtmosphereLuts::update_view_dependent(const FrameUniforms& u) {
+AtmosphereLuts::ViewLutUpdate AtmosphereLuts::update_view_dependent(const FrameUniforms& u) {
   const ViewKey key{u.camera_forward, u.camera_right, u.camera_up, u.view, u.planet, u.sun_dir, u.ap_params};
-  if (last_view_ && same_view(*last_view_, key)) return false;
-  last_view_ = key;
+  ViewLutUpdate done;
+  done.sky_view = !(last_sky_ && same_sky(*last_sky_, key));
+  done.aerial_perspective = !(last_froxels_ && same_froxels(*last_froxels_, key));
+  if (!done.sky_view && !done.aerial_perspective) return done;
   glBindTextureUnit(0, transmittance_.id());
   glBindTextureUnit(1, multiscatter_.id());
   glBindTextureUnit(2, irradiance_.id());
-  sky_view_prog_.use();
-  glBindImageTexture(0, sky_view_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-  dispatch_2d(kSkyViewW, kSkyViewH);
-  ap_prog_.use();
-  glBindImageTexture(0, ap_inscatter_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-  glBindImageTexture(1, ap_transmittance_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-  dispatch_2d(kApSize, kApSize);
-  return true;
+  if (done.sky_view) {
+    last_sky_ = key;
+    sky_view_prog_.use();
+    glBindImageTexture(0, sky_view_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    dispatch_2d(kSkyViewW, kSkyViewH);
+  }
+  if (done.aerial_perspective) {
+    last_froxels_ = key;
+    ap_prog_.use();
+    glBindImageTexture(0, ap_inscatter_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glBindImageTexture(1, ap_transmittance_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    dispatch_2d(kApSize, kApSize);
+  }
+  return done;
 }
 
 void AtmosphereLuts::bind_for_scene() const {

@@ -1,7 +1,7 @@
 // Atmosphere look-up tables (Hillaire 2020). The transmittance, multiple-scattering and
 // sky-irradiance LUTs depend only on the (fixed) atmosphere and are computed once; the
 // sky-view LUT and the aerial-perspective volume depend on the camera and the sun and are
-// recomputed per frame (DESIGN.md §4). Needs a current GL 4.5 context.
+// recomputed when those change (DESIGN.md §4). Needs a current GL 4.5 context.
 #pragma once
 
 #include "renderer/gl/gl_objects.h"
@@ -29,11 +29,21 @@ class AtmosphereLuts {
                   kIrradianceSize * kIrradianceSize + kSkyViewW * kSkyViewH + 2 * kApSize * kApSize * kApSize);
   }
 
+  // Which of the camera-dependent LUTs update_view_dependent recomputed.
+  struct ViewLutUpdate {
+    bool sky_view = false;            // sky-view LUT
+    bool aerial_perspective = false;  // aerial-perspective volume
+  };
+
   // Recomputes the camera-dependent LUTs (the frame uniform buffer must be bound at 0)
-  // unless their inputs are unchanged since the last call: camera altitude within 1 m,
-  // sun direction within 1e-4 rad (0.006 deg, ~1.4 s of sun motion), camera axes, field
-  // of view and aerial-perspective reach unchanged. Returns true when it recomputed.
-  bool update_view_dependent(const FrameUniforms& u);
+  // unless their inputs are unchanged since the last call. The sky-view LUT is
+  // parameterised relative to the local vertical and the sun's azimuth (Hillaire 2020
+  // §5.3), so it depends only on the camera altitude (kept within 1 m) and the sun's
+  // zenith cosine (within 1e-4, ~0.4 s of sun motion at most): turning the camera or
+  // flying level keeps it. The aerial-perspective volume is made of the camera's froxels:
+  // it also needs the same camera axes, field of view, reach and sun direction (within
+  // 1e-4 rad).
+  ViewLutUpdate update_view_dependent(const FrameUniforms& u);
 
   // Binds the LUTs to the texture units the scene shader expects (0, 1, 2, 6, 7, 8).
   void bind_for_scene() const;
@@ -43,8 +53,9 @@ class AtmosphereLuts {
   struct ViewKey {
     glm::vec4 camera_forward, camera_right, camera_up, view, planet, sun_dir, ap_params;
   };
-  static bool same_view(const ViewKey& a, const ViewKey& b);
-  std::optional<ViewKey> last_view_;
+  static bool same_sky(const ViewKey& a, const ViewKey& b);
+  static bool same_froxels(const ViewKey& a, const ViewKey& b);
+  std::optional<ViewKey> last_sky_, last_froxels_;
   gl::ShaderProgram sky_view_prog_, ap_prog_;
   gl::Texture transmittance_, multiscatter_, irradiance_, sky_view_, ap_inscatter_, ap_transmittance_;
 };

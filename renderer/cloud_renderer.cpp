@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "geodesy/solar_position.h"
 #include "renderer/frame_uniforms.h"
@@ -161,6 +162,14 @@ TemporalUniforms CloudRenderer::march_and_resolve(const ViewRequest& view, const
   dispatch_2d((cloud_w_ + stride - 1) / stride, (cloud_h_ + stride - 1) / stride);
   timer_.end();
 
+  if (stride == 1 && tu.grid.w == 0) {
+    // Every pixel marched and no history: the resolve would copy the fresh samples as they
+    // are (cloud_resolve.comp, no-history branch), so the fresh buffers become this
+    // frame's cloud buffer instead.
+    std::swap(fresh_a_, cloud_a_[next]);
+    std::swap(fresh_b_, cloud_b_[next]);
+    return tu;
+  }
   resolve_prog_.use();
   glBindTextureUnit(10, fresh_a_.id());
   glBindTextureUnit(11, fresh_b_.id());
@@ -191,7 +200,7 @@ FrameImage CloudRenderer::render(const ViewRequest& view, const RenderQuality& q
 
   timer_.reset();
   timer_.begin(0);
-  const bool view_luts_recomputed = atmosphere_.update_view_dependent(u);
+  const AtmosphereLuts::ViewLutUpdate view_luts = atmosphere_.update_view_dependent(u);
   timer_.end();
   atmosphere_.bind_for_scene();
   glBindTextureUnit(3, base_noise_.id());
@@ -224,7 +233,8 @@ FrameImage CloudRenderer::render(const ViewRequest& view, const RenderQuality& q
   const auto end = std::chrono::steady_clock::now();
 
   const geo::SolarPosition sp = geo::solar_position(view.unix_time_s, view.position.lat_deg, view.position.lon_deg);
-  img.stats.view_luts_recomputed = view_luts_recomputed;
+  img.stats.view_luts_recomputed = view_luts.sky_view || view_luts.aerial_perspective;
+  img.stats.sky_view_recomputed = view_luts.sky_view;
   img.stats.history_used = tu.grid.w != 0;
   img.stats.shadow_map_rebuilt = shadow_rebuilt;
   img.stats.shadow_map_ms = timer_.ms(4);

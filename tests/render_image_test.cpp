@@ -173,7 +173,9 @@ TEST(RenderImage, PolesRenderCleanlyAndContinuously) {
 }
 
 // View-dependent LUTs (sky view, aerial perspective) are recomputed only when their
-// inputs change; reusing them gives exactly the image a recomputation would.
+// inputs change; reusing them gives exactly the image a recomputation would. Turning the
+// camera redoes the aerial-perspective froxels but keeps the sky-view LUT (relative to the
+// local vertical and the sun's azimuth).
 TEST(RenderImage, ViewLutsAreReusedOnlyWhenTheViewIsUnchanged) {
   CloudRenderer& r = shared_renderer();
   r.set_weather(*weather::preset("broken-cumulus"));
@@ -184,13 +186,27 @@ TEST(RenderImage, ViewLutsAreReusedOnlyWhenTheViewIsUnchanged) {
   EXPECT_EQ(first.rgba, again.rgba);
   ViewRequest turned = v;
   turned.attitude.heading_deg += 0.5;
-  EXPECT_TRUE(r.render(turned).stats.view_luts_recomputed);
+  const FrameImage turned_reused = r.render(turned);
+  EXPECT_TRUE(turned_reused.stats.view_luts_recomputed);
+  EXPECT_FALSE(turned_reused.stats.sky_view_recomputed);
   ViewRequest later = v;
-  later.unix_time_s += 60.0;  // the sun moves 0.25 deg
-  EXPECT_TRUE(r.render(later).stats.view_luts_recomputed);
+  later.unix_time_s += 1800.0;  // the sun moves ~7 deg, its elevation by ~3 deg
+  const FrameImage later_img = r.render(later);
+  EXPECT_TRUE(later_img.stats.view_luts_recomputed);
+  EXPECT_TRUE(later_img.stats.sky_view_recomputed);
+  const FrameImage turned_recomputed = r.render(turned);  // both LUTs redone for `turned`
+  EXPECT_TRUE(turned_recomputed.stats.sky_view_recomputed);
+  EXPECT_EQ(turned_reused.rgba, turned_recomputed.rgba);
   const FrameImage back = r.render(v);  // recomputed for v again: same as the first frame
   EXPECT_TRUE(back.stats.view_luts_recomputed);
   EXPECT_EQ(first.rgba, back.rgba);
+  // (after the comparisons: these also move the ground shadow map's anchor and sun)
+  ViewRequest near_noon = v;
+  near_noon.unix_time_s += 60.0;  // 0.25 deg of azimuth, but the elevation stays within 1e-4 of its cosine:
+  EXPECT_FALSE(r.render(near_noon).stats.sky_view_recomputed);  // the sky-view LUT is kept
+  ViewRequest climbed = v;
+  climbed.position.alt_m += 5.0;  // the sky-view LUT depends on altitude
+  EXPECT_TRUE(r.render(climbed).stats.sky_view_recomputed);
 }
 
 }  // namespace

@@ -41,6 +41,8 @@ inline int run(int argc, char** argv) {
   app.add_option("--list", max_listed, "failures listed in full");
   std::string quality_name = "default";
   app.add_option("--quality", quality_name, "quality preset of the renders (temporal reuse off: single frames)");
+  bool footprint_jitter = false;
+  app.add_flag("--footprint-jitter", footprint_jitter, "march rays through a different point of the pixel each frame (RenderQuality::footprint_jitter)");
   CLI11_PARSE(app, argc, argv);
   std::optional<RenderQuality> quality = quality_preset(quality_name);
   if (!quality) {
@@ -48,6 +50,7 @@ inline int run(int argc, char** argv) {
     return 2;
   }
   quality->temporal_reuse = false;
+  quality->footprint_jitter = footprint_jitter;
   int w = 0, h = 0;
   if (std::sscanf(size.c_str(), "%dx%d", &w, &h) != 2 || w <= 0 || h <= 0 || w > 4096 || h > 4096) {
     std::fprintf(stderr, "--size: expected WxH, got %s\n", size.c_str());

@@ -66,6 +66,12 @@ struct RenderQuality {
   // of 1/16: a fast, close pass would otherwise show each pixel's history resampled and
   // re-lit for 16 frames (docs/PERFORMANCE.md, "A moving camera"). 0 = never.
   double fast_motion_px = 0.0;
+  // Pixel footprint sampling: each frame's march ray goes through a different point of its
+  // cloud pixel (a per-pixel rotated Kronecker sequence over frames) instead of the centre,
+  // so that temporal accumulation integrates the pixel's footprint (antialiasing) and the
+  // frame-to-frame noise of a pixel shows how much its value depends on where in the pixel
+  // it is sampled. Off: the centre, every frame.
+  bool footprint_jitter = false;
   double history_blend_min = 0.2;  // least weight of a fresh sample against its history
   bool neighbourhood_clamp = true;  // limit moved history to the range of fresh neighbours
   bool count_density_evaluations = true;

@@ -134,7 +134,7 @@ FrameUniforms make_frame_uniforms(const ViewRequest& view, const weather::Weathe
     g.noise_rotation = glm::mat4(glm::mat3(rot * enu_to_ecef));
   }
   u.counts = glm::ivec4(n_layers, static_cast<int>(view.frame_index % 65536u),
-                        quality.count_density_evaluations ? 1 : 0, 0);
+                        quality.count_density_evaluations ? 1 : 0, quality.footprint_jitter ? 1 : 0);
   return u;
 }
 

@@ -56,7 +56,17 @@ void main() {
   ivec2 cell = ivec2(gl_GlobalInvocationID.xy);
   ivec2 q = cell * TU.grid.x + TU.grid.yz;  // the cloud pixel this invocation marches
   if (any(greaterThanEqual(q, TU.buffer_size.xy))) return;
-  vec3 dir = view_ray(cloud_pixel_ndc(vec2(q)));
+  // the ray through the pixel centre, or (footprint jitter) through the point of this
+  // frame's sequence: offsets fract(r_q + k alpha) - 1/2 in cloud pixels, k the frame
+  // index, alpha the R2 sequence's (Roberts 2018: 1/g, 1/g^2, g^3 = g + 1), r_q a
+  // per-pixel rotation so that neighbours do not move in step
+  vec2 sub_pixel = vec2(0.0);
+  if (U.counts.w != 0) {
+    vec2 r_q = vec2(hash12(uvec2(q) * 3u + 11u), hash12(uvec2(q) * 5u + 17u));
+    sub_pixel = fract(r_q + float(U.counts.y) * vec2(0.7548776662, 0.5698402910)) - 0.5;
+  }
+  vec2 ndc_ray = cloud_pixel_ndc(vec2(q) + sub_pixel);
+  vec3 dir = view_ray(ndc_ray);
   float R = U.planet.x, h = U.planet.y, ground_alt = U.planet.z;
   vec3 sun = U.sun_dir.xyz;
   vec3 E_sun = U.sun_irradiance.rgb;
@@ -170,7 +180,7 @@ void main() {
   // depth: evaluated with the sample, so temporal reuse reuses it too
   if (opacity > 0.0) {
     vec3 ap_in, ap_T;
-    aerial_perspective(cloud_pixel_ndc(vec2(q)), max(depth, 0.0), ap_in, ap_T);
+    aerial_perspective(ndc_ray, max(depth, 0.0), ap_in, ap_T);
     C = C * ap_T + opacity * E_sun * ap_in;
   }
 

@@ -26,6 +26,7 @@
 // per-frame LUT work of ~20 ms does not hide the march cost).
 //
 // Usage: cloudbench [--size WxH (96x54)] [--time-size WxH (160x90)] [--out DIR] [--frames N (5)] [--quick]
+//                   [--ref-samples N (1: the pixel centre; N x N sub-pixel rays per reference pixel)]
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 
@@ -65,6 +66,7 @@ struct Options {
   fs::path out = "bench-out";
   int frames = 5;
   bool quick = false;
+  int ref_samples = 1;  // reference rays per pixel along each axis (ReferenceSettings::pixel_samples)
   std::string command;
 };
 
@@ -210,12 +212,16 @@ void write_exr(const fs::path& p, const Reference& r) {
 Reference reference_for(const accuracy::AccuracyScene& s, const Options& o) {
   const fs::path dir = o.out / "ref";
   fs::create_directories(dir);
-  const fs::path file = dir / (slug(s.name) + "_" + std::to_string(o.width) + "x" + std::to_string(o.height) + ".exr");
+  const std::string samples = o.ref_samples > 1 ? "_ss" + std::to_string(o.ref_samples) : "";
+  const fs::path file =
+      dir / (slug(s.name) + "_" + std::to_string(o.width) + "x" + std::to_string(o.height) + samples + ".exr");
   Reference r;
   if (fs::exists(file) && read_exr(file, r) && r.img.width == o.width && r.img.height == o.height) return r;
   const ViewRequest v = accuracy::accuracy_view(s, o.width, o.height);
   const auto t0 = std::chrono::steady_clock::now();
-  r.img = reference::render_reference(v, *weather::preset(s.preset));
+  reference::ReferenceSettings settings;
+  settings.pixel_samples = o.ref_samples;
+  r.img = reference::render_reference(v, *weather::preset(s.preset), settings);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   r.evals_px = r.img.stats.density_evals_per_pixel;
   r.cached = false;
@@ -314,6 +320,7 @@ void plot(const fs::path& file, const std::string& title, const std::vector<cons
 
 Options parse(int argc, char** argv) {
   Options o;
+  bool frames_given = false;
   for (int i = 0; i < argc; ++i) o.command += (i ? " " : "") + std::string(argv[i]);
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -334,16 +341,23 @@ Options parse(int argc, char** argv) {
     } else if (a == "--out") {
       o.out = value();
     } else if (a == "--frames") {
+      frames_given = true;
       o.frames = std::atoi(value().c_str());
       if (o.frames < 1) { std::fprintf(stderr, "cloudbench: --frames expects N >= 1\n"); std::exit(2); }
     } else if (a == "--quick") {
       o.quick = true;
+    } else if (a == "--ref-samples") {
+      o.ref_samples = std::atoi(value().c_str());
+      if (o.ref_samples < 1 || o.ref_samples > 16) {
+        std::fprintf(stderr, "cloudbench: --ref-samples expects 1..16\n");
+        std::exit(2);
+      }
     } else {
-      std::fprintf(stderr, "usage: cloudbench [--size WxH] [--time-size WxH] [--out DIR] [--frames N] [--quick]\n");
+      std::fprintf(stderr, "usage: cloudbench [--size WxH] [--time-size WxH] [--out DIR] [--frames N] [--quick] [--ref-samples N]\n");
       std::exit(a == "--help" ? 0 : 2);
     }
   }
-  if (o.quick && o.frames == 5) o.frames = 2;
+  if (o.quick && !frames_given) o.frames = 2;  // --quick times 2 frames unless --frames says otherwise
   return o;
 }
 
@@ -473,7 +487,8 @@ int main(int argc, char** argv) {
   // report.md
   std::ostringstream md;
   md << "# cloudbench report\n\nCommand: `" << o.command << "`  \n"
-     << "Error at " << o.width << "x" << o.height << ", cost (median ms) at " << o.time_w << "x" << o.time_h << ", " << configs.size() << " configurations x " << scene_names.size()
+     << "Error at " << o.width << "x" << o.height << " (reference: " << o.ref_samples << "x" << o.ref_samples
+     << " rays per pixel), cost (median ms) at " << o.time_w << "x" << o.time_h << ", " << configs.size() << " configurations x " << scene_names.size()
      << " scenes, " << o.frames << " timed frames after a warm-up (median render_ms). Total wall time "
      << num("%.1f", total_s) << " s, of which reference renders " << num("%.1f", ref_seconds)
      << " s (0 = all cached in " << (o.out / "ref").string() << ").\n\n"

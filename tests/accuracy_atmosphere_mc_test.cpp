@@ -91,7 +91,7 @@ TEST(AccuracyAtmosphereMc, ClearSkyNoonAndSunsetAgainstMonteCarlo) {
       const double heading = std::fmod(ps.sun_azimuth_deg + dir.azimuth_from_sun_deg, 360.0);
       const ViewRequest v = make_view(kLat, kLon, kCameraAlt, heading, dir.elevation_deg, sc.time_utc, 3, 3, 1.0);
       const reference::ReferenceScene rs = reference::make_reference_scene(v, clear);
-      const glm::dvec3 d = rs.camera.pixel_ray(1, 1);
+      const glm::dvec3 d = rs.camera.ray_at(1.5, 1.5);
       const FrameImage gpu = render_weather(clear, v);
       const FrameImage ref = reference::render_reference(v, clear);
       Sample s;

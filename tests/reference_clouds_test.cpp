@@ -55,9 +55,9 @@ ViewRequest level_view(double lat, double alt) {
 TEST(ReferenceScene, CameraRaysAndShellGeometry) {
   const ReferenceScene s = make_reference_scene(level_view(47.45, 2000.0), weather::Weather{});
   // The centre of the image looks east (rows from the top: pixel (0, 0) is up-left).
-  const glm::dvec3 c = glm::normalize(s.camera.pixel_ray(49, 24) + s.camera.pixel_ray(50, 25));
+  const glm::dvec3 c = glm::normalize(s.camera.ray_at(49.5, 24.5) + s.camera.ray_at(50.5, 25.5));
   EXPECT_NEAR(c.x, 1.0, 1e-9);
-  const glm::dvec3 top_left = s.camera.pixel_ray(0, 0);
+  const glm::dvec3 top_left = s.camera.ray_at(0.5, 0.5);
   EXPECT_GT(top_left.y, 0.0);        // left of east is north
   EXPECT_GT(top_left.z, 0.0);        // top row looks up
   EXPECT_NEAR(s.camera.tan_half_h, 1.0, 1e-12);

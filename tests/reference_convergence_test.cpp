@@ -6,6 +6,8 @@
 // test in reference_atmosphere_test.cpp and are not rebuilt here.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -76,6 +78,55 @@ TEST(ReferenceConvergence, HalvingTheStepsChangesTheImageByLessThanOnePercent) {
   EXPECT_LT(halving_error(kAboveDeckAtSunset, true, false), kTolerance) << kAboveDeckAtSunset.name;
   EXPECT_LT(halving_error(kAboveDeckAtSunset, false, true), kTolerance) << kAboveDeckAtSunset.name;
   EXPECT_LT(halving_error(kClearSky, false, true), kTolerance) << kClearSky.name;
+}
+
+}  // namespace
+}  // namespace cloudsvc::reference
+
+namespace cloudsvc::reference {
+namespace {
+
+// Footprint sampling (ReferenceSettings::pixel_samples = n): the mean of the n x n
+// sub-pixel centre rays. At W x H with n = 2 those rays are exactly the pixel-centre rays of
+// the same view at 2W x 2H, so the supersampled image must equal the 2 x 2 box average of
+// the doubled image; and it must differ from the centre samples where the image has edges.
+TEST(ReferenceFootprint, TwoByTwoSamplesAreTheBoxAverageOfTheDoubledImage) {
+  const Scene& s = kBrokenCumulusFromBelow;
+  ViewRequest v;
+  v.position = {47.45, 8.56, s.alt_m};
+  v.attitude = {s.heading_deg, s.pitch_deg, 0.0};
+  v.unix_time_s = *geo::parse_utc_iso8601(s.time_utc);
+  v.fov_deg = 60.0;
+  v.width = 24;
+  v.height = 14;
+  ReferenceSettings centre, footprint;
+  footprint.pixel_samples = 2;
+  const FrameImage a = render_reference(v, *weather::preset(s.preset), footprint);
+  const FrameImage c = render_reference(v, *weather::preset(s.preset), centre);
+  ViewRequest v2 = v;
+  v2.width = 2 * v.width;
+  v2.height = 2 * v.height;
+  const FrameImage b = render_reference(v2, *weather::preset(s.preset), centre);
+  double worst = 0.0, moved = 0.0;
+  for (int y = 0; y < v.height; ++y)
+    for (int x = 0; x < v.width; ++x)
+      for (int ch = 0; ch < 4; ++ch) {
+        double box = 0.0;
+        for (int j = 0; j < 2; ++j)
+          for (int i = 0; i < 2; ++i)
+            box += b.rgba[(static_cast<size_t>(2 * y + j) * v2.width + (2 * x + i)) * 4 + ch];
+        box *= 0.25;
+        const size_t k = (static_cast<size_t>(y) * v.width + x) * 4 + ch;
+        worst = std::max(worst, std::abs(a.rgba[k] - box) / (std::abs(box) + 1e-6));
+        moved = std::max(moved, std::abs(a.rgba[k] - c.rgba[k]) / (std::abs(c.rgba[k]) + 1e-3));
+      }
+  std::printf("2x2 footprint vs box of the doubled image: worst relative difference %.2e; vs the centre: %.2e\n", worst,
+              moved);
+  EXPECT_LT(worst, 1e-5);   // float output rounding
+  EXPECT_GT(moved, 1e-2);   // the footprint is not the centre at cloud edges
+  // the stats count every sub-pixel ray's evaluations (3.76x the centre's here: other rays)
+  EXPECT_GT(a.stats.density_evals_per_pixel, 3.0 * c.stats.density_evals_per_pixel);
+  EXPECT_LT(a.stats.density_evals_per_pixel, 5.0 * c.stats.density_evals_per_pixel);
 }
 
 }  // namespace

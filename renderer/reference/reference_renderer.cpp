@@ -18,6 +18,8 @@ FrameImage render_reference(const ViewRequest& view, const weather::Weather& wea
   if (view.width <= 0 || view.height <= 0) throw std::invalid_argument("render_reference: empty image size");
   if (!(settings.cloud_step_m > 0.0) || !(settings.light_step_m > 0.0) || !(settings.atmosphere_step_m > 0.0))
     throw std::invalid_argument("render_reference: steps must be positive");
+  if (settings.pixel_samples < 1 || settings.pixel_samples > 16)
+    throw std::invalid_argument("render_reference: pixel_samples must be 1..16");
   const auto start = std::chrono::steady_clock::now();
 
   AtmosphereTableSettings table_settings = settings.tables;
@@ -44,16 +46,26 @@ FrameImage render_reference(const ViewRequest& view, const weather::Weather& wea
   parallel_rows(view.height, settings.threads, [&](int y) {
     std::uint64_t evals = 0;
     for (int x = 0; x < view.width; ++x) {
-      const PixelRadiance px = integrator.shade(scene.camera.pixel_ray(x, y), evals);
-      glm::dvec3 rgb = px.radiance;
+      const int n = settings.pixel_samples;
+      glm::dvec3 rgb(0.0);
+      double opacity = 0.0;
+      for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+          const PixelRadiance px =
+              integrator.shade(scene.camera.ray_at(x + (i + 0.5) / n, y + (j + 0.5) / n), evals);
+          rgb += px.radiance;
+          opacity += px.opacity;
+        }
+      rgb /= static_cast<double>(n * n);
+      opacity /= static_cast<double>(n * n);
       bool bad = false;
       for (int c = 0; c < 3; ++c) bad |= !std::isfinite(rgb[c]) || rgb[c] < 0.0;
-      bad |= !std::isfinite(px.opacity);
+      bad |= !std::isfinite(opacity);
       if (bad) {
         ++row_nonfinite[static_cast<std::size_t>(y)];
         rgb = glm::dvec3(0.0);
       }
-      const double alpha = bad ? 0.0 : px.opacity;
+      const double alpha = bad ? 0.0 : opacity;
       if (alpha > 0.01) ++row_cloud[static_cast<std::size_t>(y)];
       float* out = &img.rgba[(static_cast<std::size_t>(y) * view.width + x) * 4];
       out[0] = static_cast<float>(rgb.r);

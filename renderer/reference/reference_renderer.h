@@ -5,7 +5,9 @@
 // evaluation code (camera, shell geometry, texture sampling, density, light, atmosphere)
 // is its own. See docs/REFERENCE.md for what it can and cannot catch and its convergence.
 //
-// Per pixel (ray through the pixel centre, no jitter):
+// Per pixel (ray through the pixel centre, no jitter; or the mean of pixel_samples^2 rays
+// through the centres of a pixel_samples x pixel_samples grid of sub-pixels: the box-filtered
+// pixel footprint):
 //   clouds: march every layer interval with steps of cloud_step_m (scaled per layer,
 //     cloud_lighting.h) until the cloud transmittance falls below min_transmittance;
 //     at each sample with sigma_t > 0: sun = E_sun T_atm sum_i b^i p_i e^{-a^i tau} with tau
@@ -46,6 +48,9 @@ struct ReferenceSettings {
                                      // tests/reference_atmosphere_test.cpp); threads are set from `threads`
   // Model variant (see cloud_field.h); false = the shader's definition
   bool honour_stratiform = true;
+  // Rays per pixel along each axis (stratified: the centres of n x n sub-pixels), averaged:
+  // 1 = the pixel centre (what the GPU's march samples without footprint jitter).
+  int pixel_samples = 1;
   // Shared inputs (sizes and seeds as RendererConfig's defaults)
   InputConfig inputs;
   int threads = 2;

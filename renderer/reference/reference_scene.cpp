@@ -36,9 +36,9 @@ glm::dmat3 field_rotation(const weather::Wind& wind, const WindAnchor& anchor, d
   return R;
 }
 
-glm::dvec3 ReferenceCamera::pixel_ray(int x, int y) const {
-  const double ndc_x = (x + 0.5) / width * 2.0 - 1.0;
-  const double ndc_y = 1.0 - (y + 0.5) / height * 2.0;  // row 0 is the top
+glm::dvec3 ReferenceCamera::ray_at(double px, double py) const {
+  const double ndc_x = px / width * 2.0 - 1.0;
+  const double ndc_y = 1.0 - py / height * 2.0;  // row 0 is the top
   return glm::normalize(forward + ndc_x * tan_half_h * right + ndc_y * tan_half_v * up);
 }
 

@@ -40,8 +40,9 @@ struct ReferenceCamera {
   double tan_half_h = 0.0, tan_half_v = 0.0;  // tan(vfov/2) = tan(hfov/2) * height / width
   int width = 0, height = 0;
 
-  // Ray through the centre of pixel (x, y), rows from the top.
-  glm::dvec3 pixel_ray(int x, int y) const;
+  // Ray through the point (px, py) of the image in pixel units from its top-left corner
+  // (the centre of pixel (x, y) is (x + 0.5, y + 0.5)).
+  glm::dvec3 ray_at(double px, double py) const;
 };
 
 struct ShellFrame {

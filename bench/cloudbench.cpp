@@ -96,6 +96,7 @@ std::string knob_label(const RenderQuality& q) {
   if (q.level_of_detail) l += " LOD";
   if (q.cloud_resolution_divisor > 1) l += " res1/" + std::to_string(q.cloud_resolution_divisor);
   if (q.temporal_reuse) l += " T1/" + std::to_string(q.temporal_stride * q.temporal_stride);
+  if (q.footprint_jitter) l += " footprint";
   return l;
 }
 
@@ -130,6 +131,11 @@ std::vector<std::pair<std::string, RenderQuality>> skip_configs() {
   v.push_back({"default + light volume", with([](RenderQuality& q) {
                  q.ground_shadow_map = true; q.light_volume = true; q.long_step_factor = 2; q.temporal_reuse = true;
                  q.temporal_stride = 4; q.fast_motion_px = 1.0; })});
+  v.push_back({"temporal 1/1 + footprint jitter", with([](RenderQuality& q) {
+                 q.temporal_reuse = true; q.temporal_stride = 1; q.footprint_jitter = true; })});
+  v.push_back({"default + footprint jitter", with([](RenderQuality& q) {
+                 q.ground_shadow_map = true; q.long_step_factor = 2; q.temporal_reuse = true;
+                 q.temporal_stride = 4; q.fast_motion_px = 1.0; q.footprint_jitter = true; })});
   v.push_back({"long x4 + LOD + half res + temporal 1/4", with([](RenderQuality& q) {
                  q.ground_shadow_map = true; q.long_step_factor = 4; q.level_of_detail = true;
                  q.cloud_resolution_divisor = 2; q.temporal_reuse = true; q.temporal_stride = 2; })});

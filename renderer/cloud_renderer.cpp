@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "geodesy/solar_position.h"
+#include "renderer/coverage_cull.h"
 #include "renderer/frame_uniforms.h"
 #include "renderer/scene_setup.h"
 #include "renderer/temporal_reprojection.h"
@@ -126,6 +127,34 @@ void CloudRenderer::ensure_targets(int w, int h, int divisor) {
   prev_view_.reset();
 }
 
+// Layers with no cloud anywhere this frame can see (renderer/coverage_cull.h) get coverage
+// 0 in the uniforms, which the march and the shadow map skip (shaders/cloud_intervals.glsl).
+// A change of that set changes the cloud field the shadow map was built from: the
+// weather generation is bumped. Returns the set (bit i: layer i).
+unsigned CloudRenderer::cull_layers_without_cloud_in_view(FrameUniforms& u, const ViewRequest& view) {
+  if (weather_.layers.empty()) return 0;
+  const weather::WeatherTimeline::Blend b = timeline_.at(view.unix_time_s);
+  double highest = 0.0;
+  for (const auto& l : weather_.layers) highest = std::max(highest, l.top_m);
+  const double sun_el = geo::solar_position(view.unix_time_s, view.position.lat_deg, view.position.lon_deg).elevation_deg;
+  const double cap = cloud_influence_cap_rad(u.planet.x, u.planet.w, highest, sun_el);
+  float m = max_coverage_in_cap(*b.from, view.position.lat_deg, view.position.lon_deg, cap);
+  if (b.to && b.to != b.from && b.weight > 0.0f)
+    m = std::max(m, max_coverage_in_cap(*b.to, view.position.lat_deg, view.position.lon_deg, cap));
+  unsigned mask = 0;
+  const int n = std::min<int>(static_cast<int>(weather_.layers.size()), u.counts.x);
+  for (int i = 0; i < n; ++i)
+    if (weather::local_coverage(static_cast<float>(weather_.layers[static_cast<size_t>(i)].coverage), m) <= 0.0f) {
+      mask |= 1u << i;
+      u.layers[i].altitude.z = 0.0f;
+    }
+  if (mask != culled_layers_) {
+    culled_layers_ = mask;
+    ++weather_generation_;
+  }
+  return mask;
+}
+
 // The cloud march over this frame's fresh cloud pixels, then the temporal resolve into
 // cloud_a_/cloud_b_[history_] (the frame and temporal uniforms must be bound).
 TemporalUniforms CloudRenderer::march_and_resolve(const ViewRequest& view, const RenderQuality& quality) {
@@ -191,7 +220,8 @@ FrameImage CloudRenderer::render(const ViewRequest& view, const RenderQuality& q
 
   if (!wind_anchor_) wind_anchor_ = WindAnchor{view.position, view.unix_time_s};
   update_weather_textures(view.unix_time_s);
-  const FrameUniforms u = make_frame_uniforms(view, weather_, quality, facts_, &*wind_anchor_);
+  FrameUniforms u = make_frame_uniforms(view, weather_, quality, facts_, &*wind_anchor_);
+  const unsigned culled = cull_layers_without_cloud_in_view(u, view);
   glNamedBufferSubData(uniforms_.id(), 0, sizeof(FrameUniforms), &u);
   glBindBufferBase(GL_UNIFORM_BUFFER, 0, uniforms_.id());
   const Counters zero{0, 0, 0};
@@ -237,6 +267,7 @@ FrameImage CloudRenderer::render(const ViewRequest& view, const RenderQuality& q
   img.stats.sky_view_recomputed = view_luts.sky_view;
   img.stats.history_used = tu.grid.w != 0;
   img.stats.shadow_map_rebuilt = shadow_rebuilt;
+  img.stats.layers_without_cloud_in_view = static_cast<int>(__builtin_popcount(culled));
   img.stats.shadow_map_ms = timer_.ms(4);
   img.stats.marched_fraction = tu.grid.x == 0 ? 0.0 : 1.0 / (static_cast<double>(tu.grid.x) * tu.grid.x);
   img.stats.gpu_memory_bytes = static_cast<std::int64_t>(

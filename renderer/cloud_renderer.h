@@ -55,6 +55,7 @@ class CloudRenderer {
   void update_weather_textures(double utc_s);
   void ensure_targets(int w, int h, int divisor);
   TemporalUniforms march_and_resolve(const ViewRequest& view, const RenderQuality& quality);
+  unsigned cull_layers_without_cloud_in_view(FrameUniforms& u, const ViewRequest& view);
 
   RendererConfig config_;
   weather::Weather weather_;
@@ -63,6 +64,7 @@ class CloudRenderer {
   AtmosphereLuts atmosphere_;
   GroundShadowMap shadow_map_;
   std::uint64_t weather_generation_ = 0;  // bumped by every change of the cloud field's inputs
+  unsigned culled_layers_ = 0;            // bit i: layer i had no cloud within reach last frame
   float uploaded_blend_ = -1.0f;          // keyframe blend weight the shadow map saw
   gl::ShaderProgram march_prog_, resolve_prog_, scene_prog_;
   ResourceFacts facts_{};

@@ -39,6 +39,9 @@ int ray_intervals(float mu, float t_limit, float t_ref, out Interval iv[MAX_INTE
   int n_iv = 0;
   total_len = 0.0;
   for (int li = 0; li < U.counts.x; ++li) {
+    // coverage 0: no cloud anywhere (a clear layer, or none within reach of this frame,
+    // renderer/coverage_cull.h): nothing to march, and its steps go to the other layers
+    if (U.layers[li].altitude.z <= 0.0) continue;
     Interval a, b;
     int n = layer_intervals(li, mu, t_limit, a, b);
     if (n >= 1) { iv[n_iv++] = a; total_len += march_coordinate(a.t1, t_ref) - march_coordinate(a.t0, t_ref); }

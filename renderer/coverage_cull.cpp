@@ -1,0 +1,57 @@
+#include "renderer/coverage_cull.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace cloudsvc {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kLightMarchM = 4000.0;     // LIGHT_MAX_DIST of shaders/cloud_lighting.glsl
+constexpr double kMaxShadowRunM = 1.0e6;    // a shadow ray's horizontal run is capped here
+constexpr double kMinShadowElevationDeg = 1.0;
+}  // namespace
+
+float max_coverage_in_cap(const weather::WeatherMap& map, double lat_deg, double lon_deg, double cap_rad) {
+  if (map.width <= 0 || map.height <= 0 || map.rgba.empty()) return 0.5f;  // neutral, as sample() gives
+  const double W = map.width, H = map.height;
+  const double texel_lat = 180.0 / H, texel_lon = 360.0 / W;
+  const double a_deg = cap_rad * 180.0 / kPi;
+  const double lat0 = lat_deg - a_deg - texel_lat, lat1 = lat_deg + a_deg + texel_lat;
+  // rows whose texel centres lie within the widened latitude range (row j centred at
+  // -90 + (j + 0.5) 180 / H), plus the neighbour the bilinear footprint reaches
+  const int j0 = std::max(0, static_cast<int>(std::floor((lat0 + 90.0) / texel_lat - 0.5)) - 1);
+  const int j1 = std::min(map.height - 1, static_cast<int>(std::ceil((lat1 + 90.0) / texel_lat - 0.5)) + 1);
+  bool all_lon = lat0 <= -90.0 || lat1 >= 90.0 || cap_rad >= 0.5 * kPi;
+  double half_lon_deg = 180.0;
+  if (!all_lon) {
+    const double s = std::sin(cap_rad) / std::cos(lat_deg * kPi / 180.0);  // spherical cap's longitude extent
+    if (s >= 1.0) all_lon = true;
+    else half_lon_deg = std::asin(s) * 180.0 / kPi + texel_lon;
+  }
+  int i0 = 0, i1 = map.width - 1;
+  if (!all_lon) {
+    i0 = static_cast<int>(std::floor((lon_deg - half_lon_deg + 180.0) / texel_lon - 0.5)) - 1;
+    i1 = static_cast<int>(std::ceil((lon_deg + half_lon_deg + 180.0) / texel_lon - 0.5)) + 1;
+    if (i1 - i0 + 1 >= map.width) { i0 = 0; i1 = map.width - 1; }
+  }
+  float m = 0.0f;
+  for (int j = j0; j <= j1; ++j)
+    for (int i = i0; i <= i1; ++i) {
+      const int wi = ((i % map.width) + map.width) % map.width;  // wraps across the antimeridian
+      const float v = map.rgba[(static_cast<size_t>(j) * map.width + wi) * 4];
+      if (!(v <= m)) m = std::isfinite(v) ? v : 1.0f;  // a non-finite texel counts as cloud
+    }
+  return m;
+}
+
+double cloud_influence_cap_rad(double R_m, double reach_m, double highest_top_m, double sun_elevation_deg) {
+  double run = reach_m + kLightMarchM;
+  if (sun_elevation_deg > -1.0) {  // sun (or its upper limb, with refraction) above the horizon
+    const double el = std::max(sun_elevation_deg, kMinShadowElevationDeg) * kPi / 180.0;
+    run += std::min(std::max(highest_top_m, 0.0) / std::tan(el), kMaxShadowRunM);
+  }
+  return std::min(run / R_m, kPi);
+}
+
+}  // namespace cloudsvc

@@ -1,0 +1,112 @@
+// Layers with no cloud within a frame's reach are not marched (renderer/coverage_cull.h):
+// the cap scan finds a single cloudy texel wherever it is inside the cap (across the
+// antimeridian, over a pole) and none outside it; a frame whose layer the weather map
+// clears around the camera marches nothing and looks exactly like a clear sky, and one
+// with cloud just inside the cap still marches the layer.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "geodesy/geodetic.h"
+#include "render_test_support.h"
+#include "renderer/coverage_cull.h"
+#include "weather/weather_map.h"
+#include "weather/weather_timeline.h"
+
+namespace cloudsvc::test {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// A 720x360 map (0.5 deg texels), coverage modulation 0 except m at the texel containing
+// (lat, lon).
+weather::WeatherMap one_cloudy_texel(double lat, double lon, float m) {
+  weather::WeatherMap map;
+  map.width = 720;
+  map.height = 360;
+  map.rgba.assign(static_cast<size_t>(map.width) * map.height * 4, 0.0f);
+  const int i = static_cast<int>(std::floor((lon + 180.0) / 0.5)) % map.width;
+  const int j = std::min(map.height - 1, static_cast<int>(std::floor((lat + 90.0) / 0.5)));
+  map.rgba[(static_cast<size_t>(j) * map.width + i) * 4] = m;
+  return map;
+}
+
+TEST(CoverageCull, CapScanFindsACloudyTexelOnlyInsideTheCap) {
+  const double cap = 300e3 / 6371e3;  // 300 km: 2.7 deg
+  // due north of the camera, inside and (well) outside the cap
+  EXPECT_FLOAT_EQ(max_coverage_in_cap(one_cloudy_texel(47.0 + 2.0, 8.0, 0.7f), 47.0, 8.0, cap), 0.7f);
+  EXPECT_FLOAT_EQ(max_coverage_in_cap(one_cloudy_texel(47.0 + 5.0, 8.0, 0.7f), 47.0, 8.0, cap), 0.0f);
+  // east at 47 N: 2.7 deg of arc is 4 deg of longitude there
+  EXPECT_FLOAT_EQ(max_coverage_in_cap(one_cloudy_texel(47.0, 8.0 + 3.6, 0.7f), 47.0, 8.0, cap), 0.7f);
+  EXPECT_FLOAT_EQ(max_coverage_in_cap(one_cloudy_texel(47.0, 8.0 + 6.0, 0.7f), 47.0, 8.0, cap), 0.0f);
+  // across the antimeridian
+  EXPECT_FLOAT_EQ(max_coverage_in_cap(one_cloudy_texel(0.0, -179.0, 0.4f), 0.0, 179.5, cap), 0.4f);
+  EXPECT_FLOAT_EQ(max_coverage_in_cap(one_cloudy_texel(0.0, 179.0, 0.4f), 0.0, -179.5, cap), 0.4f);
+  // over the pole: the other side of the pole is within the cap
+  EXPECT_FLOAT_EQ(max_coverage_in_cap(one_cloudy_texel(89.0, -170.0, 0.9f), 89.0, 10.0, cap), 0.9f);
+  // a non-finite texel counts as cloud
+  weather::WeatherMap bad = one_cloudy_texel(47.0, 8.0, 0.0f);
+  bad.rgba[(static_cast<size_t>(274) * bad.width + 376) * 4] = NAN;
+  EXPECT_FLOAT_EQ(max_coverage_in_cap(bad, 47.0, 8.0, cap), 1.0f);
+}
+
+TEST(CoverageCull, CapCoversReachLightMarchAndLowSunShadows) {
+  const double R = 6371e3;
+  EXPECT_NEAR(cloud_influence_cap_rad(R, 200e3, 2000.0, -10.0) * R, 204e3, 1.0);  // night: no shadow run
+  EXPECT_NEAR(cloud_influence_cap_rad(R, 200e3, 2000.0, 45.0) * R, 206e3, 1.0);   // 2 km / tan 45
+  EXPECT_NEAR(cloud_influence_cap_rad(R, 200e3, 2000.0, 0.2) * R, 204e3 + 2000.0 / std::tan(kPi / 180.0), 1.0);
+  EXPECT_LE(cloud_influence_cap_rad(R, 1e8, 1e4, 30.0), kPi);
+}
+
+// Scattered cumulus (one layer, coverage 0.35, which the map can clear) over Zurich with the weather map's coverage set to 0 over 40-55 N, 0-17 E
+// (1.5 deg from the camera at least: beyond the ~200 km reach at 1500 m, the 4 km light
+// march and the 2.3 km shadow run of the noon sun); then the same with a cloudy patch 1 deg
+// from the camera.
+TEST(CoverageCull, AFrameWhoseLayerHasNoCloudInReachMarchesNothing) {
+  CloudRenderer& r = shared_renderer();
+  const ViewRequest v = make_view(47.45, 8.56, 1500.0, 200.0, 5.0, "2026-06-21T11:30:00Z", 96, 54);
+  r.set_weather(*weather::preset("clear"));
+  const FrameImage clear = r.render(v);
+
+  auto tile_around = [&](float m_patch) {
+    weather::MapTile t;
+    t.lat_min_deg = 40.0;
+    t.lat_max_deg = 55.0;
+    t.lon_min_deg = 0.0;
+    t.lon_max_deg = 17.0;
+    t.width = 68;   // 0.25 deg
+    t.height = 60;
+    t.channels = 1;
+    t.valid_at_utc_s = v.unix_time_s - 3600.0;
+    t.data.assign(static_cast<size_t>(t.width) * t.height, 0.0f);
+    // a 0.5 x 0.5 deg patch centred ~1 deg north-west of the camera
+    for (int j = 32; j < 34; ++j)
+      for (int i = 29; i < 31; ++i) t.data[static_cast<size_t>(j) * t.width + i] = m_patch;
+    return t;
+  };
+
+  r.set_weather(*weather::preset("scattered-cumulus"));
+  r.apply_tile(tile_around(0.0f), v.unix_time_s - 3600.0);
+  const FrameImage first = r.render(v);
+  const FrameImage culled = r.render(v);
+  EXPECT_EQ(culled.stats.layers_without_cloud_in_view, 1);
+  EXPECT_EQ(culled.stats.density_evals_per_pixel, 0.0);  // nothing marched (shadow map not rebuilt)
+  EXPECT_EQ(culled.stats.cloud_pixels, 0);
+  double worst = 0.0;
+  for (size_t k = 0; k < clear.rgba.size(); ++k)
+    worst = std::max(worst, std::abs(static_cast<double>(culled.rgba[k]) - clear.rgba[k]) / (std::abs(clear.rgba[k]) + 1e-4));
+  std::printf("culled layer vs clear sky: worst relative difference %.2e (first frame %d layers culled)\n", worst,
+              first.stats.layers_without_cloud_in_view);
+  EXPECT_LT(worst, 1e-5);
+
+  r.set_weather(*weather::preset("scattered-cumulus"));
+  r.apply_tile(tile_around(1.0f), v.unix_time_s - 3600.0);
+  r.render(v);
+  const FrameImage kept = r.render(v);
+  EXPECT_EQ(kept.stats.layers_without_cloud_in_view, 0);
+  EXPECT_GT(kept.stats.density_evals_per_pixel, 0.0);
+}
+
+}  // namespace
+}  // namespace cloudsvc::test

@@ -1,5 +1,8 @@
 #include "renderer/atmosphere_luts.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <cmath>
 
 namespace cloudsvc {
@@ -43,7 +46,9 @@ AtmosphereLuts::AtmosphereLuts()
 }
 
 bool AtmosphereLuts::same_sky(const ViewKey& a, const ViewKey& b) {
-  return std::abs(a.planet.y - b.planet.y) < 1.0f && std::abs(a.sun_dir.z - b.sun_dir.z) < 1e-4f;
+  const float zenith_a = std::acos(std::clamp(a.sun_dir.z, -1.0f, 1.0f));
+  const float zenith_b = std::acos(std::clamp(b.sun_dir.z, -1.0f, 1.0f));
+  return std::abs(a.planet.y - b.planet.y) < 1.0f && std::abs(zenith_a - zenith_b) < 1e-4f;
 }
 
 bool AtmosphereLuts::same_froxels(const ViewKey& a, const ViewKey& b) {

@@ -39,8 +39,8 @@ class AtmosphereLuts {
   // unless their inputs are unchanged since the last call. The sky-view LUT is
   // parameterised relative to the local vertical and the sun's azimuth (Hillaire 2020
   // §5.3), so it depends only on the camera altitude (kept within 1 m) and the sun's
-  // zenith cosine (within 1e-4, ~0.4 s of sun motion at most): turning the camera or
-  // flying level keeps it. The aerial-perspective volume is made of the camera's froxels:
+  // zenith angle (within 1e-4 rad, at least ~1.4 s of sun motion; longer near solar noon,
+  // when the elevation hardly changes): turning the camera or flying level keeps it. The aerial-perspective volume is made of the camera's froxels:
   // it also needs the same camera axes, field of view, reach and sun direction (within
   // 1e-4 rad).
   ViewLutUpdate update_view_dependent(const FrameUniforms& u);

@@ -134,24 +134,34 @@ void CloudRenderer::ensure_targets(int w, int h, int divisor) {
 unsigned CloudRenderer::cull_layers_without_cloud_in_view(FrameUniforms& u, const ViewRequest& view) {
   if (weather_.layers.empty()) return 0;
   const weather::WeatherTimeline::Blend b = timeline_.at(view.unix_time_s);
-  double highest = 0.0;
-  for (const auto& l : weather_.layers) highest = std::max(highest, l.top_m);
-  const double sun_el = geo::solar_position(view.unix_time_s, view.position.lat_deg, view.position.lon_deg).elevation_deg;
-  const double cap = cloud_influence_cap_rad(u.planet.x, u.planet.w, highest, sun_el);
-  float m = max_coverage_in_cap(*b.from, view.position.lat_deg, view.position.lon_deg, cap);
-  if (b.to && b.to != b.from && b.weight > 0.0f)
-    m = std::max(m, max_coverage_in_cap(*b.to, view.position.lat_deg, view.position.lon_deg, cap));
+  // The largest coverage modulation over the cap (both keyframes while one fades in).
+  auto max_m = [&](double cap) {
+    float m = max_coverage_in_cap(*b.from, view.position.lat_deg, view.position.lon_deg, cap);
+    if (b.to && b.to != b.from && b.weight > 0.0f)
+      m = std::max(m, max_coverage_in_cap(*b.to, view.position.lat_deg, view.position.lon_deg, cap));
+    return m;
+  };
+  const double cap = cloud_influence_cap_rad(u.planet.x, u.planet.w);
+  const float m = max_m(cap);
+  // Hysteresis: a layer starts being culled only while the cap 10 % wider is clear too, so
+  // a camera at the edge of a clear region does not flip the set (and rebuild the shadow
+  // map) every frame.
+  const float m_wide = max_m(std::min(1.1 * cap, 3.14159265358979));  // >= m
   unsigned mask = 0;
   const int n = std::min<int>(static_cast<int>(weather_.layers.size()), u.counts.x);
-  for (int i = 0; i < n; ++i)
-    if (weather::local_coverage(static_cast<float>(weather_.layers[static_cast<size_t>(i)].coverage), m) <= 0.0f) {
+  for (int i = 0; i < n; ++i) {
+    const float c = static_cast<float>(weather_.layers[static_cast<size_t>(i)].coverage);
+    const bool was = (culled_layers_ >> i) & 1u;
+    if (weather::local_coverage(c, was ? m : m_wide) <= 0.0f) {
       mask |= 1u << i;
       u.layers[i].altitude.z = 0.0f;
     }
-  if (mask != culled_layers_) {
-    culled_layers_ = mask;
-    ++weather_generation_;
   }
+  // A layer that comes back into reach was left out of the shadow map (and light volume)
+  // since it was culled: rebuild them. A newly culled layer has no cloud within reach, so
+  // what they hold stays valid.
+  if (culled_layers_ & ~mask) ++weather_generation_;
+  culled_layers_ = mask;
   return mask;
 }
 

@@ -8,8 +8,6 @@ namespace cloudsvc {
 namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kLightMarchM = 4000.0;     // LIGHT_MAX_DIST of shaders/cloud_lighting.glsl
-constexpr double kMaxShadowRunM = 1.0e6;    // a shadow ray's horizontal run is capped here
-constexpr double kMinShadowElevationDeg = 1.0;
 }  // namespace
 
 float max_coverage_in_cap(const weather::WeatherMap& map, double lat_deg, double lon_deg, double cap_rad) {
@@ -45,13 +43,9 @@ float max_coverage_in_cap(const weather::WeatherMap& map, double lat_deg, double
   return m;
 }
 
-double cloud_influence_cap_rad(double R_m, double reach_m, double highest_top_m, double sun_elevation_deg) {
-  double run = reach_m + kLightMarchM;
-  if (sun_elevation_deg > -1.0) {  // sun (or its upper limb, with refraction) above the horizon
-    const double el = std::max(sun_elevation_deg, kMinShadowElevationDeg) * kPi / 180.0;
-    run += std::min(std::max(highest_top_m, 0.0) / std::tan(el), kMaxShadowRunM);
-  }
-  return std::min(run / R_m, kPi);
+double cloud_influence_cap_rad(double R_m, double reach_m) {
+  // the arc to a point at chord distance d exceeds d by < 0.1 % at 1000 km: 1 % margin
+  return std::min((1.01 * reach_m + kLightMarchM) / R_m, kPi);
 }
 
 }  // namespace cloudsvc

@@ -13,13 +13,14 @@ namespace cloudsvc {
 
 // Largest coverage modulation m (channel r) of map over the texels whose bilinear
 // footprint touches the cap of angular radius cap_rad (radians) around (lat_deg, lon_deg);
-// the whole map near a pole or for a cap of a quarter sphere or more.
+// the whole map near a pole or for a hemisphere or more.
 float max_coverage_in_cap(const weather::WeatherMap& map, double lat_deg, double lon_deg, double cap_rad);
 
 // Angular radius (rad) of the cap a frame's clouds can affect, on a sphere of radius R:
-// the march reach (m, along the ground), plus the longest light march (4 km), plus, with
-// the sun above the horizon, the horizontal run of a shadow ray from the ground up to the
-// top of the highest layer at the sun's elevation (at least 1 deg; at most 1000 km).
-double cloud_influence_cap_rad(double R_m, double reach_m, double highest_top_m, double sun_elevation_deg);
+// the march reach (m; horizon_reach_m, renderer/scene_setup.h: the camera's horizon plus
+// that of the highest layer top, at least 12 km) with 1 % margin, plus the longest light
+// march (4 km). The ground's cloud shadows are inside it: a shadow ray from visible ground
+// leaves the highest layer within that layer's horizon distance, which the reach includes.
+double cloud_influence_cap_rad(double R_m, double reach_m);
 
 }  // namespace cloudsvc

@@ -39,13 +39,16 @@ int ray_intervals(float mu, float t_limit, float t_ref, out Interval iv[MAX_INTE
   int n_iv = 0;
   total_len = 0.0;
   for (int li = 0; li < U.counts.x; ++li) {
-    // coverage 0: no cloud anywhere (a clear layer, or none within reach of this frame,
-    // renderer/coverage_cull.h): nothing to march, and its steps go to the other layers
-    if (U.layers[li].altitude.z <= 0.0) continue;
     Interval a, b;
     int n = layer_intervals(li, mu, t_limit, a, b);
-    if (n >= 1) { iv[n_iv++] = a; total_len += march_coordinate(a.t1, t_ref) - march_coordinate(a.t0, t_ref); }
-    if (n == 2) { iv[n_iv++] = b; total_len += march_coordinate(b.t1, t_ref) - march_coordinate(b.t0, t_ref); }
+    if (n >= 1) total_len += march_coordinate(a.t1, t_ref) - march_coordinate(a.t0, t_ref);
+    if (n == 2) total_len += march_coordinate(b.t1, t_ref) - march_coordinate(b.t0, t_ref);
+    // coverage 0: no cloud anywhere (a clear layer, or none within reach of this frame,
+    // renderer/coverage_cull.h): nothing to march; its length stays in the step budget, so
+    // the other layers are marched with exactly the steps they get without the cull
+    if (U.layers[li].altitude.z <= 0.0) continue;
+    if (n >= 1) iv[n_iv++] = a;
+    if (n == 2) iv[n_iv++] = b;
   }
   for (int i = 1; i < n_iv; ++i) {  // insertion sort
     Interval x = iv[i];

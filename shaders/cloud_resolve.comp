@@ -129,10 +129,12 @@ void main() {
       if (moving || (TU.buffer_size.w != 0 && moved > 0.5)) {
         for (int i = 0; i < 4; ++i) {
           fresh_at[i] = texelFetch(fresh_a, cs[i], 0);
-          vec2 pos_i = vec2(cs[i] * s + TU.grid.yz) + 0.5 + motion;
-          vec4 hi_ = textureLod(history_a, pos_i / vec2(TU.buffer_size.xy), 0.0);
-          float y_f = dot(fresh_at[i].rgb, vec3(1.0)), y_h = dot(hi_.rgb, vec3(1.0));
-          n_changed += (abs(fresh_at[i].a - hi_.a) > CHANGE_T || abs(y_f - y_h) > CHANGE_REL * (y_f + y_h) + 1e-9) ? 1 : 0;
+          if (moving) {
+            vec2 pos_i = vec2(cs[i] * s + TU.grid.yz) + 0.5 + motion;
+            vec4 hi_ = textureLod(history_a, pos_i / vec2(TU.buffer_size.xy), 0.0);
+            float y_f = dot(fresh_at[i].rgb, vec3(1.0)), y_h = dot(hi_.rgb, vec3(1.0));
+            n_changed += (abs(fresh_at[i].a - hi_.a) > CHANGE_T || abs(y_f - y_h) > CHANGE_REL * (y_f + y_h) + 1e-9) ? 1 : 0;
+          }
           up_a += ws[i] * fresh_at[i];
           lo = min(lo, fresh_at[i]);
           hi = max(hi, fresh_at[i]);

@@ -49,18 +49,18 @@ FrameImage render_reference(const ViewRequest& view, const weather::Weather& wea
       const int n = settings.pixel_samples;
       glm::dvec3 rgb(0.0);
       double opacity = 0.0;
+      bool bad = false;  // any sub-sample NaN/Inf/negative (an average would hide a negative one)
       for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
           const PixelRadiance px =
               integrator.shade(scene.camera.ray_at(x + (i + 0.5) / n, y + (j + 0.5) / n), evals);
+          for (int c = 0; c < 3; ++c) bad |= !std::isfinite(px.radiance[c]) || px.radiance[c] < 0.0;
+          bad |= !std::isfinite(px.opacity);
           rgb += px.radiance;
           opacity += px.opacity;
         }
       rgb /= static_cast<double>(n * n);
       opacity /= static_cast<double>(n * n);
-      bool bad = false;
-      for (int c = 0; c < 3; ++c) bad |= !std::isfinite(rgb[c]) || rgb[c] < 0.0;
-      bad |= !std::isfinite(opacity);
       if (bad) {
         ++row_nonfinite[static_cast<std::size_t>(y)];
         rgb = glm::dvec3(0.0);

@@ -29,6 +29,7 @@ float slab_beam_transmittance(float tau, float mu0) {
 // value w of the sample (cloud_extinction_in: the map varies over ~40 km, the march
 // spans at most 4 km; one map read instead of n).
 float light_optical_depth(int li, vec3 p, float alt, vec3 sun, float mu_s, int n, vec4 w) {
+  if (U.layers[li].altitude.z <= 0.0) return 0.0;  // coverage 0 (renderer/coverage_cull.h): no cloud
   float R = U.planet.x;
   vec2 exit_top = intersect_shell(R, alt, U.layers[li].altitude.y, mu_s);
   vec2 hit_base = intersect_shell(R, alt, U.layers[li].altitude.x, mu_s);
@@ -51,6 +52,7 @@ float light_optical_depth(int li, vec3 p, float alt, vec3 sun, float mu_s, int n
 // Optical depth of layer li from a ground point p towards the sun (cloud shadows), in
 // n equal steps through the layer (base shape only).
 float layer_shadow_optical_depth(int li, vec3 p, float ground_alt, vec3 sun, float mu_s, int n) {
+  if (U.layers[li].altitude.z <= 0.0) return 0.0;  // coverage 0 (renderer/coverage_cull.h): no cloud
   float R = U.planet.x;
   float t_base = intersect_shell(R, ground_alt, U.layers[li].altitude.x, mu_s).y;
   float t_top = intersect_shell(R, ground_alt, U.layers[li].altitude.y, mu_s).y;

@@ -86,6 +86,8 @@ TEST(CoverageCull, AFrameWhoseLayerHasNoCloudInReachMarchesNothing) {
   r.set_weather(*weather::preset("scattered-cumulus"));
   r.apply_tile(tile_around(0.0f), v.unix_time_s - 3600.0);
   const FrameImage first = r.render(v);
+  EXPECT_TRUE(first.stats.shadow_map_rebuilt);
+  EXPECT_EQ(first.stats.density_evals_per_pixel, 0.0);  // the shadow map skips the culled layer too
   const FrameImage culled = r.render(v);
   EXPECT_EQ(culled.stats.layers_without_cloud_in_view, 1);
   EXPECT_EQ(culled.stats.density_evals_per_pixel, 0.0);  // nothing marched (shadow map not rebuilt)

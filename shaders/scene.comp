@@ -58,13 +58,27 @@ vec4 cloud_at(ivec2 px, float t_background) {
   return a / wsum;
 }
 
-// Radiance of the sun disk (uniform over its solid angle, through the atmosphere) along a
-// view ray with cosine cos_view_sun to the sun and zenith cosine mu from altitude h; 0
-// outside the disk.
-vec3 sun_disk(float cos_view_sun, float h, float mu) {
-  if (cos_view_sun <= U.sun_dir.w) return vec3(0.0);
-  float solid_angle = 2.0 * PI * (1.0 - U.sun_dir.w);
-  return U.sun_irradiance.rgb / solid_angle * transmittance_to_space(h, mu);
+// Mean radiance of the sun disk over the pixel of view ray dir (W m^-2 sr^-1 nm^-1), from
+// altitude h: the disk has uniform radiance E_sun T / Omega (Omega = 2 pi (1 - cos rho),
+// rho = 0.2667 deg); the pixel is a box filter of angular width p along the camera's right
+// and up (p = 2 tan(hfov/2) / width at the centre, times cos^2 of the angle off the axis),
+// and the disk is taken as the square of the same solid angle in the tangent plane: the
+// result is L Omega_overlap / p^2. It varies continuously with the pose (a disk smaller
+// than a pixel neither blinks nor jumps a pixel at a time), keeps the disk's irradiance
+// E_sun T over the image, and equals L inside a disk larger than the pixels.
+vec3 sun_disk(vec3 dir, float h) {
+  vec3 sun = U.sun_dir.xyz;
+  float omega = 2.0 * PI * (1.0 - U.sun_dir.w);
+  float side = sqrt(omega);
+  float axis = dot(dir, U.camera_forward.xyz);
+  float p = 2.0 * U.view.x / U.view.z * axis * axis;
+  float c = dot(dir, sun);
+  if (c < cos(0.7072 * (side + p))) return vec3(0.0);  // no overlap possible
+  vec3 offset = sun - c * dir;  // tangent-plane offset of the disk centre (rad, small angles)
+  float ex = dot(offset, U.camera_right.xyz), ey = dot(offset, U.camera_up.xyz);
+  float ox = max(0.0, min(ex + 0.5 * side, 0.5 * p) - max(ex - 0.5 * side, -0.5 * p));
+  float oy = max(0.0, min(ey + 0.5 * side, 0.5 * p) - max(ey - 0.5 * side, -0.5 * p));
+  return U.sun_irradiance.rgb / omega * transmittance_to_space(h, sun.z) * (ox * oy / (p * p));
 }
 
 void main() {
@@ -78,7 +92,6 @@ void main() {
   vec3 sun = U.sun_dir.xyz;
   vec3 E_sun = U.sun_irradiance.rgb;
   float mu = dir.z;
-  float cos_view_sun = dot(dir, sun);
 
   vec2 g = intersect_shell(R, h, ground_alt, mu);
   bool hits_ground = g.x >= 0.0;
@@ -92,7 +105,7 @@ void main() {
   // from twice to once the march's early-exit threshold (the march drops the clouds behind
   // at that level too; the fade keeps the image continuous) and skipped below it; the sun
   // disk, bright enough to show through them, always
-  vec3 sun_seen = hits_ground ? vec3(0.0) : sun_disk(cos_view_sun, h, mu);
+  vec3 sun_seen = hits_ground ? vec3(0.0) : sun_disk(dir, h);
   float background_weight = saturate(T / BACKGROUND_T_EPS - 1.0);
   vec3 background = vec3(0.0);
   if (background_weight > 0.0 && hits_ground) {

@@ -209,5 +209,42 @@ TEST(RenderImage, ViewLutsAreReusedOnlyWhenTheViewIsUnchanged) {
   EXPECT_TRUE(r.render(climbed).stats.sky_view_recomputed);
 }
 
+// The sun disk is box-filtered over the pixel (scene.comp, sun_disk): at 64x36 (pixels of
+// 0.94 deg, the disk 0.53 deg across) a camera panning across the sun in 0.01 deg steps sees
+// no pixel jump (each step changes any pixel by < 5 % of the brightest one; a point-sampled
+// disk jumps by 100 % when its edge crosses a pixel centre), and the disk's energy in the
+// image, sum of L x pixel solid angle around it, stays the same wherever it falls (within 2 %).
+TEST(RenderImage, SunDiskIsBoxFilteredOverThePixel) {
+  CloudRenderer& r = shared_renderer();
+  r.set_weather(*weather::preset("clear"));
+  const double t = *geo::parse_utc_iso8601("2026-06-21T09:00:00Z");
+  const geo::SolarPosition sp = geo::solar_position(t, 47.45, 8.56);
+  const int W = 64, H = 36;
+  const double p = 2.0 * std::tan(30.0 * 3.14159265358979 / 180.0) / W;  // pixel width at the centre, rad
+  std::vector<float> prev;
+  double worst_step = 0.0, brightest = 0.0, e_min = 1e30, e_max = 0.0;
+  for (int k = 0; k <= 150; ++k) {
+    ViewRequest v = make_view(47.45, 8.56, 500.0, sp.azimuth_deg - 0.75 + 0.01 * k, sp.elevation_deg + 0.3, "2026-06-21T09:00:00Z", W, H);
+    const FrameImage img = r.render(v);
+    size_t top = 0;
+    for (size_t i = 1; i < img.rgba.size() / 4; ++i)
+      if (img.rgba[4 * i + 1] > img.rgba[4 * top + 1]) top = i;
+    brightest = std::max(brightest, static_cast<double>(img.rgba[4 * top + 1]));
+    const int x0 = static_cast<int>(top % W), y0 = static_cast<int>(top / W);
+    double e = 0.0;  // green radiance x pixel solid angle over the 5 x 5 pixels around the disk
+    for (int y = std::max(0, y0 - 2); y <= std::min(H - 1, y0 + 2); ++y)
+      for (int x = std::max(0, x0 - 2); x <= std::min(W - 1, x0 + 2); ++x) e += img.rgba[(static_cast<size_t>(y) * W + x) * 4 + 1] * p * p;
+    e_min = std::min(e_min, e);
+    e_max = std::max(e_max, e);
+    if (!prev.empty())
+      for (size_t i = 1; i < img.rgba.size(); i += 4) worst_step = std::max(worst_step, std::abs(static_cast<double>(img.rgba[i] - prev[i])));
+    prev = img.rgba;
+  }
+  std::printf("sun disk: brightest pixel %.3g, worst change per 0.01 deg step %.3g (%.2f %%), disk energy %.4g..%.4g\n",
+              brightest, worst_step, 100.0 * worst_step / brightest, e_min, e_max);
+  EXPECT_LT(worst_step, 0.05 * brightest);
+  EXPECT_LT(e_max / e_min, 1.02);
+}
+
 }  // namespace
 }  // namespace cloudsvc::test

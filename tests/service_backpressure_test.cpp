@@ -21,23 +21,6 @@ namespace {
 using namespace std::chrono_literals;
 using client::ServiceConnection;
 
-protocol::Pose pose_at(double lat, double sim_t) {
-  protocol::Pose p;
-  p.sim_time_s = sim_t;
-  p.lat_deg = lat;
-  p.lon_deg = 8.56;
-  p.alt_m = 1500.0;
-  p.heading_deg = 90.0;
-  return p;
-}
-
-std::string read_text(const std::filesystem::path& p) {
-  std::ifstream f(p);
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
-
 // The stalled client asks for 5000 Stats (about 0.4 MB of replies: far more than a Unix
 // socket buffers, far less than the 1 MiB notice bound) and reads nothing while another
 // client replays 8 poses lock-step. Then it reads: every reply is there, in order.
@@ -57,7 +40,7 @@ TEST(ServiceBackpressure, StalledReaderDoesNotStallRenderingForAnotherClient) {
   ServiceConnection driver(svc.address(), "driver");
   const int poses = 8;
   for (int i = 0; i < poses; ++i) {
-    driver.send(pose_at(47.0 + 0.001 * i, i));
+    driver.send(test_pose(47.0 + 0.001 * i, i));
     const auto ready = driver.receive_until<protocol::FrameReady>(60s);
     EXPECT_EQ(ready.frame_number, static_cast<std::uint64_t>(i + 1));
     EXPECT_EQ(ready.pose.lat_deg, 47.0 + 0.001 * i);
@@ -110,10 +93,10 @@ TEST(ServiceBackpressure, ClientFloodingBadMessagesWithoutReadingIsDisconnected)
                                                  << std::strerror(err) << "), expected a disconnect";
   EXPECT_LT(written, 16u << 20) << "the queue bound was not applied";
   RecordProperty("junk_bytes_written", std::to_string(written));
-  EXPECT_NE(read_text(svc.log_path()).find("bytes of replies queued (it does not read)"), std::string::npos);
+  EXPECT_NE(read_text_file(svc.log_path()).find("bytes of replies queued (it does not read)"), std::string::npos);
 
   ServiceConnection other(svc.address(), "other");
-  other.send(pose_at(47.5, 1.0));
+  other.send(test_pose(47.5, 1.0));
   EXPECT_EQ(other.receive_until<protocol::FrameReady>(60s).pose.lat_deg, 47.5);
   other.send(protocol::StatsRequest{});
   EXPECT_EQ(other.receive_until<protocol::Stats>(10s).clients, 1u);

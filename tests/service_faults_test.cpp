@@ -16,20 +16,10 @@ namespace {
 using namespace std::chrono_literals;
 using client::ServiceConnection;
 
-protocol::Pose pose_at(double lat) {
-  protocol::Pose p;
-  p.sim_time_s = 1.0;
-  p.lat_deg = lat;
-  p.lon_deg = 8.56;
-  p.alt_m = 1500.0;
-  p.heading_deg = 90.0;
-  return p;
-}
-
 // The service still renders for a well-behaved client.
 void expect_service_healthy(const ServiceProcess& svc, double lat) {
   ServiceConnection c(svc.address(), "healthy");
-  c.send(pose_at(lat));
+  c.send(test_pose(lat));
   const auto ready = c.receive_until<protocol::FrameReady>(60s);
   EXPECT_EQ(ready.pose.lat_deg, lat);
 }
@@ -55,7 +45,7 @@ TEST_F(ServiceFaults, ClientKilledMidMessageAffectsNobodyElse) {
   ASSERT_TRUE(svc_->running());
   {
     RawClient c = handshaken(*svc_);
-    auto bytes = protocol::frame(protocol::encode(pose_at(10.0), 2));
+    auto bytes = protocol::frame(protocol::encode(test_pose(10.0), 2));
     bytes.resize(bytes.size() / 2);  // truncated frame, then the client vanishes
     c.write(bytes);
   }
@@ -83,7 +73,7 @@ TEST_F(ServiceFaults, GarbagePayloadGetsErrorAndTheConnectionLives) {
   const std::vector<std::uint8_t> junk = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12};
   c.write(protocol::frame(junk));
   EXPECT_EQ(expect_error(c).code, protocol::ErrorCode::Malformed);
-  c.send(pose_at(13.0), 3);
+  c.send(test_pose(13.0), 3);
   bool got = false;
   for (int i = 0; i < 300 && !got; ++i) {
     auto m = c.receive(200ms);
@@ -103,7 +93,7 @@ TEST_F(ServiceFaults, WrongProtocolVersionIsRefused) {
 
 TEST_F(ServiceFaults, MessageBeforeHelloIsRefused) {
   RawClient c(svc_->socket_path());
-  c.send(pose_at(14.0), 1);
+  c.send(test_pose(14.0), 1);
   EXPECT_EQ(expect_error(c).code, protocol::ErrorCode::HandshakeRequired);
   EXPECT_TRUE(c.closed_by_service(5s));
 }
@@ -112,10 +102,10 @@ TEST_F(ServiceFaults, MessageBeforeHelloIsRefused) {
 // afterwards renders the last valid pose (state intact).
 TEST_F(ServiceFaults, InvalidPoseIsRejectedAndStateStaysIntact) {
   ServiceConnection c(svc_->address(), "nan");
-  c.send(pose_at(15.0));
+  c.send(test_pose(15.0));
   EXPECT_EQ(c.receive_until<protocol::FrameReady>(60s).pose.lat_deg, 15.0);
   for (double bad : {std::numeric_limits<double>::quiet_NaN(), 95.0, std::numeric_limits<double>::infinity()}) {
-    const std::uint64_t seq = c.send(pose_at(bad));
+    const std::uint64_t seq = c.send(test_pose(bad));
     const auto err = c.receive_until<protocol::Error>(10s);
     EXPECT_EQ(err.code, protocol::ErrorCode::InvalidField);
     EXPECT_EQ(err.answers_seq, seq);
@@ -152,7 +142,7 @@ TEST_F(ServiceFaults, UnavailableSinkIsRefusedWithoutChangingTheView) {
   EXPECT_EQ(err.code, protocol::ErrorCode::SinkUnavailable);
   EXPECT_EQ(err.answers_seq, seq);
   EXPECT_NE(err.text.find("file_dir"), std::string::npos) << err.text;
-  c.send(pose_at(17.0));
+  c.send(test_pose(17.0));
   const auto ready = c.receive_until<protocol::FrameReady>(60s);
   EXPECT_EQ(ready.width, 64u);
   EXPECT_TRUE(ready.shm_slot.has_value());
@@ -196,7 +186,7 @@ TEST_F(ServiceFaults, BadWeatherIsRejectedGoodWeatherApplies) {
   c.send(tile);  // valid
   layers.layers.pop_back();
   c.send(layers);  // valid
-  c.send(pose_at(18.0));
+  c.send(test_pose(18.0));
   const auto ready = c.receive_until<protocol::FrameReady>(60s);
   EXPECT_EQ(ready.pose.lat_deg, 18.0);
 }
@@ -216,7 +206,7 @@ TEST_F(ServiceFaults, QualityPresetsAreCheckedAndApplied) {
   EXPECT_EQ(err.answers_seq, seq);
   v.quality_preset = "low";
   c.send(v);
-  c.send(pose_at(19.0));
+  c.send(test_pose(19.0));
   EXPECT_EQ(c.receive_until<protocol::FrameReady>(60s).pose.lat_deg, 19.0);
 }
 

@@ -18,22 +18,8 @@ namespace {
 using namespace std::chrono_literals;
 using client::ServiceConnection;
 
-protocol::Pose pose_at(int i) {
-  protocol::Pose p;
-  p.sim_time_s = 0.1 * i;
-  p.lat_deg = 47.45 + 1e-4 * i;
-  p.lon_deg = 8.56;
-  p.alt_m = 1500.0;
-  p.heading_deg = 90.0;
-  return p;
-}
-
-std::string read_text(const std::filesystem::path& p) {
-  std::ifstream f(p);
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
+// The i-th pose of a slow northward track (1e-4 deg and 0.1 s apart).
+protocol::Pose pose_at(int i) { return test_pose(47.45 + 1e-4 * i, 0.1 * i); }
 
 void expect_cleaned_up(const ServiceProcess& svc) {
   EXPECT_FALSE(std::filesystem::exists(svc.socket_path())) << "socket file left behind";
@@ -53,7 +39,7 @@ TEST(ServiceShutdown, SigintExitsZeroAndRemovesSocketAndSharedMemory) {
   ASSERT_TRUE(std::filesystem::exists("/dev/shm/" + svc.shm_name()));
   EXPECT_EQ(svc.stop(SIGINT), 0);
   expect_cleaned_up(svc);
-  const std::string log = read_text(svc.log_path());
+  const std::string log = read_text_file(svc.log_path());
   EXPECT_NE(log.find("signal 2"), std::string::npos) << log;
   EXPECT_NE(log.find("stopped after 1 frames"), std::string::npos) << log;
 }
@@ -87,7 +73,7 @@ TEST(ServiceShutdown, SigtermWithAClientStreamingPosesExitsZeroAndCleansUp) {
   EXPECT_TRUE(closed) << "the service did not close the client's connection";
   EXPECT_EQ(svc.wait_exit(30s), 0);
   expect_cleaned_up(svc);
-  const std::string log = read_text(svc.log_path());
+  const std::string log = read_text_file(svc.log_path());
   EXPECT_NE(log.find("signal 15"), std::string::npos) << log;
   RecordProperty("poses_sent", std::to_string(i));
   RecordProperty("frames_after_signal", std::to_string(frames_after_signal));

@@ -11,9 +11,13 @@
 
 #include <chrono>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
+
+#include "protocol/messages.h"
 
 namespace cloudsvc::test {
 
@@ -134,5 +138,25 @@ class ServiceProcess {
   int tcp_port_ = -1;
   pid_t pid_ = -1;
 };
+
+// The service tests' pose: latitude lat_deg on Zurich's meridian (8.56 E), 1500 m, heading
+// east, level; sim time sim_time_s.
+inline protocol::Pose test_pose(double lat_deg, double sim_time_s = 1.0) {
+  protocol::Pose p;
+  p.sim_time_s = sim_time_s;
+  p.lat_deg = lat_deg;
+  p.lon_deg = 8.56;
+  p.alt_m = 1500.0;
+  p.heading_deg = 90.0;
+  return p;
+}
+
+// A whole text file (e.g. the service's log); empty if it cannot be read.
+inline std::string read_text_file(const std::filesystem::path& path) {
+  std::ifstream f(path);
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
 
 }  // namespace cloudsvc::test

@@ -44,6 +44,7 @@
 #include <vector>
 
 #include "../tests/accuracy_scenes.h"
+#include "bench/bench_util.h"
 #include "bench/cost_command.h"
 #include "bench/sequence_command.h"
 #include "bench/stability_command.h"
@@ -367,12 +368,6 @@ Options parse(int argc, char** argv) {
   return o;
 }
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 // One configuration on one scene: the view held still for kStillFrames frames (a
 // temporal configuration converges over one 16-frame cycle; the others march every frame
 // in full), error of the last frame at the error size; cost = median render_ms of
@@ -409,7 +404,7 @@ Row measure(CloudRenderer& renderer, const ViewRequest& base, const Config& c, c
   r.label = c.label;
   r.group = c.group;
   r.q = c.q;
-  r.median_ms = median(ms);
+  r.median_ms = bench::median(ms);
   r.evals_px = evals / o.frames;
   r.rmse = d.rmse;
   r.rel_rmse = d.relative_rmse;

@@ -23,19 +23,13 @@
 #include <vector>
 
 #include "../tests/accuracy_scenes.h"
+#include "bench/bench_util.h"
 #include "renderer/cloud_renderer.h"
 #include "renderer/gl/egl_context.h"
 #include "renderer/quality_presets.h"
 #include "weather/presets.h"
 
 namespace cloudsvc::cost_command {
-
-inline double median_of(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 inline double process_cpu_ms() {
   timespec ts{};
@@ -52,7 +46,7 @@ inline int run(int argc, char** argv) {
   app.add_option("--presets", presets_text, "comma-separated quality presets; ratios are to the first");
   CLI11_PARSE(app, argc, argv);
   int w = 0, h = 0;
-  if (std::sscanf(size.c_str(), "%dx%d", &w, &h) != 2 || w <= 0 || h <= 0 || w > 4096 || h > 4096) {
+  if (!bench::parse_frame_size(size, w, h)) {
     std::fprintf(stderr, "cloudbench --cost: --size expects WxH\n");
     return 2;
   }
@@ -97,12 +91,12 @@ inline int run(int argc, char** argv) {
         readback.push_back(st.readback_ms);
       }
       const double cpu_ms = (process_cpu_ms() - cpu0) / frames;
-      sums[p] += median_of(ms);
+      sums[p] += bench::median(ms);
       min_sums[p] += *std::min_element(ms.begin(), ms.end());
       cpu_sums[p] += cpu_ms;
       std::printf("| %s | %s | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f |\n", s.name, presets[p].first.c_str(),
-                  median_of(ms), cpu_ms, median_of(march), median_of(resolve), median_of(composite), median_of(luts),
-                  median_of(shadow), median_of(readback));
+                  bench::median(ms), cpu_ms, bench::median(march), bench::median(resolve), bench::median(composite), bench::median(luts),
+                  bench::median(shadow), bench::median(readback));
       std::fflush(stdout);
     }
   }

@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/bench_util.h"
 #include "bench/flight_sequence.h"
 #include "geodesy/utc_time.h"
 #include "renderer/cloud_renderer.h"
@@ -58,7 +59,7 @@ inline int run(int argc, char** argv) {
   app.add_option("--out", out, "output directory");
   CLI11_PARSE(app, argc, argv);
   int w = 0, h = 0;
-  if (std::sscanf(size.c_str(), "%dx%d", &w, &h) != 2 || w <= 0 || h <= 0 || w > 4096 || h > 4096) {
+  if (!bench::parse_frame_size(size, w, h)) {
     std::fprintf(stderr, "cloudbench --sequence: --size expects WxH\n");
     return 2;
   }

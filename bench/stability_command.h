@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/bench_util.h"
 #include "bench/stability_sweep.h"
 #include "renderer/gl/egl_context.h"
 #include "renderer/quality_presets.h"
@@ -52,7 +53,7 @@ inline int run(int argc, char** argv) {
   quality->temporal_reuse = false;
   quality->footprint_jitter = footprint_jitter;
   int w = 0, h = 0;
-  if (std::sscanf(size.c_str(), "%dx%d", &w, &h) != 2 || w <= 0 || h <= 0 || w > 4096 || h > 4096) {
+  if (!bench::parse_frame_size(size, w, h)) {
     std::fprintf(stderr, "--size: expected WxH, got %s\n", size.c_str());
     return 2;
   }

@@ -55,9 +55,9 @@ CloudRenderer::CloudRenderer(const RendererConfig& config)
   set_weather(weather::Weather{});
 }
 
-// Uploads the keyframes around utc_s (only those that changed) and sets the blend weight
-// and the blended pole values.
-void CloudRenderer::update_weather_textures(double utc_s) {
+// Uploads the keyframes around utc_s (only those that changed), sets the blend weight and
+// the blended pole values; returns the blend (valid until the timeline next changes).
+weather::WeatherTimeline::Blend CloudRenderer::update_weather_textures(double utc_s) {
   const weather::WeatherTimeline::Blend b = timeline_.at(utc_s);
   const weather::WeatherMap* maps[2] = {b.from, b.to};
   const std::uint64_t versions[2] = {b.from_version, b.to_version};
@@ -85,6 +85,7 @@ void CloudRenderer::update_weather_textures(double utc_s) {
   }
   facts_.weather_map_height = b.from->height;
   facts_.weather_blend = b.weight;
+  return b;
 }
 
 void CloudRenderer::apply_tile(const weather::MapTile& tile, double now_utc_s) {
@@ -131,9 +132,9 @@ void CloudRenderer::ensure_targets(int w, int h, int divisor) {
 // 0 in the uniforms, which the march and the shadow map skip (shaders/cloud_intervals.glsl).
 // A change of that set changes the cloud field the shadow map was built from: the
 // weather generation is bumped. Returns the set (bit i: layer i).
-unsigned CloudRenderer::cull_layers_without_cloud_in_view(FrameUniforms& u, const ViewRequest& view) {
+unsigned CloudRenderer::cull_layers_without_cloud_in_view(FrameUniforms& u, const ViewRequest& view,
+                                                          const weather::WeatherTimeline::Blend& b) {
   if (weather_.layers.empty()) return 0;
-  const weather::WeatherTimeline::Blend b = timeline_.at(view.unix_time_s);
   // The largest coverage modulation over the cap (both keyframes while one fades in).
   auto max_m = [&](double cap) {
     float m = max_coverage_in_cap(*b.from, view.position.lat_deg, view.position.lon_deg, cap);
@@ -142,11 +143,11 @@ unsigned CloudRenderer::cull_layers_without_cloud_in_view(FrameUniforms& u, cons
     return m;
   };
   const double cap = cloud_influence_cap_rad(u.planet.x, u.planet.w);
-  const float m = max_m(cap);
   // Hysteresis: a layer starts being culled only while the cap 10 % wider is clear too, so
   // a camera at the edge of a clear region does not flip the set (and rebuild the shadow
-  // map) every frame.
-  const float m_wide = max_m(std::min(1.1 * cap, 3.14159265358979));  // >= m
+  // map) every frame; one already culled stays so while the cap itself is clear.
+  const float m_wide = max_m(std::min(1.1 * cap, 3.14159265358979));
+  const float m = culled_layers_ != 0 ? max_m(cap) : m_wide;  // m <= m_wide: only read for culled layers
   unsigned mask = 0;
   const int n = std::min<int>(static_cast<int>(weather_.layers.size()), u.counts.x);
   for (int i = 0; i < n; ++i) {
@@ -229,9 +230,9 @@ FrameImage CloudRenderer::render(const ViewRequest& view, const RenderQuality& q
   ensure_targets(view.width, view.height, divisor);
 
   if (!wind_anchor_) wind_anchor_ = WindAnchor{view.position, view.unix_time_s};
-  update_weather_textures(view.unix_time_s);
+  const weather::WeatherTimeline::Blend blend = update_weather_textures(view.unix_time_s);
   FrameUniforms u = make_frame_uniforms(view, weather_, quality, facts_, &*wind_anchor_);
-  const unsigned culled = cull_layers_without_cloud_in_view(u, view);
+  const unsigned culled = cull_layers_without_cloud_in_view(u, view, blend);
   glNamedBufferSubData(uniforms_.id(), 0, sizeof(FrameUniforms), &u);
   glBindBufferBase(GL_UNIFORM_BUFFER, 0, uniforms_.id());
   const Counters zero{0, 0, 0};

@@ -52,10 +52,11 @@ class CloudRenderer {
   void reset_history() { prev_view_.reset(); }
 
  private:
-  void update_weather_textures(double utc_s);
+  weather::WeatherTimeline::Blend update_weather_textures(double utc_s);
   void ensure_targets(int w, int h, int divisor);
   TemporalUniforms march_and_resolve(const ViewRequest& view, const RenderQuality& quality);
-  unsigned cull_layers_without_cloud_in_view(FrameUniforms& u, const ViewRequest& view);
+  unsigned cull_layers_without_cloud_in_view(FrameUniforms& u, const ViewRequest& view,
+                                             const weather::WeatherTimeline::Blend& blend);
 
   RendererConfig config_;
   weather::Weather weather_;

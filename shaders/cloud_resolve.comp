@@ -72,6 +72,23 @@ const int CHANGE_MIN_NEIGHBOURS = 3;  // of 4: one alone is jitter at a cloud ed
 
 bool finite4(vec4 v) { return !any(isnan(v)) && !any(isinf(v)); }
 
+// The fresh samples cs[0..3] around a cloud pixel: their bilinear interpolation with
+// weights ws, their range (lo, hi) and the index of the nearest (largest weight, first).
+void fresh_neighbourhood(ivec2 cs[4], float ws[4], out vec4 fresh[4], out vec4 up, out vec4 lo, out vec4 hi,
+                         out int nearest) {
+  up = vec4(0.0);
+  lo = vec4(1e30);
+  hi = vec4(-1e30);
+  nearest = 0;
+  for (int i = 0; i < 4; ++i) {
+    fresh[i] = texelFetch(fresh_a, cs[i], 0);
+    up += ws[i] * fresh[i];
+    lo = min(lo, fresh[i]);
+    hi = max(hi, fresh[i]);
+    if (ws[i] > ws[nearest]) nearest = i;
+  }
+}
+
 void main() {
   ivec2 q = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(q, TU.buffer_size.xy))) return;
@@ -96,8 +113,8 @@ void main() {
   // The neighbourhood is needed without history (the interpolated fresh samples stand in)
   // and for a moving view (change detection, clamp); a still view with history skips it.
   bool moving = TU.blend.y == 0.0;
-  vec4 up_a = vec4(0.0), lo = vec4(1e30), hi = vec4(-1e30), near_b = vec4(0.0);
-  vec4 fresh_at[4];
+  vec4 fresh_at[4], up_a, lo, hi;
+  int nearest;
 
   vec4 out_a = vec4(0.0), out_b = vec4(0.0);
   bool from_history = false;
@@ -126,19 +143,13 @@ void main() {
       // still camera sees the same scene (its drift is in the reprojection), differences
       // there are the jitter noise that accumulation removes.
       int n_changed = 0;
-      if (moving || (TU.buffer_size.w != 0 && moved > 0.5)) {
-        for (int i = 0; i < 4; ++i) {
-          fresh_at[i] = texelFetch(fresh_a, cs[i], 0);
-          if (moving) {
-            vec2 pos_i = vec2(cs[i] * s + TU.grid.yz) + 0.5 + motion;
-            vec4 hi_ = textureLod(history_a, pos_i / vec2(TU.buffer_size.xy), 0.0);
-            float y_f = dot(fresh_at[i].rgb, vec3(1.0)), y_h = dot(hi_.rgb, vec3(1.0));
-            n_changed += (abs(fresh_at[i].a - hi_.a) > CHANGE_T || abs(y_f - y_h) > CHANGE_REL * (y_f + y_h) + 1e-9) ? 1 : 0;
-          }
-          up_a += ws[i] * fresh_at[i];
-          lo = min(lo, fresh_at[i]);
-          hi = max(hi, fresh_at[i]);
-        }
+      if (moving || (TU.buffer_size.w != 0 && moved > 0.5))
+        fresh_neighbourhood(cs, ws, fresh_at, up_a, lo, hi, nearest);
+      for (int i = 0; i < 4 && moving; ++i) {
+        vec2 pos_i = vec2(cs[i] * s + TU.grid.yz) + 0.5 + motion;
+        vec4 h_i = textureLod(history_a, pos_i / vec2(TU.buffer_size.xy), 0.0);
+        float y_f = dot(fresh_at[i].rgb, vec3(1.0)), y_h = dot(h_i.rgb, vec3(1.0));
+        n_changed += (abs(fresh_at[i].a - h_i.a) > CHANGE_T || abs(y_f - y_h) > CHANGE_REL * (y_f + y_h) + 1e-9) ? 1 : 0;
       }
       bool changed = moving && n_changed >= CHANGE_MIN_NEIGHBOURS;
       if (TU.buffer_size.w != 0 && changed) ha = up_a;  // stale: the fresh samples around it
@@ -161,12 +172,8 @@ void main() {
       out_b = vec4(fresh_own_b.xyz, 1.0);
     } else {
       // the fresh samples around q, interpolated; the depth of the nearest one
-      int nearest = 0;
-      for (int i = 0; i < 4; ++i) {
-        out_a += ws[i] * texelFetch(fresh_a, cs[i], 0);
-        if (ws[i] > ws[nearest]) nearest = i;
-      }
-      near_b = texelFetch(fresh_b, cs[nearest], 0);
+      fresh_neighbourhood(cs, ws, fresh_at, out_a, lo, hi, nearest);
+      vec4 near_b = texelFetch(fresh_b, cs[nearest], 0);
       out_b = vec4(near_b.x, 0.0, near_b.z, 0.0);
     }
   }

@@ -17,13 +17,9 @@ namespace {
 using namespace std::chrono_literals;
 using client::ServiceConnection;
 
+// The test pose, 5 deg up, with no history (each frame on its own).
 protocol::Pose day_pose(double lat) {
-  protocol::Pose p;
-  p.sim_time_s = 1.0;
-  p.lat_deg = lat;
-  p.lon_deg = 8.56;
-  p.alt_m = 1500.0;
-  p.heading_deg = 90.0;
+  protocol::Pose p = test_pose(lat);
   p.pitch_deg = 5.0;
   p.flags = protocol::pose_flag::kTeleport;
   return p;

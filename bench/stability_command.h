@@ -43,7 +43,11 @@ inline int run(int argc, char** argv) {
   std::string quality_name = "default";
   app.add_option("--quality", quality_name, "quality preset of the renders (temporal reuse off: single frames)");
   bool footprint_jitter = false;
-  app.add_flag("--footprint-jitter", footprint_jitter, "march rays through a different point of the pixel each frame (RenderQuality::footprint_jitter)");
+  app.add_flag("--footprint-jitter", footprint_jitter, "march rays through a different point of the pixel each frame (RenderQuality::footprint_jitter; the temporal presets do)");
+  bool centre = false;
+  app.add_flag("--centre", centre, "march rays through the pixel centre (footprint jitter off whatever the preset)");
+  int long_step = 0;
+  app.add_option("--long-step", long_step, "override the preset's long_step_factor (1 = no probing in empty air)")->check(CLI::Range(1, 64));
   CLI11_PARSE(app, argc, argv);
   std::optional<RenderQuality> quality = quality_preset(quality_name);
   if (!quality) {
@@ -51,7 +55,9 @@ inline int run(int argc, char** argv) {
     return 2;
   }
   quality->temporal_reuse = false;
-  quality->footprint_jitter = footprint_jitter;
+  if (footprint_jitter) quality->footprint_jitter = true;
+  if (centre) quality->footprint_jitter = false;
+  if (long_step > 0) quality->long_step_factor = long_step;
   int w = 0, h = 0;
   if (!bench::parse_frame_size(size, w, h)) {
     std::fprintf(stderr, "--size: expected WxH, got %s\n", size.c_str());
@@ -123,12 +129,12 @@ inline int run(int argc, char** argv) {
   const stab::PixelLimits plim;
   struct Kind {
     std::string what;
-    int pairs = 0, gate_fail = 0, pixel_fail = 0, pixels_over = 0, no_noise = 0;
+    int pairs = 0, gate_fail = 0, pixel_fail = 0, pixels_over = 0, no_noise = 0, wide_fail = 0, wide_over = 0, wide_no_noise = 0;
     double max_ratio = 0.0, max_criterion = 0.0, worst_s = 0.0, worst_j = 0.0;
     std::string worst_pose;
   };
   std::vector<Kind> kinds;
-  int pixel_fail_pairs = 0;
+  int pixel_fail_pairs = 0, wide_fail_pairs = 0;
   const std::vector<stab::Pose> sp = stab::make_smooth_poses(presets, smooth, seed * 7 + 3, w, h);
   std::string current;
   for (const stab::Pose& pose : sp) {
@@ -148,6 +154,10 @@ inline int run(int argc, char** argv) {
         k.pixel_fail += r.pixels.ok() ? 0 : 1;
         pixel_fail_pairs += r.pixels.ok() ? 0 : 1;
         k.pixels_over += r.pixels.pixels_over;
+        k.wide_fail += r.pixels.ok_wide() ? 0 : 1;
+        wide_fail_pairs += r.pixels.ok_wide() ? 0 : 1;
+        k.wide_over += r.pixels.pixels_over_wide;
+        k.wide_no_noise += r.pixels.wide_without_noise;
         k.no_noise += r.pixels.changed_without_noise;
         k.max_ratio = std::max(k.max_ratio, r.pixels.max_ratio);
         if (r.pixels.max_criterion > k.max_criterion) {
@@ -182,13 +192,16 @@ inline int run(int argc, char** argv) {
               seconds_since(t2));
   std::printf("Worst step: %s\n\n", worst_pose.c_str());
   std::printf("Per pixel (reported, not gated): s = a pixel's change, j = that pixel's own jitter-twin change (larger of\n"
-              "frame_index + 1 and + 2); per-pixel criterion s <= %.3g j + %.3g.\n\n"
+              "frame_index + 1 and + 2); per-pixel criterion s <= %.3g j + %.3g. Wide floor: pairs failing it judged again with\n"
+              "j_wide = the largest change to %d more twins of the base and %d twins of the perturbed pose (stab::PixelLimits).\n\n"
               "| step | pairs | fail gate (mean/fraction) | fail per-pixel | pixels over | pixels changed > %.3g with j = 0 | "
-              "max s/j (j > 0) | max s/(%.3g j + %.3g) | its s, j |\n|---|---|---|---|---|---|---|---|---|\n",
-              plim.k, plim.allowance, plim.allowance, plim.k, plim.allowance);
+              "max s/j (j > 0) | max s/(%.3g j + %.3g) | its s, j | fail per-pixel, wide floor | pixels over it | of those j_wide = 0 |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|---|\n",
+              plim.k, plim.allowance, plim.extra_twins, plim.extra_twins, plim.allowance, plim.k, plim.allowance);
   for (const Kind& k : kinds)
-    std::printf("| %s | %d | %d | %d | %d | %d | %.3g | %.3g | %.3g, %.3g |\n", k.what.c_str(), k.pairs, k.gate_fail,
-                k.pixel_fail, k.pixels_over, k.no_noise, k.max_ratio, k.max_criterion, k.worst_s, k.worst_j);
+    std::printf("| %s | %d | %d | %d | %d | %d | %.3g | %.3g | %.3g, %.3g | %d | %d | %d |\n", k.what.c_str(), k.pairs, k.gate_fail,
+                k.pixel_fail, k.pixels_over, k.no_noise, k.max_ratio, k.max_criterion, k.worst_s, k.worst_j, k.wide_fail,
+                k.wide_over, k.wide_no_noise);
   std::printf("\nWorst per-pixel pair by step:\n");
   for (const Kind& k : kinds) std::printf("- %s: %s\n", k.what.c_str(), k.worst_pose.c_str());
   std::printf("\n");
@@ -245,12 +258,12 @@ inline int run(int argc, char** argv) {
 #endif
   std::printf("\nSUMMARY stability commit %s seed %llu size %dx%d quality %s | globe: %lld frames, %lld failed, "
               "%lld NaN/Inf/negative values, %lld nonfinite_pixels, %lld GL errors, %lld exceptions | smoothness: %zu poses, "
-              "%d pairs, %d fail the gate, %d fail per-pixel (%.3g j + %.3g) | uptime 30 d: %zu presets, %d failed, "
+              "%d pairs, %d fail the gate, %d fail per-pixel (%.3g j + %.3g), %d against the wide floor | uptime 30 d: %zu presets, %d failed, "
               "worst coordinate ratio %.2f, worst PSNR loss %.2f dB | %s\n",
               commit.c_str(), static_cast<unsigned long long>(seed), w, h, quality_name.c_str(), static_cast<long long>(frames),
               static_cast<long long>(failed), static_cast<long long>(bad_values), static_cast<long long>(nonfinite),
               static_cast<long long>(gl_errors), static_cast<long long>(exceptions), sp.size(), pairs, pair_fail,
-              pixel_fail_pairs, plim.k, plim.allowance, presets.size(), uptime_fail, uptime_worst_ratio, uptime_worst_gap,
+              pixel_fail_pairs, plim.k, plim.allowance, wide_fail_pairs, presets.size(), uptime_fail, uptime_worst_ratio, uptime_worst_gap,
               all_ok ? "PASS" : "FAIL");
   std::printf("\nTotal wall time %.0f s. Result: %s\n", seconds_since(t_start), all_ok ? "PASS" : "FAIL");
   return all_ok ? 0 : 1;

@@ -227,6 +227,14 @@ inline ImageDiff image_diff(const FrameImage& a, const FrameImage& b, double tau
 struct PixelLimits {
   double k = 3.0;           // multiple of the pixel's own jitter-twin change
   double allowance = 0.02;  // absolute allowance (the relative-change metric above: 2 %)
+  // Pairs that fail against the two twins are judged again against a wider noise floor:
+  // this many more jitter twins of the base pose and as many of the perturbed pose (0 = no
+  // second look). Two twins see a pixel's noise only if it is frequent: a thin bright
+  // feature inside the pixel footprint, hit by one frame's sample in ten, leaves both twins
+  // unchanged (j = 0) while one sample in ten flips. The wider floor is
+  // j_wide = max(j, changes of the base to its extra twins, changes of the perturbed render
+  // to its own twins): the noise at either end of the step, which is symmetric in the two poses.
+  int extra_twins = 8;
 };
 
 struct PixelStats {
@@ -236,7 +244,11 @@ struct PixelStats {
   int worst_x = 0, worst_y = 0;
   int pixels_over = 0;          // pixels with s > k j + a
   int changed_without_noise = 0;  // pixels with j == 0 and s > a (e.g. a clear-sky edge)
+  // Against the wider floor (PixelLimits::extra_twins; only computed when pixels_over > 0):
+  int pixels_over_wide = 0;     // pixels with s > k j_wide + a
+  int wide_without_noise = 0;   // of those, pixels with j_wide == 0: deterministic (no jitter reaches them)
   bool ok() const { return pixels_over == 0; }
+  bool ok_wide() const { return pixels_over_wide == 0; }
 };
 
 inline PixelStats pixel_stats(const std::vector<double>& step, const std::vector<double>& twin1,
@@ -327,6 +339,7 @@ inline std::vector<SmoothResult> check_smoothness(CloudRenderer& r, const ViewRe
   }
   const ImageDiff jitter = jitter_floor(image_diff(base, twin1, lim.tau), image_diff(base, twin2, lim.tau));
   const std::vector<double> px_twin1 = pixel_changes(base, twin1), px_twin2 = pixel_changes(base, twin2);
+  std::vector<std::vector<double>> base_extra;  // changes of the base to its extra twins (PixelLimits)
   const double dr = v.attitude.pitch_deg > 89.0 ? -0.001 : 0.001;  // stay within [-90, 90]
   struct Step { const char* what; ViewRequest v; };
   std::vector<Step> steps = {{"east +1 cm", translated(v, {0.01, 0, 0})},
@@ -344,7 +357,43 @@ inline std::vector<SmoothResult> check_smoothness(CloudRenderer& r, const ViewRe
     if (!check_frame(r, s.v, &img, q).ok()) { res.what += " (render failed)"; out.push_back(res); continue; }
     res.step = image_diff(base, img, lim.tau);
     res.ok = smooth_step_ok(res.step, jitter, lim);
-    res.pixels = pixel_stats(pixel_changes(base, img), px_twin1, px_twin2, v.width, plim);
+    const std::vector<double> px_step = pixel_changes(base, img);
+    res.pixels = pixel_stats(px_step, px_twin1, px_twin2, v.width, plim);
+    if (!res.pixels.ok() && plim.extra_twins > 0) {
+      // the wider floor: more twins of the base pose (rendered once per pose) and of this one
+      if (base_extra.empty())
+        for (int k = 0; k < plim.extra_twins; ++k) {
+          ViewRequest vt = v;
+          vt.frame_index = v.frame_index + 3 + static_cast<std::uint32_t>(k);
+          FrameImage t;
+          check_frame(r, vt, &t, q);
+          base_extra.push_back(pixel_changes(base, t));
+        }
+      std::vector<double> j_wide(px_step.size());
+      for (size_t i = 0; i < j_wide.size(); ++i) j_wide[i] = std::max(px_twin1[i], px_twin2[i]);
+      auto widen = [&](const std::vector<double>& c) {
+        for (size_t i = 0; i < j_wide.size() && i < c.size(); ++i) j_wide[i] = std::max(j_wide[i], c[i]);
+      };
+      for (const std::vector<double>& c : base_extra) widen(c);
+      for (int k = 0; k < plim.extra_twins; ++k) {
+        ViewRequest vt = s.v;
+        vt.frame_index = v.frame_index + 1 + static_cast<std::uint32_t>(k);
+        FrameImage t;
+        check_frame(r, vt, &t, q);
+        widen(pixel_changes(img, t));
+      }
+      for (size_t i = 0; i < px_step.size(); ++i) {
+        if (px_step[i] <= plim.k * j_wide[i] + plim.allowance) continue;
+        ++res.pixels.pixels_over_wide;
+        res.pixels.wide_without_noise += j_wide[i] == 0.0 ? 1 : 0;
+        if (std::getenv("STAB_VERBOSE")) {
+          const float *a = &base.rgba[i * 4], *b = &img.rgba[i * 4];
+          std::fprintf(stderr, "over (wide floor) %s pixel (%zu,%zu): s %.3g j %.3g j_wide %.3g, rgba %.4g %.4g %.4g %.3f -> %.4g %.4g %.4g %.3f\n",
+                       s.what, i % static_cast<size_t>(v.width), i / static_cast<size_t>(v.width), px_step[i],
+                       std::max(px_twin1[i], px_twin2[i]), j_wide[i], a[0], a[1], a[2], a[3], b[0], b[1], b[2], b[3]);
+        }
+      }
+    }
     out.push_back(res);
   }
   return out;

@@ -35,6 +35,10 @@ RenderQuality reuse(RenderQuality q, int stride) {
   q.temporal_reuse = true;
   q.temporal_stride = stride;
   if (stride == 4) q.fast_motion_px = 1.0;
+  // each frame's sample through another point of the pixel: the accumulated history is the
+  // pixel's footprint average (antialiasing), the quantity cloudbench's reference is
+  // (docs/STABILITY.md, "Footprint jitter")
+  q.footprint_jitter = true;
   return q;
 }
 

@@ -81,6 +81,69 @@ vec3 sun_disk(vec3 dir, float h) {
   return U.sun_irradiance.rgb / omega * transmittance_to_space(h, sun.z) * (ox * oy / (p * p));
 }
 
+// Radiance of the ground seen along dir, which hits it at distance t_ground (W m^-2 sr^-1
+// nm^-1): lit by the sun through the clouds' optical depth above the ground point (ground
+// shadow map, or marched per pixel) and by the sky, seen through the aerial perspective.
+vec3 ground_radiance(vec3 dir, float t_ground, vec2 ndc) {
+  float R = U.planet.x, h = U.planet.y, ground_alt = U.planet.z;
+  vec3 sun = U.sun_dir.xyz;
+  vec3 E_sun = U.sun_irradiance.rgb;
+  vec3 p = t_ground * dir;
+  vec3 up = up_at(p, R, h);
+  float mu_s = dot(up, sun);
+  vec3 T_atm = transmittance_to_space(ground_alt, mu_s);
+  float tau = 0.0;  // cloud optical depth above the ground point, towards the sun
+  if (SM.params.z != 0.0 && mu_s > 0.0)
+    for (int li = 0; li < U.counts.x; ++li)
+      tau += textureLod(ground_shadow, vec3(shadow_map_uv((SM.to_anchor[li] * vec4(p, 1.0)).xyz), float(li)), 0.0).r;
+  else if (SM.params.w != 0.0 && mu_s > 0.0)
+    for (int li = 0; li < U.counts.x; ++li)
+      tau += layer_shadow_optical_depth(li, p, ground_alt, sun, mu_s, int(U.quality.w));
+  // sun through the clouds: the delta-Eddington beam transmittance of their vertical
+  // optical depth (direct + forward-scattered + diffuse); sky light: the diffuse one
+  float tau_v = tau * max(mu_s, 0.0);
+  float sun_through = mu_s > 0.0 ? slab_beam_transmittance(tau_v, max(mu_s, 0.05)) : 0.0;
+  vec3 E = E_sun * (T_atm * max(mu_s, 0.0) * sun_through + sky_irradiance(ground_alt, mu_s) * slab_diffuse_transmittance(tau_v));
+  vec3 L_ground = U.ground_albedo.rgb / PI * E;
+  vec3 ap_in, ap_T;
+  aerial_perspective(ndc, t_ground, ap_in, ap_T);
+  return L_ground * ap_T + E_sun * ap_in;
+}
+
+// Radiance of the sky along dir (sky-view LUT; the sun disk is added separately).
+vec3 sky_radiance(vec3 dir) {
+  vec3 sun = U.sun_dir.xyz;
+  float r = atmo_radius(U.planet.y);
+  // direction relative to the sun's azimuth: x towards the sun's horizontal direction
+  vec2 sun_h = sun.xy;
+  float sl = length(sun_h);
+  vec2 ax = sl > 1e-6 ? sun_h / sl : vec2(1.0, 0.0);
+  vec3 d_rel = vec3(dot(dir.xy, ax), dot(dir.xy, vec2(-ax.y, ax.x)), dir.z);
+  return U.sun_irradiance.rgb * textureLod(sky_view_lut, sky_view_uv(d_rel, r, vec2(textureSize(sky_view_lut, 0))), 0.0).rgb +
+         vec3(U.ground_albedo.w);
+}
+
+// Fraction of a pixel below the horizon. The elevation e over the pixel is taken as linear
+// in the pixel's two axes: e = e_c + u + v with u, v uniform over widths a, b (e's change
+// across the pixel along its width and its height), so the fraction with e < e_h is the
+// CDF of the sum of two uniforms at e_h - e_c: a trapezoid, piecewise quadratic (exact for
+// a straight horizon over a square box filter).
+float below_fraction(float z, float a, float b) {  // P(u + v < z), widths a, b
+  float w1 = max(a, b), w2 = min(a, b);
+  float hs = 0.5 * (w1 + w2), hd = 0.5 * (w1 - w2);
+  if (z <= -hs) return 0.0;
+  if (z >= hs) return 1.0;
+  float zs = abs(z);
+  float upper = zs < hd ? (zs + 0.5 * w1) / w1 : 1.0 - (hs - zs) * (hs - zs) / (2.0 * w1 * max(w2, 1e-12));
+  return z >= 0.0 ? upper : 1.0 - upper;
+}
+
+// dir turned in its vertical plane to elevation e (radians); dir not vertical.
+vec3 at_elevation(vec3 dir, float e) {
+  vec2 hz = normalize(dir.xy);
+  return vec3(hz * cos(e), sin(e));
+}
+
 void main() {
   ivec2 px = ivec2(gl_GlobalInvocationID.xy);
   ivec2 size = imageSize(out_image);
@@ -89,59 +152,71 @@ void main() {
   ndc.y = -ndc.y;  // row 0 is the top of the image
   vec3 dir = view_ray(ndc);
   float R = U.planet.x, h = U.planet.y, ground_alt = U.planet.z;
-  vec3 sun = U.sun_dir.xyz;
-  vec3 E_sun = U.sun_irradiance.rgb;
   float mu = dir.z;
 
   vec2 g = intersect_shell(R, h, ground_alt, mu);
   bool hits_ground = g.x >= 0.0;
   float t_ground = hits_ground ? g.x : 1e30;
 
-  vec4 cloud = cloud_at(px, t_ground);
-  vec3 C = cloud.rgb;  // radiance from the clouds, through the air in front of them
-  float T = clamp(cloud.a, 0.0, 1.0);  // cloud transmittance
-
-  // ---- background: ground or sky, faded out behind clouds as their transmittance falls
-  // from twice to once the march's early-exit threshold (the march drops the clouds behind
-  // at that level too; the fade keeps the image continuous) and skipped below it; the sun
-  // disk, bright enough to show through them, always
-  vec3 sun_seen = hits_ground ? vec3(0.0) : sun_disk(dir, h);
-  float background_weight = saturate(T / BACKGROUND_T_EPS - 1.0);
-  vec3 background = vec3(0.0);
-  if (background_weight > 0.0 && hits_ground) {
-    vec3 p = t_ground * dir;
-    vec3 up = up_at(p, R, h);
-    float mu_s = dot(up, sun);
-    vec3 T_atm = transmittance_to_space(ground_alt, mu_s);
-    float tau = 0.0;  // cloud optical depth above the ground point, towards the sun
-    if (SM.params.z != 0.0 && mu_s > 0.0)
-      for (int li = 0; li < U.counts.x; ++li)
-        tau += textureLod(ground_shadow, vec3(shadow_map_uv((SM.to_anchor[li] * vec4(p, 1.0)).xyz), float(li)), 0.0).r;
-    else if (SM.params.w != 0.0 && mu_s > 0.0)
-      for (int li = 0; li < U.counts.x; ++li)
-        tau += layer_shadow_optical_depth(li, p, ground_alt, sun, mu_s, int(U.quality.w));
-    // sun through the clouds: the delta-Eddington beam transmittance of their vertical
-    // optical depth (direct + forward-scattered + diffuse); sky light: the diffuse one
-    float tau_v = tau * max(mu_s, 0.0);
-    float sun_through = mu_s > 0.0 ? slab_beam_transmittance(tau_v, max(mu_s, 0.05)) : 0.0;
-    vec3 E = E_sun * (T_atm * max(mu_s, 0.0) * sun_through + sky_irradiance(ground_alt, mu_s) * slab_diffuse_transmittance(tau_v));
-    vec3 L_ground = U.ground_albedo.rgb / PI * E;
-    vec3 ap_in, ap_T;
-    aerial_perspective(ndc, t_ground, ap_in, ap_T);
-    background = L_ground * ap_T + E_sun * ap_in;
-  } else if (background_weight > 0.0) {
-    float r = atmo_radius(h);
-    // direction relative to the sun's azimuth: x towards the sun's horizontal direction
-    vec2 sun_h = sun.xy;
-    float sl = length(sun_h);
-    vec2 ax = sl > 1e-6 ? sun_h / sl : vec2(1.0, 0.0);
-    vec3 d_rel = vec3(dot(dir.xy, ax), dot(dir.xy, vec2(-ax.y, ax.x)), dir.z);
-    background = E_sun * textureLod(sky_view_lut, sky_view_uv(d_rel, r, vec2(textureSize(sky_view_lut, 0))), 0.0).rgb;
-    background += vec3(U.ground_albedo.w);
+  // ---- the horizon, antialiased: the fraction f of the pixel's footprint below it (box
+  // filter), from the ray elevations at the pixel's edges, where the pixel can reach it (its
+  // elevation range is at most sqrt(2) times the centre pixel's angle 2 tan(hfov/2) / width).
+  // The horizon's elevation seen from altitude h above the ground sphere is -dip,
+  // cos(dip) = (R + ground)/(R + h), written as 2 asin(sqrt((h - ground) / (2 (R + h))))
+  // (no cancellation at h of metres).
+  float e_c = asin(clamp(mu, -1.0, 1.0));
+  float e_h = -2.0 * asin(sqrt(max(h - ground_alt, 0.0) / (2.0 * (R + h))));
+  vec4 cloud = cloud_at(px, t_ground);  // rgb: radiance from the clouds through the air in front; a: their transmittance
+  float f_ground = hits_ground ? 1.0 : 0.0;
+  vec3 dir_g = dir, dir_s = dir;  // the rays the ground and the sky parts are seen along
+  float t_g = t_ground;
+  if (abs(e_c - e_h) < 1.5 * U.view.x / U.view.z && abs(mu) < 0.999) {
+    vec2 half_px = vec2(1.0, -1.0) / vec2(size);
+    // elevation change across the pixel, per +1 column and per +1 row
+    float ex = asin(clamp(view_ray(ndc + vec2(half_px.x, 0.0)).z, -1.0, 1.0)) - asin(clamp(view_ray(ndc - vec2(half_px.x, 0.0)).z, -1.0, 1.0));
+    float ey = asin(clamp(view_ray(ndc + vec2(0.0, half_px.y)).z, -1.0, 1.0)) - asin(clamp(view_ray(ndc - vec2(0.0, half_px.y)).z, -1.0, 1.0));
+    float f = below_fraction(e_h - e_c, abs(ex), abs(ey));
+    if (f > 0.0 && f < 1.0) {
+      // the ground part seen along a ray at least a quarter of the pixel's elevation range
+      // below the horizon, the sky part at least as far above it: both vary continuously
+      // with the pose and equal the centre ray once the pixel is all ground or all sky
+      float margin = 0.25 * (abs(ex) + abs(ey));
+      vec3 g_dir = at_elevation(dir, min(e_c, e_h - margin));
+      vec2 gg = intersect_shell(R, h, ground_alt, g_dir.z);
+      if (gg.x >= 0.0) {
+        // The cloud buffer holds the clouds along one ray per pixel, which sees either the
+        // ground or the sky; clouds along the other part's rays are unknown (under a deck,
+        // the sky just above the horizon may be clear or cloud, measured both ways against
+        // the reference). So the box filter is used where the buffer shows no cloud here
+        // or across the horizon (the pixels on either side along the elevation gradient),
+        // and fades to the centre's ground-or-sky as their largest opacity reaches 5 %.
+        ivec2 up = abs(ex) > abs(ey) ? ivec2(ex > 0.0 ? 1 : -1, 0) : ivec2(0, ey > 0.0 ? 1 : -1);
+        float T_min = min(cloud.a, min(cloud_at(clamp(px + up, ivec2(0), size - 1), 1e30).a,
+                                       cloud_at(clamp(px - up, ivec2(0), size - 1), gg.x).a));
+        float w = 1.0 - smoothstep(0.0, 0.05, 1.0 - T_min);
+        f_ground = mix(f_ground, f, w);
+        dir_g = g_dir;
+        t_g = gg.x;
+        dir_s = at_elevation(dir, max(e_c, e_h + margin));
+      }
+    }
   }
 
+  // ---- background: ground and/or sky, faded out behind clouds as their transmittance
+  // falls from twice to once the march's early-exit threshold (the march drops the clouds
+  // behind at that level too; the fade keeps the image continuous) and skipped below it;
+  // the sun disk, bright enough to show through them, always (over the part of the pixel
+  // above the horizon)
+  float T = clamp(cloud.a, 0.0, 1.0);
+  float background_weight = saturate(T / BACKGROUND_T_EPS - 1.0);
+  vec3 background = vec3(0.0);
+  if (background_weight > 0.0) {
+    if (f_ground > 0.0) background += f_ground * ground_radiance(dir_g, t_g, ndc);
+    if (f_ground < 1.0) background += (1.0 - f_ground) * sky_radiance(dir_s);
+  }
+  vec3 sun_seen = f_ground < 1.0 ? (1.0 - f_ground) * sun_disk(dir, h) : vec3(0.0);
   float opacity = 1.0 - T;
-  vec3 radiance = C + T * (background_weight * background + sun_seen);
+  vec3 radiance = cloud.rgb + T * (background_weight * background + sun_seen);
 
   if (any(isnan(radiance)) || any(isinf(radiance)) || any(lessThan(radiance, vec3(0.0)))) {
     atomicAdd(counters.nonfinite_pixels, 1u);

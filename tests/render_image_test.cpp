@@ -10,6 +10,7 @@
 #include "geodesy/shell_intersection.h"
 #include "geodesy/solar_position.h"
 #include "render_test_support.h"
+#include "renderer/reference/reference_renderer.h"
 
 namespace cloudsvc::test {
 namespace {
@@ -244,6 +245,59 @@ TEST(RenderImage, SunDiskIsBoxFilteredOverThePixel) {
               brightest, worst_step, 100.0 * worst_step / brightest, e_min, e_max);
   EXPECT_LT(worst_step, 0.05 * brightest);
   EXPECT_LT(e_max / e_min, 1.02);
+}
+
+// The horizon is box-filtered over the pixel (scene.comp: the fraction of the pixel's
+// footprint below the horizon, from the ray elevations at its edges): (1) a clear view
+// panned in pitch by 0.02 pixel per frame (rolled 20 deg, so the horizon crosses pixels
+// diagonally) changes no pixel by more than 5 % of the ground/sky contrast in one step (a
+// point-sampled horizon jumps by the whole contrast where it crosses a pixel centre);
+// (2) on the horizon pixels the GPU value is closer to the CPU reference's 6 x 6-ray
+// footprint than the reference's own centre ray is (the box filter is the footprint).
+TEST(RenderImage, HorizonIsBoxFilteredOverThePixel) {
+  CloudRenderer& r = shared_renderer();
+  const weather::Weather w = *weather::preset("clear");
+  r.set_weather(w);
+  const int W = 32, H = 18;
+  const double pixel_deg = 2.0 * std::atan(std::tan(30.0 * M_PI / 180.0) / W) * 180.0 / M_PI;
+  const double dip_deg = std::acos(6371000.0 / 6373000.0) * 180.0 / M_PI;  // from 2 km
+  ViewRequest v = make_view(47.45, 8.56, 2000.0, 200.0, -dip_deg, "2026-06-21T11:30:00Z", W, H);
+  v.attitude.roll_deg = 20.0;
+  std::vector<float> prev;
+  double worst_step = 0.0, contrast = 0.0;
+  for (int k = 0; k <= 60; ++k) {
+    v.attitude.pitch_deg = -dip_deg - 0.6 * pixel_deg + 0.02 * pixel_deg * k;
+    const FrameImage img = r.render(v);
+    float lo = 1e30f, hi = 0.0f;
+    for (size_t i = 1; i < img.rgba.size(); i += 4) { lo = std::min(lo, img.rgba[i]); hi = std::max(hi, img.rgba[i]); }
+    contrast = std::max(contrast, static_cast<double>(hi - lo));
+    if (!prev.empty())
+      for (size_t i = 1; i < img.rgba.size(); i += 4) worst_step = std::max(worst_step, std::abs(static_cast<double>(img.rgba[i] - prev[i])));
+    prev = img.rgba;
+  }
+  // (2) one view, the horizon through the middle rows
+  v.attitude.pitch_deg = -dip_deg + 0.13 * pixel_deg;
+  const FrameImage gpu = r.render(v);
+  reference::ReferenceSettings centre, footprint;
+  footprint.pixel_samples = 6;
+  const FrameImage ref_c = reference::render_reference(v, w, centre);
+  const FrameImage ref_f = reference::render_reference(v, w, footprint);
+  double err_gpu = 0.0, err_centre = 0.0;
+  int horizon_px = 0;
+  for (size_t i = 0; i < gpu.rgba.size() / 4; ++i) {
+    const double c = std::abs(ref_c.rgba[4 * i + 1] - ref_f.rgba[4 * i + 1]);
+    if (c < 0.05 * contrast) continue;  // not a horizon pixel
+    ++horizon_px;
+    err_gpu += std::abs(gpu.rgba[4 * i + 1] - ref_f.rgba[4 * i + 1]);
+    err_centre += c;
+  }
+  std::printf("horizon: contrast %.4g, worst change per 0.02 px pitch step %.3g (%.1f %% of it); on %d horizon pixels "
+              "mean |GPU - 6x6 footprint| %.3g, |centre ray - footprint| %.3g\n",
+              contrast, worst_step, 100.0 * worst_step / contrast, horizon_px, err_gpu / std::max(horizon_px, 1),
+              err_centre / std::max(horizon_px, 1));
+  EXPECT_LT(worst_step, 0.05 * contrast);
+  ASSERT_GT(horizon_px, 10);
+  EXPECT_LT(err_gpu, 0.5 * err_centre);
 }
 
 }  // namespace

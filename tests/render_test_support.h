@@ -40,7 +40,8 @@ inline ViewRequest make_view(double lat, double lon, double alt, double heading,
 
 // Writes img as PNG to $CLOUDSVC_TEST_IMAGES/<name>.png when that variable is set (for
 // looking at what a test saw).
-inline void maybe_save(const std::string& name, const FrameImage& img) {
+inline void maybe_save(std::string name, const FrameImage& img) {
+  for (char& c : name) if (c == '/') c = '_';  // parameterised test names
   if (const char* dir = std::getenv("CLOUDSVC_TEST_IMAGES")) write_image(std::string(dir) + "/" + name + ".png", img);
 }
 

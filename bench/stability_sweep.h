@@ -23,6 +23,7 @@
 #include <cstdio>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "geodesy/geodetic.h"
@@ -324,8 +325,10 @@ inline ViewRequest translated(const ViewRequest& v, glm::dvec3 enu_m) {
 
 // Renders the base pose, its two jitter twins and six perturbations; one result per
 // perturbation. q: the march (temporal reuse must be off: every render is a single frame).
+// only_steps: other perturbations instead of the six (name, view; controls in the tests).
 inline std::vector<SmoothResult> check_smoothness(CloudRenderer& r, const ViewRequest& v, const SmoothLimits& lim = {},
-                                                  const RenderQuality& q = {}, const PixelLimits& plim = {}) {
+                                                  const RenderQuality& q = {}, const PixelLimits& plim = {},
+                                                  const std::vector<std::pair<std::string, ViewRequest>>* only_steps = nullptr) {
   FrameImage base, twin1, twin2;
   std::vector<SmoothResult> out;
   ViewRequest vj1 = v, vj2 = v;
@@ -349,6 +352,10 @@ inline std::vector<SmoothResult> check_smoothness(CloudRenderer& r, const ViewRe
   steps[3].v.attitude.heading_deg += 0.001;
   steps[4].v.attitude.pitch_deg += dr;
   steps[5].v.attitude.roll_deg += 0.001;
+  if (only_steps) {
+    steps.clear();
+    for (const auto& [what, view] : *only_steps) steps.push_back({what.c_str(), view});
+  }
   for (const Step& s : steps) {
     SmoothResult res;
     res.what = s.what;

@@ -58,6 +58,13 @@ vec4 cloud_at(ivec2 px, float t_background) {
   return a / wsum;
 }
 
+// Cloud transmittance of the cloud-buffer texel nearest to frame pixel px (clamped to the
+// frame): a cheap look at a neighbour, without cloud_at's depth-aware upsampling.
+float cloud_transmittance_nearest(ivec2 px, ivec2 size) {
+  ivec2 q = clamp(px, ivec2(0), size - 1) / TU.buffer_size.z;
+  return texelFetch(cloud_a, min(q, TU.buffer_size.xy - 1), 0).a;
+}
+
 // Mean radiance of the sun disk over the pixel of view ray dir (W m^-2 sr^-1 nm^-1), from
 // altitude h: the disk has uniform radiance E_sun T / Omega (Omega = 2 pi (1 - cos rho),
 // rho = 0.2667 deg); the pixel is a box filter of angular width p along the camera's right
@@ -191,8 +198,7 @@ void main() {
         // or across the horizon (the pixels on either side along the elevation gradient),
         // and fades to the centre's ground-or-sky as their largest opacity reaches 5 %.
         ivec2 up = abs(ex) > abs(ey) ? ivec2(ex > 0.0 ? 1 : -1, 0) : ivec2(0, ey > 0.0 ? 1 : -1);
-        float T_min = min(cloud.a, min(cloud_at(clamp(px + up, ivec2(0), size - 1), 1e30).a,
-                                       cloud_at(clamp(px - up, ivec2(0), size - 1), gg.x).a));
+        float T_min = min(cloud.a, min(cloud_transmittance_nearest(px + up, size), cloud_transmittance_nearest(px - up, size)));
         float w = 1.0 - smoothstep(0.0, 0.05, 1.0 - T_min);
         f_ground = mix(f_ground, f, w);
         dir_g = g_dir;

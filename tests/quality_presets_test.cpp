@@ -16,15 +16,21 @@ bool same_march(const RenderQuality& a, const RenderQuality& b) {
          a.ground_shadow_map == b.ground_shadow_map;
 }
 
-// The default preset's first frame (no history) is RenderQuality{}'s march, which the
-// accuracy floors are asserted for; later frames reuse 1/16 of the pixels per frame.
+// The default preset marches RenderQuality{}'s march (the one the accuracy floors are
+// asserted for, at the pixel footprint), 1/16 of the pixels per frame, each frame through
+// another point of the pixel; every temporal preset samples the footprint, the naive
+// baseline and RenderQuality{} the pixel centre.
 TEST(QualityPresets, DefaultIsTheMarchTheAccuracyFloorsCoverWithTemporalReuse) {
   const auto d = quality_preset("default");
   ASSERT_TRUE(d);
   EXPECT_TRUE(same_march(*d, RenderQuality{}));
   EXPECT_TRUE(d->temporal_reuse);
   EXPECT_EQ(d->temporal_stride, 4);
+  EXPECT_TRUE(d->footprint_jitter);
   EXPECT_FALSE(RenderQuality{}.temporal_reuse);
+  EXPECT_FALSE(RenderQuality{}.footprint_jitter);
+  for (const std::string& name : quality_preset_names())
+    EXPECT_EQ(quality_preset(name)->footprint_jitter, quality_preset(name)->temporal_reuse) << name;
 }
 
 TEST(QualityPresets, NaiveIsTheUniformBaseline) {

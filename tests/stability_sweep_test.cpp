@@ -4,10 +4,12 @@
 // reference, 30 days after the wind anchor).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 
 #include "bench/stability_sweep.h"
 #include "render_test_support.h"
+#include "renderer/quality_presets.h"
 
 namespace cloudsvc::test {
 namespace {
@@ -67,21 +69,56 @@ TEST(StabilitySweep, SunElevationSolverHitsTarget) {
   EXPECT_NEAR(geo::solar_position(t, 47.45, 8.56).elevation_deg, 42.5, 0.2);
 }
 
+// The default preset's single frames (its march, footprint jitter, no reuse): every 1 cm /
+// 0.001 deg pair passes the image gate, and per pixel no pixel changes by more than 3x its
+// own noise (the wide floor: PixelLimits::extra_twins more jitter twins at both poses) + 2 %.
 TEST(StabilitySweep, CentimetreAndMillidegreeStepsAreSmooth) {
   CloudRenderer& r = shared_renderer();
   const std::vector<std::string> presets = weather::preset_names();
+  RenderQuality q = *quality_preset("default");
+  q.temporal_reuse = false;
+  ASSERT_TRUE(q.footprint_jitter);
   std::string current;
-  int pairs = 0;
+  int pairs = 0, over_two_twins = 0;
   for (const stab::Pose& pose : stab::make_smooth_poses(presets, 20, 99, kW, kH)) {
     if (pose.preset != current) { r.set_weather(*weather::preset(pose.preset)); current = pose.preset; }
-    for (const stab::SmoothResult& s : stab::check_smoothness(r, pose.view)) {
+    for (const stab::SmoothResult& s : stab::check_smoothness(r, pose.view, {}, q)) {
       ++pairs;
+      over_two_twins += s.pixels.pixels_over;
       EXPECT_TRUE(s.ok) << s.what << ": mean change " << s.step.mean_rel << " (floor " << s.jitter.mean_rel
                         << "), fraction > 1e-2 " << s.step.frac_above << " (floor " << s.jitter.frac_above
                         << "), max " << s.step.max_rel << " | " << stab::describe(pose);
+      EXPECT_TRUE(s.pixels.ok_wide()) << s.what << ": " << s.pixels.pixels_over_wide << " pixels over 3 j_wide + 0.02 ("
+                                      << s.pixels.wide_without_noise << " with j_wide = 0) | " << stab::describe(pose);
     }
   }
+  std::printf("%d pairs; pixels over 3 j + 0.02 with two twins: %d (all within the wide floor)\n", pairs, over_two_twins);
   EXPECT_EQ(pairs, 20 * 6);
+}
+
+// The per-pixel criterion with the wide floor can fail: a 0.3-pixel pitch step of a clear
+// view across the horizon (no jitter noise there: j_wide = 0) changes most pixels by more
+// than 2 % (the horizon pixels and the sky and haze gradients; 448 of 576 pixels when
+// written), and a 0.001 deg step of the same view passes.
+TEST(StabilitySweep, PerPixelCriterionDetectsAMovedEdge) {
+  CloudRenderer& r = shared_renderer();
+  r.set_weather(*weather::preset("clear"));
+  RenderQuality q = *quality_preset("default");
+  q.temporal_reuse = false;
+  const double dip_deg = std::acos(6371000.0 / 6373000.0) * 180.0 / M_PI;
+  const ViewRequest v = make_view(47.45, 8.56, 2000.0, 200.0, -dip_deg, "2026-06-21T11:30:00Z", kW, kH);
+  const double pixel_deg = 60.0 / kW;
+  ViewRequest big = v, tiny = v;
+  big.attitude.pitch_deg += 0.3 * pixel_deg;
+  tiny.attitude.pitch_deg += 0.001;
+  const std::vector<std::pair<std::string, ViewRequest>> steps = {{"pitch +0.3 px", big}, {"pitch +0.001 deg", tiny}};
+  const std::vector<stab::SmoothResult> res = stab::check_smoothness(r, v, {}, q, {}, &steps);
+  ASSERT_EQ(res.size(), 2u);
+  std::printf("0.3 px: %d pixels over (wide floor; %d with j_wide = 0); 0.001 deg: %d\n", res[0].pixels.pixels_over_wide,
+              res[0].pixels.wide_without_noise, res[1].pixels.pixels_over_wide);
+  EXPECT_FALSE(res[0].pixels.ok_wide());
+  EXPECT_GT(res[0].pixels.wide_without_noise, 0);
+  EXPECT_TRUE(res[1].pixels.ok());
 }
 
 // Footprint jitter (RenderQuality::footprint_jitter): each frame's ray goes through another

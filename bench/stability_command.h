@@ -46,6 +46,10 @@ inline int run(int argc, char** argv) {
   app.add_flag("--footprint-jitter", footprint_jitter, "march rays through a different point of the pixel each frame (RenderQuality::footprint_jitter; the temporal presets do)");
   bool centre = false;
   app.add_flag("--centre", centre, "march rays through the pixel centre (footprint jitter off whatever the preset)");
+  int frames_per_image = 8;
+  app.add_option("--frames-per-image", frames_per_image,
+                 "smoothness: each compared image is the mean of this many single frames (stab::SmoothLimits)")
+      ->check(CLI::Range(1, 256));
   int long_step = 0;
   app.add_option("--long-step", long_step, "override the preset's long_step_factor (1 = no probing in empty air)")->check(CLI::Range(1, 64));
   CLI11_PARSE(app, argc, argv);
@@ -127,6 +131,8 @@ inline int run(int argc, char** argv) {
   std::vector<std::string> smooth_fail;
   // Per step kind: the per-pixel statistics (stab::PixelStats; gated against the wide floor).
   const stab::PixelLimits plim;
+  stab::SmoothLimits slim;
+  slim.frames_per_image = frames_per_image;
   struct Kind {
     std::string what;
     int pairs = 0, gate_fail = 0, pixel_fail = 0, pixels_over = 0, no_noise = 0, wide_fail = 0, wide_over = 0, wide_no_noise = 0;
@@ -139,7 +145,7 @@ inline int run(int argc, char** argv) {
   std::string current;
   for (const stab::Pose& pose : sp) {
     if (pose.preset != current) { renderer.set_weather(*weather::preset(pose.preset)); current = pose.preset; }
-    for (const stab::SmoothResult& r : stab::check_smoothness(renderer, pose.view, {}, *quality, plim)) {
+    for (const stab::SmoothResult& r : stab::check_smoothness(renderer, pose.view, slim, *quality, plim)) {
       ++pairs;
       {
         auto it = std::find_if(kinds.begin(), kinds.end(), [&](const Kind& k) { return k.what == r.what; });

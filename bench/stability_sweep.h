@@ -172,6 +172,29 @@ inline FrameCheck check_frame(CloudRenderer& r, const ViewRequest& v, FrameImage
   return c;
 }
 
+// The mean of n single frames of v with frame_index f0 .. f0 + n - 1 (the renderer's
+// estimate of the view from n footprint/jitter samples; n = 1: one frame). The first failed
+// frame's check is returned.
+inline FrameCheck render_mean(CloudRenderer& r, ViewRequest v, std::uint32_t f0, int n, FrameImage* out,
+                              const RenderQuality& q) {
+  FrameImage sum;
+  for (int k = 0; k < n; ++k) {
+    v.frame_index = f0 + static_cast<std::uint32_t>(k);
+    FrameImage img;
+    const FrameCheck c = check_frame(r, v, &img, q);
+    if (!c.ok()) return c;
+    if (k == 0) {
+      sum = std::move(img);
+    } else {
+      for (size_t i = 0; i < sum.rgba.size(); ++i) sum.rgba[i] += img.rgba[i];
+    }
+  }
+  if (n > 1)
+    for (float& x : sum.rgba) x /= static_cast<float>(n);
+  if (out) *out = std::move(sum);
+  return {};
+}
+
 // ---- check 2: smoothness -----------------------------------------------------------
 
 // Per-pixel change between two renders: per colour channel |a - b| / (max(a, b) + 0.01 m),
@@ -276,7 +299,8 @@ inline PixelStats pixel_stats(const std::vector<double>& step, const std::vector
 
 // Pass criterion of one perturbation (same frame_index, so the same jitter). The noise floor
 // is what the renderer already shows from frame to frame: the larger of the changes from
-// frame_index i to i + 1 and to i + 2 of the same pose (the per-pixel jitter of the march;
+// frame_index i to i + 1 and to i + 2 of the same pose (with SmoothLimits::frames_per_image
+// n > 1: of the n-frame means from i, i + n and i + 2n; the per-pixel jitter of the march;
 // temporal accumulation is meant to average it). One pair alone under-estimates that noise
 // about half the time, so a step whose change is itself noise-like failed at random; and
 // two such estimates differ by a ratio whose 95th percentile is 1.30 (median 1.07; 110
@@ -292,6 +316,13 @@ struct SmoothLimits {
   double min_mean = 1e-3;
   double min_frac = 0.02;
   double noise_spread = 1.3;
+  // Each image compared is the mean of this many single frames with consecutive frame
+  // indices (render_mean): the base and every step from the same indices f .. f + n - 1,
+  // the jitter twins from the next blocks of n (f + n .., f + 2n ..). With footprint jitter
+  // a single frame is one random point of each pixel, whose frame-to-frame noise at a cloud
+  // edge is the whole contrast within the pixel (a floor no step can exceed); the mean of n
+  // is the renderer's estimate of the pixel footprint, with a floor ~1/sqrt(n) as wide.
+  int frames_per_image = 1;
 };
 
 // The noise floor from the changes to two jitter twins (their larger value per measure).
@@ -312,7 +343,7 @@ inline bool smooth_step_ok(const ImageDiff& step, const ImageDiff& floor, const 
 struct SmoothResult {
   std::string what;  // "east +1 cm", ...
   ImageDiff step;
-  ImageDiff jitter;  // noise floor: the larger of frame_index + 1 and + 2 vs frame_index, same pose
+  ImageDiff jitter;  // noise floor: the larger of the twins (next frame-index blocks) vs the base, same pose
   PixelStats pixels; // per-pixel view against each pixel's own jitter (two twins, then the wide floor)
   bool ok = false;   // the gate: smooth_step_ok
 };
@@ -332,10 +363,10 @@ inline std::vector<SmoothResult> check_smoothness(CloudRenderer& r, const ViewRe
                                                   const std::vector<std::pair<std::string, ViewRequest>>* only_steps = nullptr) {
   FrameImage base, twin1, twin2;
   std::vector<SmoothResult> out;
-  ViewRequest vj1 = v, vj2 = v;
-  vj1.frame_index = v.frame_index + 1;
-  vj2.frame_index = v.frame_index + 2;
-  if (!check_frame(r, v, &base, q).ok() || !check_frame(r, vj1, &twin1, q).ok() || !check_frame(r, vj2, &twin2, q).ok()) {
+  const int n = std::max(1, lim.frames_per_image);
+  const std::uint32_t f = v.frame_index, block = static_cast<std::uint32_t>(n);
+  if (!render_mean(r, v, f, n, &base, q).ok() || !render_mean(r, v, f + block, n, &twin1, q).ok() ||
+      !render_mean(r, v, f + 2 * block, n, &twin2, q).ok()) {
     SmoothResult bad;
     bad.what = "base render failed";
     out.push_back(bad);
@@ -362,19 +393,18 @@ inline std::vector<SmoothResult> check_smoothness(CloudRenderer& r, const ViewRe
     res.what = s.what;
     res.jitter = jitter;
     FrameImage img;
-    if (!check_frame(r, s.v, &img, q).ok()) { res.what += " (render failed)"; out.push_back(res); continue; }
+    if (!render_mean(r, s.v, f, n, &img, q).ok()) { res.what += " (render failed)"; out.push_back(res); continue; }
     res.step = image_diff(base, img, lim.tau);
     res.ok = smooth_step_ok(res.step, jitter, lim);
     const std::vector<double> px_step = pixel_changes(base, img);
     res.pixels = pixel_stats(px_step, px_twin1, px_twin2, v.width, plim);
     if (!res.pixels.ok() && plim.extra_twins > 0) {
       // the wider floor: more twins of the base pose (rendered once per pose) and of this one
+      bool twins_ok = true;
       if (base_extra.empty())
         for (int k = 0; k < plim.extra_twins; ++k) {
-          ViewRequest vt = v;
-          vt.frame_index = v.frame_index + 3 + static_cast<std::uint32_t>(k);
           FrameImage t;
-          check_frame(r, vt, &t, q);
+          twins_ok = render_mean(r, v, f + (3 + static_cast<std::uint32_t>(k)) * block, n, &t, q).ok() && twins_ok;
           base_extra.push_back(pixel_changes(base, t));
         }
       std::vector<double> j_wide(px_step.size());
@@ -384,11 +414,14 @@ inline std::vector<SmoothResult> check_smoothness(CloudRenderer& r, const ViewRe
       };
       for (const std::vector<double>& c : base_extra) widen(c);
       for (int k = 0; k < plim.extra_twins; ++k) {
-        ViewRequest vt = s.v;
-        vt.frame_index = v.frame_index + 1 + static_cast<std::uint32_t>(k);
         FrameImage t;
-        check_frame(r, vt, &t, q);
+        twins_ok = render_mean(r, s.v, f + (1 + static_cast<std::uint32_t>(k)) * block, n, &t, q).ok() && twins_ok;
         widen(pixel_changes(img, t));
+      }
+      if (!twins_ok) {  // a failed twin would leave the floor too low or too high: the pair fails
+        res.what += " (twin render failed)";
+        res.ok = false;
+        res.pixels.pixels_over_wide = std::max(res.pixels.pixels_over_wide, 1);
       }
       for (size_t i = 0; i < px_step.size(); ++i) {
         if (px_step[i] <= plim.k * j_wide[i] + plim.allowance) continue;

@@ -8,6 +8,7 @@
 
 #include "geodesy/solar_position.h"
 #include "renderer/coverage_cull.h"
+#include "renderer/layers_in_view.h"
 #include "renderer/frame_uniforms.h"
 #include "renderer/scene_setup.h"
 #include "renderer/temporal_reprojection.h"
@@ -167,8 +168,10 @@ unsigned CloudRenderer::cull_layers_without_cloud_in_view(FrameUniforms& u, cons
 }
 
 // The cloud march over this frame's fresh cloud pixels, then the temporal resolve into
-// cloud_a_/cloud_b_[history_] (the frame and temporal uniforms must be bound).
-TemporalUniforms CloudRenderer::march_and_resolve(const ViewRequest& view, const RenderQuality& quality) {
+// cloud_a_/cloud_b_[history_] (the frame and temporal uniforms must be bound; u: this
+// frame's uniforms).
+TemporalUniforms CloudRenderer::march_and_resolve(const ViewRequest& view, const RenderQuality& quality,
+                                                   const FrameUniforms& u) {
   const bool history = prev_view_ && history_usable(*prev_view_, prev_quality_, view, quality);
   std::optional<Reprojection> rep;
   if (history) rep = make_reprojection(*prev_view_, view, weather_, *wind_anchor_);
@@ -183,12 +186,15 @@ TemporalUniforms CloudRenderer::march_and_resolve(const ViewRequest& view, const
   prev_view_ = view;
   prev_view_->reset_history = false;
   prev_quality_ = quality;
-  if (weather_.layers.empty()) {
-    // No cloud layer: no march and nothing to resolve. Empty cloud buffer: no in-scatter,
-    // transmittance 1, no cloud shadow on the ground.
+  if (weather_.layers.empty() || !frame_meets_a_layer(u)) {
+    // No cloud layer, or none that any ray of this frame meets (above a deck looking up:
+    // renderer/layers_in_view.h): no march and nothing to resolve. Empty cloud buffer: no
+    // in-scatter, transmittance 1. The next frame starts a new history (it marches every
+    // pixel), so nothing of this empty buffer is reprojected into a view that meets a layer.
     const float empty_a[4] = {0.0f, 0.0f, 0.0f, 1.0f}, empty_b[4] = {1e7f, 0.0f, -1.0f, 0.0f};
     glClearTexImage(cloud_a_[next].id(), 0, GL_RGBA, GL_FLOAT, empty_a);
     glClearTexImage(cloud_b_[next].id(), 0, GL_RGBA, GL_FLOAT, empty_b);
+    prev_view_.reset();
     TemporalUniforms skipped = tu;
     skipped.grid.x = 0;  // nothing marched
     return skipped;
@@ -250,10 +256,13 @@ FrameImage CloudRenderer::render(const ViewRequest& view, const RenderQuality& q
   glBindTextureUnit(9, weather_maps_[1].id());
   timer_.begin(4);
   if (view.reset_history) shadow_map_.invalidate();  // a teleport starts from nothing
+  // The map serves the ground's pixels (and the light volume built with it, the march's):
+  // not updated while no ray sees the ground and none that needs the volume is marched.
+  const bool shadow_needed = frame_sees_ground(u) || (quality.light_volume && frame_meets_a_layer(u));
   const bool shadow_rebuilt = shadow_map_.update(view, u, weather_, *wind_anchor_, weather_generation_,
-                                                   !quality.ground_shadow_map, quality.light_volume);
+                                                 !quality.ground_shadow_map, quality.light_volume, shadow_needed);
   timer_.end();
-  const TemporalUniforms tu = march_and_resolve(view, quality);
+  const TemporalUniforms tu = march_and_resolve(view, quality, u);
 
   scene_prog_.use();
   glBindTextureUnit(12, cloud_a_[history_].id());  // the composite needs the radiance and transmittance only

@@ -62,9 +62,14 @@ GroundShadowMap::GroundShadowMap()
 
 bool GroundShadowMap::update(const ViewRequest& view, const FrameUniforms& u, const weather::Weather& weather,
                              const WindAnchor& wind_anchor, std::uint64_t weather_generation, bool per_pixel,
-                             bool light_volume) {
+                             bool light_volume, bool needed) {
   ShadowMapUniforms su{};
   for (auto& m : su.to_anchor) m = glm::mat4(1.0f);
+  if (!needed) {  // params and volume zero: no map, no per-pixel shadows, no volume this frame
+    glNamedBufferSubData(uniforms_.id(), 0, sizeof(ShadowMapUniforms), &su);
+    glBindBufferBase(GL_UNIFORM_BUFFER, 2, uniforms_.id());
+    return false;
+  }
   const glm::dmat3 enu = geo::enu_to_ecef(view.position.lat_deg, view.position.lon_deg);
   const glm::dvec3 sun_ecef = glm::normalize(enu * glm::dvec3(u.sun_dir.x, u.sun_dir.y, u.sun_dir.z));
   const bool night = u.sun_dir.z < std::sin(kNightDeg * M_PI / 180.0);

@@ -72,9 +72,12 @@ class GroundShadowMap {
   // view at binding 2 and binds the map at texture unit 14. Returns true if it rebuilt.
   // per_pixel: no map; the composite marches the shadows of every ground pixel.
   // light_volume: also build (with the map) and bind the light volume at unit 15 (not
-  // with per_pixel).
+  // with per_pixel). needed = false (no ground in view and no march that reads the volume):
+  // nothing is built or marched, the lookups are switched off for this frame, and the map
+  // kept for a later frame that needs it.
   bool update(const ViewRequest& view, const FrameUniforms& u, const weather::Weather& weather,
-              const WindAnchor& wind_anchor, std::uint64_t weather_generation, bool per_pixel, bool light_volume);
+              const WindAnchor& wind_anchor, std::uint64_t weather_generation, bool per_pixel, bool light_volume,
+              bool needed = true);
 
   void invalidate() { key_.reset(); }
   static constexpr int kVolumeSize = 128;   // texels per side (2K/128 under the anchor: 125 m at K = 8 km)

@@ -15,6 +15,7 @@ namespace cloudsvc::test {
 namespace {
 
 constexpr int kW = 32, kH = 18;  // pixels
+constexpr int kFramesPerImage = 8;  // stab::SmoothLimits::frames_per_image of the per-pixel checks
 
 TEST(StabilitySweep, NoNonFiniteNegativeOrFailedFrameAnywhere) {
   CloudRenderer& r = shared_renderer();
@@ -69,20 +70,23 @@ TEST(StabilitySweep, SunElevationSolverHitsTarget) {
   EXPECT_NEAR(geo::solar_position(t, 47.45, 8.56).elevation_deg, 42.5, 0.2);
 }
 
-// The default preset's single frames (its march, footprint jitter, no reuse): every 1 cm /
-// 0.001 deg pair passes the image gate, and per pixel no pixel changes by more than 3x its
-// own noise (the wide floor: PixelLimits::extra_twins more jitter twins at both poses) + 2 %.
+// The default preset's march (footprint jitter, no reuse), each image the mean of
+// kFramesPerImage frames (the renderer's estimate of the pixel footprints; the step from the
+// same frame indices as the base): every 1 cm / 0.001 deg pair passes the image gate, and per
+// pixel no pixel changes by more than 3x its own noise (the wide floor) + 2 %.
 TEST(StabilitySweep, CentimetreAndMillidegreeStepsAreSmooth) {
   CloudRenderer& r = shared_renderer();
   const std::vector<std::string> presets = weather::preset_names();
   RenderQuality q = *quality_preset("default");
   q.temporal_reuse = false;
   ASSERT_TRUE(q.footprint_jitter);
+  stab::SmoothLimits lim;
+  lim.frames_per_image = kFramesPerImage;
   std::string current;
   int pairs = 0, over_two_twins = 0;
   for (const stab::Pose& pose : stab::make_smooth_poses(presets, 20, 99, kW, kH)) {
     if (pose.preset != current) { r.set_weather(*weather::preset(pose.preset)); current = pose.preset; }
-    for (const stab::SmoothResult& s : stab::check_smoothness(r, pose.view, {}, q)) {
+    for (const stab::SmoothResult& s : stab::check_smoothness(r, pose.view, lim, q)) {
       ++pairs;
       over_two_twins += s.pixels.pixels_over;
       EXPECT_TRUE(s.ok) << s.what << ": mean change " << s.step.mean_rel << " (floor " << s.jitter.mean_rel
@@ -119,6 +123,35 @@ TEST(StabilitySweep, PerPixelCriterionDetectsAMovedEdge) {
   EXPECT_FALSE(res[0].pixels.ok_wide());
   EXPECT_GT(res[0].pixels.wide_without_noise, 0);
   EXPECT_TRUE(res[1].pixels.ok());
+}
+
+// ... and inside clouds, where the footprint jitter is noisy: cumulonimbus towers from
+// 13 km, a one-pixel heading step (1.9 deg) fails the gate and, per pixel, on cloud pixels
+// (j_wide > 0; 16 when written), while a 0.001 deg step passes. With single frames
+// (frames_per_image 1) neither would see it: one frame's footprint noise at a cloud edge is
+// the whole contrast within the pixel (0 cloud pixels over, gate passed).
+TEST(StabilitySweep, PerPixelCriterionDetectsAStepInsideClouds) {
+  CloudRenderer& r = shared_renderer();
+  RenderQuality q = *quality_preset("default");
+  q.temporal_reuse = false;
+  r.set_weather(*weather::preset("cumulonimbus"));
+  const ViewRequest v = make_view(47.45, 8.56, 13000.0, 200.0, -15.0, "2026-06-21T11:30:00Z", kW, kH);
+  ViewRequest big = v, tiny = v;
+  big.attitude.heading_deg += 60.0 / kW;
+  tiny.attitude.heading_deg += 0.001;
+  const std::vector<std::pair<std::string, ViewRequest>> steps = {{"heading +1 px", big}, {"heading +0.001 deg", tiny}};
+  stab::SmoothLimits lim;
+  lim.frames_per_image = kFramesPerImage;
+  const std::vector<stab::SmoothResult> res = stab::check_smoothness(r, v, lim, q, {}, &steps);
+  ASSERT_EQ(res.size(), 2u);
+  const int cloud_px_over = res[0].pixels.pixels_over_wide - res[0].pixels.wide_without_noise;
+  std::printf("cumulonimbus from 13 km, %d-frame means: 1 px heading: %d pixels over the wide floor (%d with j_wide > 0), gate %s; "
+              "0.001 deg: %d over two twins\n", kFramesPerImage, res[0].pixels.pixels_over_wide, cloud_px_over,
+              res[0].ok ? "passed" : "failed", res[1].pixels.pixels_over);
+  EXPECT_GT(cloud_px_over, 0);
+  EXPECT_FALSE(res[0].ok);
+  EXPECT_TRUE(res[1].pixels.ok_wide());
+  EXPECT_TRUE(res[1].ok);
 }
 
 // Footprint jitter (RenderQuality::footprint_jitter): each frame's ray goes through another

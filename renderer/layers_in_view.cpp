@@ -1,0 +1,97 @@
+#include "renderer/layers_in_view.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace cloudsvc {
+namespace {
+
+const glm::dvec3 kZenith{0.0, 0.0, 1.0};
+
+// Does direction d of the camera's view fall inside the frustum (its image coordinates
+// within [-1, 1]^2 and in front)?
+bool in_frustum(const glm::dvec3& d, const glm::dvec3& f, const glm::dvec3& r, const glm::dvec3& u, double tx,
+                double ty) {
+  const double depth = glm::dot(d, f);
+  if (depth <= 0.0) return false;
+  return std::abs(glm::dot(d, r)) <= tx * depth && std::abs(glm::dot(d, u)) <= ty * depth;
+}
+
+// Extend range by the extremes of z on the great-circle arc from unit a to unit b (< 180 deg).
+void arc_extremes(const glm::dvec3& a, const glm::dvec3& b, MuRange& range) {
+  range.min = std::min({range.min, a.z, b.z});
+  range.max = std::max({range.max, a.z, b.z});
+  const glm::dvec3 n_raw = glm::cross(a, b);
+  const double nl = glm::length(n_raw);
+  if (nl < 1e-15) return;
+  const glm::dvec3 n = n_raw / nl;
+  const glm::dvec3 p_raw = kZenith - n.z * n;  // the circle's highest point, unnormalised
+  const double pl = glm::length(p_raw);
+  if (pl < 1e-15) return;  // the circle is horizontal: z is constant on it
+  const glm::dvec3 p = p_raw / pl;
+  // p (or -p) is on the arc when it lies between a and b in the circle's sense
+  auto on_arc = [&](const glm::dvec3& q) { return glm::dot(glm::cross(a, q), n) >= 0.0 && glm::dot(glm::cross(q, b), n) >= 0.0; };
+  if (on_arc(p)) range.max = std::max(range.max, p.z);
+  if (on_arc(-p)) range.min = std::min(range.min, -p.z);
+}
+
+// 1 - ((R + a) / (R + h))^2 without cancellation: (h - a)(2R + h + a) / (R + h)^2.
+double one_minus_ratio_sq(double R, double h, double a) { return (h - a) * (2.0 * R + h + a) / ((R + h) * (R + h)); }
+
+}  // namespace
+
+MuRange frustum_mu_range(const glm::dvec3& f, const glm::dvec3& r, const glm::dvec3& u, double tx, double ty) {
+  glm::dvec3 c[4];
+  const double sx[4] = {-1.0, 1.0, 1.0, -1.0}, sy[4] = {-1.0, -1.0, 1.0, 1.0};  // around the rectangle
+  for (int i = 0; i < 4; ++i) c[i] = glm::normalize(f + sx[i] * tx * r + sy[i] * ty * u);
+  MuRange range{1.0, -1.0};
+  for (int i = 0; i < 4; ++i) arc_extremes(c[i], c[(i + 1) % 4], range);
+  if (in_frustum(kZenith, f, r, u, tx, ty)) range.max = 1.0;
+  if (in_frustum(-kZenith, f, r, u, tx, ty)) range.min = -1.0;
+  return range;
+}
+
+namespace {
+
+// float axes: the range is widened by a margin far above their rounding (1e-6), far below a
+// pixel (1e-4 rad)
+constexpr double kMuMargin = 1e-5;
+
+MuRange frame_mu_range(const FrameUniforms& uf) {
+  const glm::dvec3 f(uf.camera_forward), r(uf.camera_right), u(uf.camera_up);
+  return frustum_mu_range(f, r, u, uf.view.x, uf.view.y);
+}
+
+// Zenith cosine of the rays tangent to the ground sphere from the camera (rays below hit it).
+double ground_tangent_mu(const FrameUniforms& uf) {
+  const double R = uf.planet.x, h = uf.planet.y, ground = uf.planet.z;
+  return h > ground ? -std::sqrt(std::max(0.0, one_minus_ratio_sq(R, h, ground))) : 0.0;
+}
+
+}  // namespace
+
+bool frame_sees_ground(const FrameUniforms& uf) { return frame_mu_range(uf).min < ground_tangent_mu(uf) + kMuMargin; }
+
+bool frame_meets_a_layer(const FrameUniforms& uf) {
+  const MuRange mu = frame_mu_range(uf);
+  const double margin = kMuMargin;
+  const double R = uf.planet.x, h = uf.planet.y;
+  for (int i = 0; i < std::min(uf.counts.x, kGpuMaxLayers); ++i) {
+    const CloudLayerGpu& L = uf.layers[i];
+    if (L.altitude.z <= 0.0f) continue;  // culled or clear: not marched
+    const double base = L.altitude.x, top = L.altitude.y;
+    if (h >= top) {
+      // rays below the top sphere's tangent meet it
+      const double mu_top = -std::sqrt(std::max(0.0, one_minus_ratio_sq(R, h, top)));
+      if (mu.min < mu_top + margin) return true;
+    } else if (h >= base) {
+      return true;  // inside the layer
+    } else {
+      // below the base: every ray that does not hit the ground first reaches the base sphere
+      if (mu.max > ground_tangent_mu(uf) - margin) return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace cloudsvc

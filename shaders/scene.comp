@@ -195,10 +195,12 @@ void main() {
         // ground or the sky; clouds along the other part's rays are unknown (under a deck,
         // the sky just above the horizon may be clear or cloud, measured both ways against
         // the reference). So the box filter is used where the buffer shows no cloud here
-        // or across the horizon (the pixels on either side along the elevation gradient),
-        // and fades to the centre's ground-or-sky as their largest opacity reaches 5 %.
-        ivec2 up = abs(ex) > abs(ey) ? ivec2(ex > 0.0 ? 1 : -1, 0) : ivec2(0, ey > 0.0 ? 1 : -1);
-        float T_min = min(cloud.a, min(cloud_transmittance_nearest(px + up, size), cloud_transmittance_nearest(px - up, size)));
+        // or across the horizon (its four edge neighbours: whatever the roll, two of them lie
+        // across it; no switch between pairs), and fades to the centre's ground-or-sky as
+        // their largest opacity reaches 5 %.
+        float T_min = min(min(cloud.a, cloud_transmittance_nearest(px + ivec2(1, 0), size)),
+                          min(cloud_transmittance_nearest(px - ivec2(1, 0), size),
+                              min(cloud_transmittance_nearest(px + ivec2(0, 1), size), cloud_transmittance_nearest(px - ivec2(0, 1), size))));
         float w = 1.0 - smoothstep(0.0, 0.05, 1.0 - T_min);
         f_ground = mix(f_ground, f, w);
         dir_g = g_dir;

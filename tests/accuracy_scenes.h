@@ -1,11 +1,10 @@
 // The accuracy scene set (issue "Accuracy", DESIGN.md §7), shared by
-// tests/accuracy_reference_vs_gpu_test.cpp, tests/accuracy_presets_test.cpp and
-// bench/cloudbench.cpp so that every accuracy number in docs/ACCURACY.md is measured on the
+// tests/accuracy_reference_vs_gpu_test.cpp and bench/cloudbench.cpp so that every accuracy number in docs/ACCURACY.md is measured on the
 // same views. No gtest here (the benchmark includes it too).
 //
 // Zurich area (47.45 N 8.56 E), midsummer 2026 (solar noon ~11:26 UTC, sunset ~19:26 UTC);
-// no view has the sun disk in the frame (its single-pixel radiance, ~2e4 W m^-2 sr^-1 nm^-1,
-// would dominate every metric).
+// no view has the sun disk in the frame (its radiance, ~2e4 W m^-2 sr^-1 nm^-1 over the
+// pixels it covers even box-filtered, would dominate every metric).
 #pragma once
 
 #include <string>

@@ -52,21 +52,6 @@ struct Summary {
   double luts_ms = 0, shadow_ms = 0, march_ms = 0, resolve_ms = 0, composite_ms = 0;
 };
 
-// The mean of each n x n block of img (rgba): the footprint of one pixel of the 1/n image.
-inline FrameImage box_downsample(const FrameImage& img, int n) {
-  if (n == 1) return img;
-  FrameImage out;
-  out.width = img.width / n;
-  out.height = img.height / n;
-  out.stats = img.stats;
-  out.rgba.assign(static_cast<size_t>(out.width) * out.height * 4, 0.0f);
-  const float k = 1.0f / static_cast<float>(n * n);
-  for (int y = 0; y < out.height * n; ++y)
-    for (int x = 0; x < out.width * n; ++x)
-      for (int c = 0; c < 4; ++c) out.rgba[(static_cast<size_t>(y / n) * out.width + x / n) * 4 + c] += k * img.pixel(x, y)[c];
-  return out;
-}
-
 inline int run(int argc, char** argv) {
   CLI::App app{"Temporal reuse on a flying camera (cloudbench --sequence)"};
   std::string size = "160x90", out = "bench-out";
@@ -114,7 +99,7 @@ inline int run(int argc, char** argv) {
       v.reset_history = true;
       v.width = w * ref_samples;
       v.height = h * ref_samples;
-      refs.push_back(box_downsample(ref_renderer.render(v, converged), ref_samples));
+      refs.push_back(reference::box_downsample(ref_renderer.render(v, converged), ref_samples));
     }
     for (const auto& [name, q] : configs) {
       CloudRenderer r;

@@ -124,20 +124,6 @@ RenderQuality fine_quality() {
   return q;
 }
 
-// The mean of each n x n block of img: the footprint of one pixel of the 1/n image.
-FrameImage box_downsample(const FrameImage& img, int n) {
-  FrameImage out;
-  out.width = img.width / n;
-  out.height = img.height / n;
-  out.stats = img.stats;
-  out.rgba.assign(static_cast<std::size_t>(out.width) * out.height * 4, 0.0f);
-  const float k = 1.0f / static_cast<float>(n * n);
-  for (int y = 0; y < out.height * n; ++y)
-    for (int x = 0; x < out.width * n; ++x)
-      for (int c = 0; c < 4; ++c) out.rgba[(static_cast<std::size_t>(y / n) * out.width + x / n) * 4 + c] += k * img.pixel(x, y)[c];
-  return out;
-}
-
 // The last of `frames` renders of the still view v (the first starts a new history).
 FrameImage render_still(const weather::Weather& w, ViewRequest v, const RenderQuality& q, int frames) {
   CloudRenderer& r = shared_renderer();
@@ -159,7 +145,7 @@ FrameImage render_footprint(const weather::Weather& w, ViewRequest v, RenderQual
   v.width *= kSamples;
   v.height *= kSamples;
   v.reset_history = true;
-  return box_downsample(render_weather(w, v, q), kSamples);
+  return reference::box_downsample(render_weather(w, v, q), kSamples);
 }
 
 class AccuracySceneVsReference : public ::testing::TestWithParam<std::size_t> {};

@@ -41,4 +41,19 @@ ImageDifference compare_images(const FrameImage& test, const FrameImage& referen
   return d;
 }
 
+FrameImage box_downsample(const FrameImage& img, int n) {
+  if (n <= 1) return img;
+  FrameImage out;
+  out.width = img.width / n;
+  out.height = img.height / n;
+  out.stats = img.stats;
+  out.rgba.assign(static_cast<std::size_t>(out.width) * out.height * 4, 0.0f);
+  const float k = 1.0f / static_cast<float>(n * n);
+  for (int y = 0; y < out.height * n; ++y)
+    for (int x = 0; x < out.width * n; ++x)
+      for (int c = 0; c < 4; ++c)
+        out.rgba[(static_cast<std::size_t>(y / n) * out.width + x / n) * 4 + c] += k * img.pixel(x, y)[c];
+  return out;
+}
+
 }  // namespace cloudsvc::reference

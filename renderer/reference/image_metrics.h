@@ -26,4 +26,8 @@ struct ImageDifference {
 // Images must have the same size. fixed_peak > 0 replaces the reference's peak.
 ImageDifference compare_images(const FrameImage& test, const FrameImage& reference, double fixed_peak = 0.0);
 
+// The mean of each n x n block of img (rgba; width and height divisible by n): the box-
+// filtered footprint of one pixel of the 1/n image (n = 1: img itself).
+FrameImage box_downsample(const FrameImage& img, int n);
+
 }  // namespace cloudsvc::reference

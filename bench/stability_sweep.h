@@ -355,6 +355,11 @@ inline ViewRequest translated(const ViewRequest& v, glm::dvec3 enu_m) {
   return o;
 }
 
+// a[i] = max(a[i], b[i]) (b may be empty after a failed render: then nothing changes).
+inline void max_into(std::vector<double>& a, const std::vector<double>& b) {
+  for (size_t i = 0; i < a.size() && i < b.size(); ++i) a[i] = std::max(a[i], b[i]);
+}
+
 // Renders the base pose, its two jitter twins and six perturbations; one result per
 // perturbation. q: the march (temporal reuse must be off: every render is a single frame).
 // only_steps: other perturbations instead of the six (name, view; controls in the tests).
@@ -374,7 +379,9 @@ inline std::vector<SmoothResult> check_smoothness(CloudRenderer& r, const ViewRe
   }
   const ImageDiff jitter = jitter_floor(image_diff(base, twin1, lim.tau), image_diff(base, twin2, lim.tau));
   const std::vector<double> px_twin1 = pixel_changes(base, twin1), px_twin2 = pixel_changes(base, twin2);
-  std::vector<std::vector<double>> base_extra;  // changes of the base to its extra twins (PixelLimits)
+  // the base's part of the wide floor (PixelLimits::extra_twins), rendered when a step first needs it
+  std::vector<double> base_wide;
+  bool base_wide_ok = true;
   const double dr = v.attitude.pitch_deg > 89.0 ? -0.001 : 0.001;  // stay within [-90, 90]
   struct Step { const char* what; ViewRequest v; };
   std::vector<Step> steps = {{"east +1 cm", translated(v, {0.01, 0, 0})},
@@ -399,24 +406,23 @@ inline std::vector<SmoothResult> check_smoothness(CloudRenderer& r, const ViewRe
     const std::vector<double> px_step = pixel_changes(base, img);
     res.pixels = pixel_stats(px_step, px_twin1, px_twin2, v.width, plim);
     if (!res.pixels.ok() && plim.extra_twins > 0) {
-      // the wider floor: more twins of the base pose (rendered once per pose) and of this one
-      bool twins_ok = true;
-      if (base_extra.empty())
+      // the wide floor: the base's part (its two twins and extra_twins more) once per pose,
+      // then this step's own twins
+      if (base_wide.empty()) {
+        base_wide.resize(px_step.size());
+        for (size_t i = 0; i < base_wide.size(); ++i) base_wide[i] = std::max(px_twin1[i], px_twin2[i]);
         for (int k = 0; k < plim.extra_twins; ++k) {
           FrameImage t;
-          twins_ok = render_mean(r, v, f + (3 + static_cast<std::uint32_t>(k)) * block, n, &t, q).ok() && twins_ok;
-          base_extra.push_back(pixel_changes(base, t));
+          base_wide_ok = render_mean(r, v, f + (3 + static_cast<std::uint32_t>(k)) * block, n, &t, q).ok() && base_wide_ok;
+          max_into(base_wide, pixel_changes(base, t));
         }
-      std::vector<double> j_wide(px_step.size());
-      for (size_t i = 0; i < j_wide.size(); ++i) j_wide[i] = std::max(px_twin1[i], px_twin2[i]);
-      auto widen = [&](const std::vector<double>& c) {
-        for (size_t i = 0; i < j_wide.size() && i < c.size(); ++i) j_wide[i] = std::max(j_wide[i], c[i]);
-      };
-      for (const std::vector<double>& c : base_extra) widen(c);
+      }
+      std::vector<double> j_wide = base_wide;
+      bool twins_ok = base_wide_ok;
       for (int k = 0; k < plim.extra_twins; ++k) {
         FrameImage t;
         twins_ok = render_mean(r, s.v, f + (1 + static_cast<std::uint32_t>(k)) * block, n, &t, q).ok() && twins_ok;
-        widen(pixel_changes(img, t));
+        max_into(j_wide, pixel_changes(img, t));
       }
       if (!twins_ok) {  // a failed twin would leave the floor too low or too high: the pair fails
         res.what += " (twin render failed)";

@@ -168,10 +168,10 @@ unsigned CloudRenderer::cull_layers_without_cloud_in_view(FrameUniforms& u, cons
 }
 
 // The cloud march over this frame's fresh cloud pixels, then the temporal resolve into
-// cloud_a_/cloud_b_[history_] (the frame and temporal uniforms must be bound; u: this
-// frame's uniforms).
+// cloud_a_/cloud_b_[history_] (the frame and temporal uniforms must be bound; meets_a_layer:
+// some ray of the frame meets a layer, classify_frame_rays).
 TemporalUniforms CloudRenderer::march_and_resolve(const ViewRequest& view, const RenderQuality& quality,
-                                                   const FrameUniforms& u) {
+                                                   bool meets_a_layer) {
   const bool history = prev_view_ && history_usable(*prev_view_, prev_quality_, view, quality);
   std::optional<Reprojection> rep;
   if (history) rep = make_reprojection(*prev_view_, view, weather_, *wind_anchor_);
@@ -186,7 +186,7 @@ TemporalUniforms CloudRenderer::march_and_resolve(const ViewRequest& view, const
   prev_view_ = view;
   prev_view_->reset_history = false;
   prev_quality_ = quality;
-  if (weather_.layers.empty() || !frame_meets_a_layer(u)) {
+  if (weather_.layers.empty() || !meets_a_layer) {
     // No cloud layer, or none that any ray of this frame meets (above a deck looking up:
     // renderer/layers_in_view.h): no march and nothing to resolve. Empty cloud buffer: no
     // in-scatter, transmittance 1. The next frame starts a new history (it marches every
@@ -258,11 +258,12 @@ FrameImage CloudRenderer::render(const ViewRequest& view, const RenderQuality& q
   if (view.reset_history) shadow_map_.invalidate();  // a teleport starts from nothing
   // The map serves the ground's pixels (and the light volume built with it, the march's):
   // not updated while no ray sees the ground and none that needs the volume is marched.
-  const bool shadow_needed = frame_sees_ground(u) || (quality.light_volume && frame_meets_a_layer(u));
+  const FrameRays rays = classify_frame_rays(u);
+  const bool shadow_needed = rays.sees_ground || (quality.light_volume && rays.meets_a_layer);
   const bool shadow_rebuilt = shadow_map_.update(view, u, weather_, *wind_anchor_, weather_generation_,
                                                  !quality.ground_shadow_map, quality.light_volume, shadow_needed);
   timer_.end();
-  const TemporalUniforms tu = march_and_resolve(view, quality, u);
+  const TemporalUniforms tu = march_and_resolve(view, quality, rays.meets_a_layer);
 
   scene_prog_.use();
   glBindTextureUnit(12, cloud_a_[history_].id());  // the composite needs the radiance and transmittance only

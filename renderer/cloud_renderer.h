@@ -54,7 +54,7 @@ class CloudRenderer {
  private:
   weather::WeatherTimeline::Blend update_weather_textures(double utc_s);
   void ensure_targets(int w, int h, int divisor);
-  TemporalUniforms march_and_resolve(const ViewRequest& view, const RenderQuality& quality, const FrameUniforms& u);
+  TemporalUniforms march_and_resolve(const ViewRequest& view, const RenderQuality& quality, bool meets_a_layer);
   unsigned cull_layers_without_cloud_in_view(FrameUniforms& u, const ViewRequest& view,
                                              const weather::WeatherTimeline::Blend& blend);
 

@@ -51,47 +51,29 @@ MuRange frustum_mu_range(const glm::dvec3& f, const glm::dvec3& r, const glm::dv
   return range;
 }
 
-namespace {
-
-// float axes: the range is widened by a margin far above their rounding (1e-6), far below a
-// pixel (1e-4 rad)
-constexpr double kMuMargin = 1e-5;
-
-MuRange frame_mu_range(const FrameUniforms& uf) {
+FrameRays classify_frame_rays(const FrameUniforms& uf) {
   const glm::dvec3 f(uf.camera_forward), r(uf.camera_right), u(uf.camera_up);
-  return frustum_mu_range(f, r, u, uf.view.x, uf.view.y);
-}
-
-// Zenith cosine of the rays tangent to the ground sphere from the camera (rays below hit it).
-double ground_tangent_mu(const FrameUniforms& uf) {
+  const MuRange mu = frustum_mu_range(f, r, u, uf.view.x, uf.view.y);
+  // float axes: the range is widened by a margin far above their rounding (1e-6), far below
+  // a pixel (1e-4 rad)
+  const double margin = 1e-5;
   const double R = uf.planet.x, h = uf.planet.y, ground = uf.planet.z;
-  return h > ground ? -std::sqrt(std::max(0.0, one_minus_ratio_sq(R, h, ground))) : 0.0;
-}
-
-}  // namespace
-
-bool frame_sees_ground(const FrameUniforms& uf) { return frame_mu_range(uf).min < ground_tangent_mu(uf) + kMuMargin; }
-
-bool frame_meets_a_layer(const FrameUniforms& uf) {
-  const MuRange mu = frame_mu_range(uf);
-  const double margin = kMuMargin;
-  const double R = uf.planet.x, h = uf.planet.y;
-  for (int i = 0; i < std::min(uf.counts.x, kGpuMaxLayers); ++i) {
+  // zenith cosine of the rays tangent to the ground sphere from the camera (rays below hit it)
+  const double mu_ground = h > ground ? -std::sqrt(std::max(0.0, one_minus_ratio_sq(R, h, ground))) : 0.0;
+  FrameRays out;
+  out.sees_ground = mu.min < mu_ground + margin;
+  for (int i = 0; i < std::min(uf.counts.x, kGpuMaxLayers) && !out.meets_a_layer; ++i) {
     const CloudLayerGpu& L = uf.layers[i];
     if (L.altitude.z <= 0.0f) continue;  // culled or clear: not marched
     const double base = L.altitude.x, top = L.altitude.y;
-    if (h >= top) {
-      // rays below the top sphere's tangent meet it
-      const double mu_top = -std::sqrt(std::max(0.0, one_minus_ratio_sq(R, h, top)));
-      if (mu.min < mu_top + margin) return true;
-    } else if (h >= base) {
-      return true;  // inside the layer
-    } else {
-      // below the base: every ray that does not hit the ground first reaches the base sphere
-      if (mu.max > ground_tangent_mu(uf) - margin) return true;
-    }
+    if (h >= top)  // rays below the top sphere's tangent meet it
+      out.meets_a_layer = mu.min < -std::sqrt(std::max(0.0, one_minus_ratio_sq(R, h, top))) + margin;
+    else if (h >= base)  // inside the layer
+      out.meets_a_layer = true;
+    else  // below the base: every ray that does not hit the ground first reaches the base sphere
+      out.meets_a_layer = mu.max > mu_ground - margin;
   }
-  return false;
+  return out;
 }
 
 }  // namespace cloudsvc

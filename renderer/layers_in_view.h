@@ -26,12 +26,15 @@ struct MuRange {
 // the half fields of view).
 MuRange frustum_mu_range(const glm::dvec3& f, const glm::dvec3& r, const glm::dvec3& u, double tx, double ty);
 
-// True if some ray of the frame described by u meets a layer with coverage > 0 (culled
-// layers, coverage 0, do not count: the march skips them anyway).
-bool frame_meets_a_layer(const FrameUniforms& u);
-
-// True if some ray of the frame hits the ground sphere (whose pixels need the ground shadow
-// map); false, for example, for a camera looking up.
-bool frame_sees_ground(const FrameUniforms& u);
+// What the rays of the frame described by u reach.
+struct FrameRays {
+  // some ray meets a layer with coverage > 0 (culled layers, coverage 0, do not count: the
+  // march skips them anyway)
+  bool meets_a_layer = false;
+  // some ray hits the ground sphere (whose pixels need the ground shadow map); false, for
+  // example, for a camera looking up
+  bool sees_ground = false;
+};
+FrameRays classify_frame_rays(const FrameUniforms& u);
 
 }  // namespace cloudsvc

@@ -151,6 +151,61 @@ vec3 at_elevation(vec3 dir, float e) {
   return vec3(hz * cos(e), sin(e));
 }
 
+// Elevation (rad) of the view ray through ndc above the camera's local horizontal.
+float ray_elevation(vec2 ndc) { return asin(clamp(view_ray(ndc).z, -1.0, 1.0)); }
+
+// A pixel's background split at the horizon: the fraction f_ground of its footprint below it
+// (box filter) and the rays the ground part (hitting the ground at t_g) and the sky part are
+// seen along. Away from the horizon: all ground or all sky along the centre ray dir.
+struct HorizonSplit {
+  float f_ground;
+  vec3 dir_g;
+  float t_g;
+  vec3 dir_s;
+};
+
+// The fraction comes from the ray elevations at the pixel's edges, where the pixel can reach
+// the horizon (its elevation range is at most sqrt(2) times the centre pixel's angle
+// 2 tan(hfov/2) / width). The horizon's elevation seen from altitude h above the ground
+// sphere is -dip, cos(dip) = (R + ground)/(R + h), written as
+// 2 asin(sqrt((h - ground) / (2 (R + h)))) (no cancellation at h of metres). T_own: the
+// pixel's cloud transmittance.
+HorizonSplit split_at_horizon(ivec2 px, ivec2 size, vec2 ndc, vec3 dir, bool hits_ground, float t_ground, float T_own) {
+  HorizonSplit hs = HorizonSplit(hits_ground ? 1.0 : 0.0, dir, t_ground, dir);
+  float R = U.planet.x, h = U.planet.y, ground_alt = U.planet.z;
+  float e_c = asin(clamp(dir.z, -1.0, 1.0));
+  float e_h = -2.0 * asin(sqrt(max(h - ground_alt, 0.0) / (2.0 * (R + h))));
+  if (abs(e_c - e_h) >= 1.5 * U.view.x / U.view.z || abs(dir.z) >= 0.999) return hs;
+  vec2 half_px = vec2(1.0, -1.0) / vec2(size);
+  // elevation change across the pixel, per +1 column and per +1 row
+  float ex = ray_elevation(ndc + vec2(half_px.x, 0.0)) - ray_elevation(ndc - vec2(half_px.x, 0.0));
+  float ey = ray_elevation(ndc + vec2(0.0, half_px.y)) - ray_elevation(ndc - vec2(0.0, half_px.y));
+  float f = below_fraction(e_h - e_c, abs(ex), abs(ey));
+  if (f <= 0.0 || f >= 1.0) return hs;
+  // the ground part seen along a ray at least a quarter of the pixel's elevation range below
+  // the horizon, the sky part at least as far above it: both vary continuously with the pose
+  // and equal the centre ray once the pixel is all ground or all sky
+  float margin = 0.25 * (abs(ex) + abs(ey));
+  vec3 g_dir = at_elevation(dir, min(e_c, e_h - margin));
+  vec2 gg = intersect_shell(R, h, ground_alt, g_dir.z);
+  if (gg.x < 0.0) return hs;
+  // The cloud buffer holds the clouds along one ray per pixel, which sees either the ground
+  // or the sky; clouds along the other part's rays are unknown (under a deck, the sky just
+  // above the horizon may be clear or cloud, measured both ways against the reference). So
+  // the box filter is used where the buffer shows no cloud here or across the horizon (its
+  // four edge neighbours: whatever the roll, two of them lie across it; no switch between
+  // pairs), and fades to the centre's ground-or-sky as their largest opacity reaches 5 %.
+  float T_min = min(min(T_own, cloud_transmittance_nearest(px + ivec2(1, 0), size)),
+                    min(cloud_transmittance_nearest(px - ivec2(1, 0), size),
+                        min(cloud_transmittance_nearest(px + ivec2(0, 1), size), cloud_transmittance_nearest(px - ivec2(0, 1), size))));
+  float w = 1.0 - smoothstep(0.0, 0.05, 1.0 - T_min);
+  hs.f_ground = mix(hs.f_ground, f, w);
+  hs.dir_g = g_dir;
+  hs.t_g = gg.x;
+  hs.dir_s = at_elevation(dir, max(e_c, e_h + margin));
+  return hs;
+}
+
 void main() {
   ivec2 px = ivec2(gl_GlobalInvocationID.xy);
   ivec2 size = imageSize(out_image);
@@ -165,50 +220,8 @@ void main() {
   bool hits_ground = g.x >= 0.0;
   float t_ground = hits_ground ? g.x : 1e30;
 
-  // ---- the horizon, antialiased: the fraction f of the pixel's footprint below it (box
-  // filter), from the ray elevations at the pixel's edges, where the pixel can reach it (its
-  // elevation range is at most sqrt(2) times the centre pixel's angle 2 tan(hfov/2) / width).
-  // The horizon's elevation seen from altitude h above the ground sphere is -dip,
-  // cos(dip) = (R + ground)/(R + h), written as 2 asin(sqrt((h - ground) / (2 (R + h))))
-  // (no cancellation at h of metres).
-  float e_c = asin(clamp(mu, -1.0, 1.0));
-  float e_h = -2.0 * asin(sqrt(max(h - ground_alt, 0.0) / (2.0 * (R + h))));
   vec4 cloud = cloud_at(px, t_ground);  // rgb: radiance from the clouds through the air in front; a: their transmittance
-  float f_ground = hits_ground ? 1.0 : 0.0;
-  vec3 dir_g = dir, dir_s = dir;  // the rays the ground and the sky parts are seen along
-  float t_g = t_ground;
-  if (abs(e_c - e_h) < 1.5 * U.view.x / U.view.z && abs(mu) < 0.999) {
-    vec2 half_px = vec2(1.0, -1.0) / vec2(size);
-    // elevation change across the pixel, per +1 column and per +1 row
-    float ex = asin(clamp(view_ray(ndc + vec2(half_px.x, 0.0)).z, -1.0, 1.0)) - asin(clamp(view_ray(ndc - vec2(half_px.x, 0.0)).z, -1.0, 1.0));
-    float ey = asin(clamp(view_ray(ndc + vec2(0.0, half_px.y)).z, -1.0, 1.0)) - asin(clamp(view_ray(ndc - vec2(0.0, half_px.y)).z, -1.0, 1.0));
-    float f = below_fraction(e_h - e_c, abs(ex), abs(ey));
-    if (f > 0.0 && f < 1.0) {
-      // the ground part seen along a ray at least a quarter of the pixel's elevation range
-      // below the horizon, the sky part at least as far above it: both vary continuously
-      // with the pose and equal the centre ray once the pixel is all ground or all sky
-      float margin = 0.25 * (abs(ex) + abs(ey));
-      vec3 g_dir = at_elevation(dir, min(e_c, e_h - margin));
-      vec2 gg = intersect_shell(R, h, ground_alt, g_dir.z);
-      if (gg.x >= 0.0) {
-        // The cloud buffer holds the clouds along one ray per pixel, which sees either the
-        // ground or the sky; clouds along the other part's rays are unknown (under a deck,
-        // the sky just above the horizon may be clear or cloud, measured both ways against
-        // the reference). So the box filter is used where the buffer shows no cloud here
-        // or across the horizon (its four edge neighbours: whatever the roll, two of them lie
-        // across it; no switch between pairs), and fades to the centre's ground-or-sky as
-        // their largest opacity reaches 5 %.
-        float T_min = min(min(cloud.a, cloud_transmittance_nearest(px + ivec2(1, 0), size)),
-                          min(cloud_transmittance_nearest(px - ivec2(1, 0), size),
-                              min(cloud_transmittance_nearest(px + ivec2(0, 1), size), cloud_transmittance_nearest(px - ivec2(0, 1), size))));
-        float w = 1.0 - smoothstep(0.0, 0.05, 1.0 - T_min);
-        f_ground = mix(f_ground, f, w);
-        dir_g = g_dir;
-        t_g = gg.x;
-        dir_s = at_elevation(dir, max(e_c, e_h + margin));
-      }
-    }
-  }
+  HorizonSplit hs = split_at_horizon(px, size, ndc, dir, hits_ground, t_ground, cloud.a);
 
   // ---- background: ground and/or sky, faded out behind clouds as their transmittance
   // falls from twice to once the march's early-exit threshold (the march drops the clouds
@@ -219,10 +232,10 @@ void main() {
   float background_weight = saturate(T / BACKGROUND_T_EPS - 1.0);
   vec3 background = vec3(0.0);
   if (background_weight > 0.0) {
-    if (f_ground > 0.0) background += f_ground * ground_radiance(dir_g, t_g, ndc);
-    if (f_ground < 1.0) background += (1.0 - f_ground) * sky_radiance(dir_s);
+    if (hs.f_ground > 0.0) background += hs.f_ground * ground_radiance(hs.dir_g, hs.t_g, ndc);
+    if (hs.f_ground < 1.0) background += (1.0 - hs.f_ground) * sky_radiance(hs.dir_s);
   }
-  vec3 sun_seen = f_ground < 1.0 ? (1.0 - f_ground) * sun_disk(dir, h) : vec3(0.0);
+  vec3 sun_seen = hs.f_ground < 1.0 ? (1.0 - hs.f_ground) * sun_disk(dir, h) : vec3(0.0);
   float opacity = 1.0 - T;
   vec3 radiance = cloud.rgb + T * (background_weight * background + sun_seen);
 

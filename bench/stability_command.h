@@ -6,6 +6,7 @@
 // (with the commit, `git describe --dirty`); exit status 1 if any check failed.
 //
 //   build/bin/cloudbench --stability [--poses 10000] [--smooth 200] [--size 32x18] [--seed 1]
+//                        [--quality default] [--frames-per-image 8] [--centre | --footprint-jitter] [--long-step N]
 #pragma once
 
 #include <CLI/CLI.hpp>

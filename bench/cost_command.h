@@ -4,7 +4,9 @@
 // (temporal reuse amortised, as in cloudbench's cost column); median render_ms and the
 // median GPU time of each pass. Prints a Markdown table and the sum-of-medians ratio of
 // each preset to the first one; the same for the fastest frame of each (sums of minima:
-// the least disturbed by other load). Also the process CPU time per frame (all llvmpipe threads;
+// the least disturbed by other load). Also the density evaluations per pixel per frame (the
+// march's work, independent of the machine: primary, light-march and shadow-map samples)
+// and their ratio. Also the process CPU time per frame (all llvmpipe threads;
 // CLOCK_PROCESS_CPUTIME_ID), which other load on the machine inflates far less than the
 // wall clock: the column to compare while anything else runs. For iterating on speed;
 // accuracy is cloudbench's.
@@ -64,9 +66,10 @@ inline int run(int argc, char** argv) {
 
   gl::EglContext context;
   CloudRenderer renderer;
-  std::vector<double> sums(presets.size(), 0.0), cpu_sums(presets.size(), 0.0), min_sums(presets.size(), 0.0);
-  std::printf("| scene | preset | median ms | CPU ms/frame | march | resolve | composite | LUTs | shadow map | read-back |\n"
-              "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  std::vector<double> sums(presets.size(), 0.0), cpu_sums(presets.size(), 0.0), min_sums(presets.size(), 0.0),
+      eval_sums(presets.size(), 0.0);
+  std::printf("| scene | preset | median ms | CPU ms/frame | march | resolve | composite | LUTs | shadow map | read-back | density evals/px |\n"
+              "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   for (const accuracy::AccuracyScene& s : accuracy::accuracy_scenes()) {
     if (!s.core) continue;
     renderer.set_weather(*weather::preset(s.preset));
@@ -78,6 +81,7 @@ inline int run(int argc, char** argv) {
       renderer.render(v, presets[p].second);
       v.reset_history = false;
       std::vector<double> ms, march, resolve, composite, luts, shadow, readback;
+      double evals = 0.0;  // density evaluations per pixel, summed over the timed frames
       const double cpu0 = process_cpu_ms();
       for (int f = 1; f <= frames; ++f) {
         v.frame_index = static_cast<std::uint32_t>(f);
@@ -89,22 +93,27 @@ inline int run(int argc, char** argv) {
         luts.push_back(st.luts_ms);
         shadow.push_back(st.shadow_map_ms);
         readback.push_back(st.readback_ms);
+        evals += st.density_evals_per_pixel;
       }
       const double cpu_ms = (process_cpu_ms() - cpu0) / frames;
       sums[p] += bench::median(ms);
       min_sums[p] += *std::min_element(ms.begin(), ms.end());
       cpu_sums[p] += cpu_ms;
-      std::printf("| %s | %s | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f |\n", s.name, presets[p].first.c_str(),
+      eval_sums[p] += evals / frames;
+      std::printf("| %s | %s | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f |\n", s.name, presets[p].first.c_str(),
                   bench::median(ms), cpu_ms, bench::median(march), bench::median(resolve), bench::median(composite), bench::median(luts),
-                  bench::median(shadow), bench::median(readback));
+                  bench::median(shadow), bench::median(readback), evals / frames);
       std::fflush(stdout);
     }
   }
-  std::printf("\n| preset | sum of medians ms | %s / preset | sum of minima ms | %s / preset | sum CPU ms/frame | %s / preset |\n"
-              "|---|---:|---:|---:|---:|---:|---:|\n", presets[0].first.c_str(), presets[0].first.c_str(), presets[0].first.c_str());
+  const char* first = presets[0].first.c_str();
+  std::printf("\n| preset | sum of medians ms | %s / preset | sum of minima ms | %s / preset | sum CPU ms/frame | %s / preset "
+              "| density evals/px (sum) | %s / preset |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|\n",
+              first, first, first, first);
   for (size_t p = 0; p < presets.size(); ++p)
-    std::printf("| %s | %.1f | %.2f | %.1f | %.2f | %.1f | %.2f |\n", presets[p].first.c_str(), sums[p], sums[0] / sums[p],
-                min_sums[p], min_sums[0] / min_sums[p], cpu_sums[p], cpu_sums[0] / cpu_sums[p]);
+    std::printf("| %s | %.1f | %.2f | %.1f | %.2f | %.1f | %.2f | %.1f | %.1f |\n", presets[p].first.c_str(), sums[p],
+                sums[0] / sums[p], min_sums[p], min_sums[0] / min_sums[p], cpu_sums[p], cpu_sums[0] / cpu_sums[p],
+                eval_sums[p], eval_sums[0] / std::max(eval_sums[p], 1e-9));
   return 0;
 }
 

@@ -8,6 +8,7 @@
 
 #include "geodesy/solar_position.h"
 #include "renderer/coverage_cull.h"
+#include "renderer/coverage_pyramid.h"
 #include "renderer/layers_in_view.h"
 #include "renderer/frame_uniforms.h"
 #include "renderer/scene_setup.h"
@@ -61,6 +62,7 @@ CloudRenderer::CloudRenderer(const RendererConfig& config)
 weather::WeatherTimeline::Blend CloudRenderer::update_weather_textures(double utc_s) {
   const weather::WeatherTimeline::Blend b = timeline_.at(utc_s);
   const weather::WeatherMap* maps[2] = {b.from, b.to};
+  bool pyramid_stale = !coverage_pyramid_;
   const std::uint64_t versions[2] = {b.from_version, b.to_version};
   for (int k = 0; k < 2; ++k) {
     if (uploaded_version_[k] == versions[k] && weather_maps_[k]) continue;
@@ -69,7 +71,9 @@ weather::WeatherTimeline::Blend CloudRenderer::update_weather_textures(double ut
     glTextureSubImage2D(weather_maps_[k].id(), 0, 0, 0, m.width, m.height, GL_RGBA, GL_FLOAT, m.rgba.data());
     uploaded_version_[k] = versions[k];
     ++weather_generation_;
+    pyramid_stale = true;
   }
+  if (pyramid_stale) upload_coverage_pyramid(*b.from, b.to != b.from ? b.to : nullptr);
   // a fading keyframe changes the clouds slowly: count steps of 2 % of the blend
   if (std::abs(b.weight - uploaded_blend_) > 0.02f) {
     uploaded_blend_ = static_cast<float>(b.weight);
@@ -87,6 +91,36 @@ weather::WeatherTimeline::Blend CloudRenderer::update_weather_textures(double ut
   facts_.weather_map_height = b.from->height;
   facts_.weather_blend = b.weight;
   return b;
+}
+
+// The coverage max-pyramid of the keyframes (renderer/coverage_pyramid.h) into the storage
+// buffer shaders/coverage_pyramid.glsl reads: 16 ivec4 level records (width, height,
+// offset; the first one's w: the level count), then the cells. A map too large for 16
+// levels (over 32768 texels a side) leaves the pyramid off (pyramid_levels_ = 0).
+void CloudRenderer::upload_coverage_pyramid(const weather::WeatherMap& from, const weather::WeatherMap* to) {
+  constexpr int kMaxLevels = 16;
+  const CoveragePyramid p = build_coverage_pyramid(from, to);
+  pyramid_levels_ = p.levels.size() <= kMaxLevels ? static_cast<int>(p.levels.size()) : 0;
+  std::vector<std::int32_t> header(4 * kMaxLevels, 0);
+  for (int k = 0; k < pyramid_levels_; ++k) {
+    const CoveragePyramid::Level& l = p.levels[static_cast<size_t>(k)];
+    header[static_cast<size_t>(4 * k)] = l.width;
+    header[static_cast<size_t>(4 * k + 1)] = l.height;
+    header[static_cast<size_t>(4 * k + 2)] = l.offset;
+  }
+  header[3] = pyramid_levels_;
+  facts_.coverage_pyramid = pyramid_levels_ > 0;
+  const std::size_t cells = pyramid_levels_ > 0 ? p.cells.size() : 1;
+  const std::size_t bytes = header.size() * sizeof(std::int32_t) + cells * sizeof(float);
+  if (!coverage_pyramid_ || bytes != coverage_pyramid_bytes_) {
+    coverage_pyramid_ = gl::make_buffer(static_cast<GLsizeiptr>(bytes), nullptr, GL_STATIC_DRAW);
+    coverage_pyramid_bytes_ = bytes;
+  }
+  glNamedBufferSubData(coverage_pyramid_.id(), 0, static_cast<GLsizeiptr>(header.size() * sizeof(std::int32_t)),
+                       header.data());
+  if (pyramid_levels_ > 0)
+    glNamedBufferSubData(coverage_pyramid_.id(), static_cast<GLintptr>(header.size() * sizeof(std::int32_t)),
+                         static_cast<GLsizeiptr>(p.cells.size() * sizeof(float)), p.cells.data());
 }
 
 void CloudRenderer::apply_tile(const weather::MapTile& tile, double now_utc_s) {
@@ -202,6 +236,7 @@ TemporalUniforms CloudRenderer::march_and_resolve(const ViewRequest& view, const
 
   const int stride = tu.grid.x;
   march_prog_.use();
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, coverage_pyramid_.id());
   glBindImageTexture(0, fresh_a_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   glBindImageTexture(1, fresh_b_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   timer_.begin(1);

@@ -53,6 +53,7 @@ class CloudRenderer {
 
  private:
   weather::WeatherTimeline::Blend update_weather_textures(double utc_s);
+  void upload_coverage_pyramid(const weather::WeatherMap& from, const weather::WeatherMap* to);
   void ensure_targets(int w, int h, int divisor);
   TemporalUniforms march_and_resolve(const ViewRequest& view, const RenderQuality& quality, bool meets_a_layer);
   unsigned cull_layers_without_cloud_in_view(FrameUniforms& u, const ViewRequest& view,
@@ -81,6 +82,9 @@ class CloudRenderer {
   RenderQuality prev_quality_;
   FastMotionHold fast_motion_;  // 1/4 px instead of 1/16 while the clouds move fast
   gl::Buffer uniforms_, temporal_uniforms_, counters_;
+  gl::Buffer coverage_pyramid_;  // renderer/coverage_pyramid.h of the keyframes in weather_maps_
+  std::size_t coverage_pyramid_bytes_ = 0;
+  int pyramid_levels_ = 0;  // 0: no pyramid (the march does not query it)
   int target_w_ = 0, target_h_ = 0, cloud_w_ = 0, cloud_h_ = 0;
   gl::PassTimer timer_;  // passes: 0 LUTs, 1 march, 2 resolve, 3 composite, 4 shadow map
   std::size_t static_gpu_bytes_ = 0;  // noise volumes, weather maps, atmosphere LUTs

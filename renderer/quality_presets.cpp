@@ -47,6 +47,7 @@ RenderQuality naive() {
   RenderQuality q = march(64, 6, 1, 0.0);
   q.long_step_factor = 1;
   q.ground_shadow_map = false;
+  q.coverage_pyramid = false;
   return q;
 }
 

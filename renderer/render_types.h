@@ -49,6 +49,9 @@ struct RenderQuality {
   // In empty air, probe with steps this many times longer (base shape only) and step back
   // on finding cloud; 1 = every step evaluated in full.
   int long_step_factor = 2;
+  // Coverage max-pyramid (renderer/coverage_pyramid.h): runs of primary steps whose map
+  // footprint the pyramid clears for their layer are skipped without a density evaluation.
+  bool coverage_pyramid = true;
   // Level of detail by the pixel footprint: detail noise replaced by its mean, and fewer
   // light steps, once a pixel spans several noise texels.
   bool level_of_detail = false;

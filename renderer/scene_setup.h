@@ -36,6 +36,7 @@ struct ResourceFacts {
   std::array<float, 4> weather_pole_north{0.5f, 0.5f, 0.5f, 0.0f};
   int weather_map_height = 1;
   float weather_blend = 0.0f;  // weight of the second weather keyframe (weather_timeline.h)
+  bool coverage_pyramid = false;  // the coverage max-pyramid is bound (renderer/coverage_pyramid.h)
 };
 
 // wind_anchor: where/when the cloud field is undisplaced; nullptr anchors it at this view.

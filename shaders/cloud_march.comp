@@ -14,6 +14,7 @@
 #include "phase_function.glsl"
 #include "cloud_density.glsl"
 #include "cloud_intervals.glsl"
+#include "coverage_pyramid.glsl"
 #include "cloud_lighting.glsl"
 #include "ground_shadow_map.glsl"
 #include "light_volume.glsl"
@@ -29,6 +30,9 @@ layout(std430, binding = 0) buffer FrameCounters {
 } counters;
 
 const float CLOUD_T_EPS = 1e-3;  // early exit below this cloud transmittance
+// Primary steps per coverage-pyramid query (coverage_pyramid.glsl): a run this long whose
+// map footprint the pyramid clears is skipped without a density evaluation.
+const int PYRAMID_RUN = 8;
 // Distance (m) over which the ground irradiance under a cloud sample is held: the sun's
 // zenith angle at the ground below moves by 1.6e-3 rad over it (10 km / 6371 km).
 const float GROUND_IRRADIANCE_SPACING = 10000.0;
@@ -111,7 +115,26 @@ void main() {
       // st: step index; in probing mode the probe at st covers (st - long_step, st]
       int st = 0, last_fine = -1, empty_run = 0;
       bool probing = long_step > 1;
+      // coverage pyramid (U.ap_params.w): only for a layer the map can clear at all (a layer
+      // above 6/11 coverage never clears: no queries); next_query: the first step not yet
+      // covered by a query
+      bool pyramid = U.ap_params.w != 0.0 && local_coverage(L, vec4(0.0)) <= 0.0;
+      int next_query = 0;
       for (int guard = 0; st < steps && T > CLOUD_T_EPS && guard < 3 * steps + 4; ++guard) {
+        if (pyramid && st >= next_query) {
+          // the samples of steps st .. st + PYRAMID_RUN - 1 lie between these distances
+          next_query = min(st + PYRAMID_RUN, steps);
+          float ta = march_distance(u0 + float(st) * du, t_ref), tb = march_distance(u0 + float(next_query) * du, t_ref);
+          if (!segment_may_have_cloud(li, dir, ta, tb)) {
+            // no cloud there: skip the run; the span before it is known empty, so a probe
+            // that finds cloud after it steps back no further than its end
+            st = next_query;
+            last_fine = st - 1;
+            empty_run = 0;
+            probing = long_step > 1;
+            continue;
+          }
+        }
         float t = march_distance(u0 + (float(st) + jitter) * du, t_ref);
         vec3 p = t * dir;
         float alt = altitude_of(p, R, h);

@@ -99,12 +99,22 @@ TEST(CoverageCull, AFrameWhoseLayerHasNoCloudInReachMarchesNothing) {
               first.stats.layers_without_cloud_in_view);
   EXPECT_LT(worst, 1e-5);
 
+  // The patch is inside the cap, so the layer is kept; it is behind the camera, so no ray
+  // of the view passes through it: the march finds cloud nowhere. Without the coverage
+  // pyramid it evaluates the layer's density along every ray; with it (the default) the
+  // pyramid clears every run of steps (renderer/coverage_pyramid.h).
+  RenderQuality no_pyramid;
+  no_pyramid.coverage_pyramid = false;
   r.set_weather(*weather::preset("scattered-cumulus"));
   r.apply_tile(tile_around(1.0f), v.unix_time_s - 3600.0);
-  r.render(v);
-  const FrameImage kept = r.render(v);
+  r.render(v, no_pyramid);
+  const FrameImage kept = r.render(v, no_pyramid);
   EXPECT_EQ(kept.stats.layers_without_cloud_in_view, 0);
   EXPECT_GT(kept.stats.density_evals_per_pixel, 0.0);
+  const FrameImage skipped = r.render(v);
+  EXPECT_EQ(skipped.stats.layers_without_cloud_in_view, 0);
+  EXPECT_EQ(skipped.stats.density_evals_per_pixel, 0.0);
+  EXPECT_EQ(skipped.stats.cloud_pixels, 0);
 }
 
 }  // namespace

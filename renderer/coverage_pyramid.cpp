@@ -1,0 +1,113 @@
+#include "renderer/coverage_pyramid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace cloudsvc {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+
+// Conservative value of one texel: non-finite counts as full cloud.
+float texel_bound(float v) { return std::isfinite(v) ? v : 1.0f; }
+
+// Largest cell of level k over cells [i0, i1] x [r0, r1] (no wrap; all in range).
+float max_over(const CoveragePyramid& p, int k, int i0, int i1, int r0, int r1) {
+  float m = 0.0f;
+  for (int r = r0; r <= r1; ++r)
+    for (int i = i0; i <= i1; ++i) m = std::max(m, p.cell(k, i, r));
+  return m;
+}
+
+// Level-0 cell ranges [i0, i1] x [r0, r1] (i0 <= i1 < width) read at the finest level at
+// which they span at most three cells per axis.
+float max_in_range(const CoveragePyramid& p, int i0, int i1, int r0, int r1) {
+  const int top = static_cast<int>(p.levels.size()) - 1;
+  int k = 0;
+  while (k < top && ((i1 >> k) - (i0 >> k) > 2 || (r1 >> k) - (r0 >> k) > 2)) ++k;
+  return max_over(p, k, i0 >> k, i1 >> k, r0 >> k, r1 >> k);
+}
+}  // namespace
+
+CoveragePyramid build_coverage_pyramid(const weather::WeatherMap& map, const weather::WeatherMap* next) {
+  CoveragePyramid p;
+  const int W = map.width, H = map.height;
+  if (W <= 0 || H <= 0 || map.rgba.size() < static_cast<size_t>(W) * H * 4) return p;
+  if (next && (next->width != W || next->height != H || next->rgba.size() < map.rgba.size()))
+    throw std::invalid_argument("build_coverage_pyramid: keyframes of different sizes");
+  // texel maximum over the keyframes, and the pole values (row means) of each
+  std::vector<float> texel(static_cast<size_t>(W) * H);
+  for (size_t n = 0; n < texel.size(); ++n) {
+    float v = texel_bound(map.rgba[4 * n]);
+    if (next) v = std::max(v, texel_bound(next->rgba[4 * n]));
+    texel[n] = v;
+  }
+  float pole[2] = {0.0f, 0.0f};  // south, north
+  for (int north = 0; north < 2; ++north) {
+    float v[4];
+    map.pole_value(north != 0, v);
+    pole[north] = texel_bound(v[0]);
+    if (next) {
+      next->pole_value(north != 0, v);
+      pole[north] = std::max(pole[north], texel_bound(v[0]));
+    }
+  }
+  // level 0: cell (i, r) = texel columns i, i + 1 (mod W) x texel rows r - 1, r (clamped)
+  CoveragePyramid::Level l0{W, H + 1, 0};
+  p.levels.push_back(l0);
+  p.cells.assign(static_cast<size_t>(W) * (H + 1), 0.0f);
+  for (int r = 0; r <= H; ++r)
+    for (int i = 0; i < W; ++i) {
+      const int i1 = (i + 1) % W;
+      float m = 0.0f;
+      for (int j : {r - 1, r}) {
+        if (j < 0 || j >= H) continue;
+        m = std::max({m, texel[static_cast<size_t>(j) * W + i], texel[static_cast<size_t>(j) * W + i1]});
+      }
+      if (r == 0) m = std::max(m, pole[0]);
+      if (r == H) m = std::max(m, pole[1]);
+      p.cells[static_cast<size_t>(r) * W + i] = m;
+    }
+  // coarser levels: 2 x 2 maxima up to a single cell
+  while (p.levels.back().width > 1 || p.levels.back().height > 1) {
+    const CoveragePyramid::Level prev = p.levels.back();
+    CoveragePyramid::Level l{(prev.width + 1) / 2, (prev.height + 1) / 2, static_cast<int>(p.cells.size())};
+    const int k = static_cast<int>(p.levels.size()) - 1;
+    p.levels.push_back(l);
+    p.cells.resize(p.cells.size() + static_cast<size_t>(l.width) * l.height, 0.0f);
+    for (int r = 0; r < l.height; ++r)
+      for (int i = 0; i < l.width; ++i)
+        p.cells[static_cast<size_t>(l.offset + r * l.width + i)] =
+            max_over(p, k, 2 * i, std::min(2 * i + 1, prev.width - 1), 2 * r, std::min(2 * r + 1, prev.height - 1));
+  }
+  return p;
+}
+
+float pyramid_max_in_cap(const CoveragePyramid& p, double lat_rad, double lon_rad, double cap_rad) {
+  if (p.empty()) return 1.0f;  // no map: nothing is known to be clear
+  const int W = p.levels[0].width, H = p.levels[0].height - 1;
+  // A sampler's texel weights carry a few bits of sub-texel precision: the ranges are
+  // widened by 1/16 texel so that a point on a cell edge counts both cells.
+  constexpr double kEdge = 1.0 / 16.0;
+  const double y_lo = ((lat_rad - cap_rad) / kPi + 0.5) * H - kEdge;
+  const double y_hi = ((lat_rad + cap_rad) / kPi + 0.5) * H + kEdge;
+  const int r0 = std::clamp(static_cast<int>(std::floor(y_lo + 0.5)), 0, H);
+  const int r1 = std::clamp(static_cast<int>(std::floor(y_hi + 0.5)), 0, H);
+  // longitude extent of the cap: asin(sin a / cos lat); all longitudes over a pole
+  const double s = std::sin(cap_rad) / std::cos(lat_rad);
+  if (lat_rad - cap_rad <= -0.5 * kPi || lat_rad + cap_rad >= 0.5 * kPi || !(s < 1.0))
+    return max_in_range(p, 0, W - 1, r0, r1);
+  const double dl = std::asin(s);
+  const double x_lo = ((lon_rad - dl) / (2.0 * kPi) + 0.5) * W - kEdge;
+  const double x_hi = ((lon_rad + dl) / (2.0 * kPi) + 0.5) * W + kEdge;
+  int i0 = static_cast<int>(std::floor(x_lo - 0.5)), i1 = static_cast<int>(std::floor(x_hi - 0.5));
+  if (i1 - i0 + 1 >= W) return max_in_range(p, 0, W - 1, r0, r1);
+  // i0 into [0, W): lon in [-pi, pi] and dl <= pi / 2 put i0 in [-W / 4 - 1, W)
+  if (i0 < 0) { i0 += W; i1 += W; }
+  if (i0 >= W) { i0 -= W; i1 -= W; }
+  if (i1 < W) return max_in_range(p, i0, i1, r0, r1);
+  return std::max(max_in_range(p, i0, W - 1, r0, r1), max_in_range(p, 0, i1 - W, r0, r1));
+}
+
+}  // namespace cloudsvc

@@ -96,6 +96,7 @@ std::string knob_label(const RenderQuality& q) {
   if (!q.ground_shadow_map) l += " shadows/px";
   if (q.ground_shadow_map && q.light_volume) l += " lightvol";
   if (q.coverage_pyramid) l += " pyramid";
+  if (q.light_march_cutoff > 0.0) l += " lightcut" + std::to_string(static_cast<int>(q.light_march_cutoff));
   if (q.long_step_factor > 1) l += " long" + std::to_string(q.long_step_factor);
   if (q.level_of_detail) l += " LOD";
   if (q.cloud_resolution_divisor > 1) l += " res1/" + std::to_string(q.cloud_resolution_divisor);
@@ -120,11 +121,13 @@ std::vector<std::pair<std::string, RenderQuality>> skip_configs() {
   c.long_step_factor = 1;
   c.ground_shadow_map = false;
   c.coverage_pyramid = false;
+  c.light_march_cutoff = 0.0;
   auto with = [&](auto f) { RenderQuality q = c; f(q); return q; };
   v.push_back({"none", c});
   v.push_back({"ground shadow map", with([](RenderQuality& q) { q.ground_shadow_map = true; })});
   v.push_back({"light volume (with the shadow map)", with([](RenderQuality& q) { q.ground_shadow_map = true; q.light_volume = true; })});
   v.push_back({"coverage pyramid", with([](RenderQuality& q) { q.coverage_pyramid = true; })});
+  v.push_back({"light-march cut-off at tau 12", with([](RenderQuality& q) { q.light_march_cutoff = 12.0; })});
   v.push_back({"long steps x2", with([](RenderQuality& q) { q.long_step_factor = 2; })});
   v.push_back({"long steps x4", with([](RenderQuality& q) { q.long_step_factor = 4; })});
   v.push_back({"LOD", with([](RenderQuality& q) { q.level_of_detail = true; })});

@@ -48,6 +48,7 @@ RenderQuality naive() {
   q.long_step_factor = 1;
   q.ground_shadow_map = false;
   q.coverage_pyramid = false;
+  q.light_march_cutoff = 0.0;
   return q;
 }
 

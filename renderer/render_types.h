@@ -52,6 +52,10 @@ struct RenderQuality {
   // Coverage max-pyramid (renderer/coverage_pyramid.h): runs of primary steps whose map
   // footprint the pyramid clears for their layer are skipped without a density evaluation.
   bool coverage_pyramid = true;
+  // Light marches stop once the optical depth towards the sun exceeds this (the sun term
+  // e^-tau is then below e^-12 = 6e-6 of its unshadowed value, whatever lies beyond; with
+  // several octaves for the one that decays slowest). 0 = march every light step.
+  double light_march_cutoff = 12.0;
   // Level of detail by the pixel footprint: detail noise replaced by its mean, and fewer
   // light steps, once a pixel spans several noise texels.
   bool level_of_detail = false;

@@ -89,11 +89,17 @@ FrameUniforms make_frame_uniforms(const ViewRequest& view, const weather::Weathe
                           static_cast<float>(quality.ms_c), static_cast<float>(quality.step_growth_ref_m));
   // Aerial perspective reaches the farthest visible ground or cloud (hundreds of km).
   u.ap_params = glm::vec4(static_cast<float>(std::max(reach, 1000.0)), static_cast<float>(resources.weather_map_height),
-                          resources.weather_blend, quality.coverage_pyramid && resources.coverage_pyramid ? 1.0f : 0.0f);
+                          resources.weather_blend, 0.0f);
   // Skips: long steps in empty air, and LOD against the angle one pixel subtends (rad).
   u.march = glm::vec4(static_cast<float>(std::max(1, quality.long_step_factor)), quality.level_of_detail ? 1.0f : 0.0f,
                       static_cast<float>(2.0 * tan_h / view.width * std::max(1, quality.cloud_resolution_divisor)),
                       resources.detail_mean);
+  // Light marches stop once the sun's beam is spent: optical depth past the cut-off for the
+  // octave that decays slowest (a^(octaves - 1) tau, cloud_march.comp).
+  const double slowest = std::pow(quality.ms_a, std::max(0, quality.ms_octaves - 1));
+  const double light_cut = quality.light_march_cutoff > 0.0 ? quality.light_march_cutoff / slowest : 1e30;
+  u.skips = glm::vec4(quality.coverage_pyramid && resources.coverage_pyramid ? 1.0f : 0.0f,
+                      static_cast<float>(std::min(light_cut, 1e30)), 0.0f, 0.0f);
   const auto& ps = resources.weather_pole_south;
   const auto& pn = resources.weather_pole_north;
   u.weather_pole_south = glm::vec4(ps[0], ps[1], ps[2], ps[3]);

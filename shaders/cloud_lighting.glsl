@@ -27,8 +27,9 @@ float slab_beam_transmittance(float tau, float mu0) {
 // Optical depth from point p (altitude alt) towards the sun inside layer li, in n steps
 // spaced quadratically (fine near the sample, coarse far away), with the weather map
 // value w of the sample (cloud_extinction_in: the map varies over ~40 km, the march
-// spans at most 4 km; one map read instead of n).
-float light_optical_depth(int li, vec3 p, float alt, vec3 sun, float mu_s, int n, vec4 w) {
+// spans at most 4 km; one map read instead of n). Stops once tau exceeds tau_cut (the
+// sun's beam is spent there; 1e30: never).
+float light_optical_depth(int li, vec3 p, float alt, vec3 sun, float mu_s, int n, vec4 w, float tau_cut) {
   if (U.layers[li].altitude.z <= 0.0) return 0.0;  // coverage 0 (renderer/coverage_cull.h): no cloud
   float R = U.planet.x;
   vec2 exit_top = intersect_shell(R, alt, U.layers[li].altitude.y, mu_s);
@@ -45,6 +46,7 @@ float light_optical_depth(int li, vec3 p, float alt, vec3 sun, float mu_s, int n
     float coverage;
     tau += cloud_extinction_in(li, x, ax, DETAIL_NONE, w, coverage) * (s - s_prev);
     s_prev = s;
+    if (tau > tau_cut) break;  // the beam is spent: e^-tau < e^-tau_cut whatever lies beyond
   }
   return tau;
 }

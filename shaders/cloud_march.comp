@@ -115,10 +115,10 @@ void main() {
       // st: step index; in probing mode the probe at st covers (st - long_step, st]
       int st = 0, last_fine = -1, empty_run = 0;
       bool probing = long_step > 1;
-      // coverage pyramid (U.ap_params.w): only for a layer the map can clear at all (a layer
+      // coverage pyramid (U.skips.x): only for a layer the map can clear at all (a layer
       // above 6/11 coverage never clears: no queries); next_query: the first step not yet
       // covered by a query
-      bool pyramid = U.ap_params.w != 0.0 && local_coverage(L, vec4(0.0)) <= 0.0;
+      bool pyramid = U.skips.x != 0.0 && local_coverage(L, vec4(0.0)) <= 0.0;
       int next_query = 0;
       for (int guard = 0; st < steps && T > CLOUD_T_EPS && guard < 3 * steps + 4; ++guard) {
         if (pyramid && st >= next_query) {
@@ -175,7 +175,7 @@ void main() {
         vec3 L_sun = vec3(0.0);
         if (max(T_atm.r, max(T_atm.g, T_atm.b)) > 0.0) {
           float tau = SM.volume.z != 0.0 ? light_volume_optical_depth(li, p, alt)
-                                         : light_optical_depth(li, p, alt, sun, mu_s, light_steps_at(t, L), w);
+                                         : light_optical_depth(li, p, alt, sun, mu_s, light_steps_at(t, L), w, U.skips.y);
           float s_sum = 0.0, a = 1.0, b = 1.0, c = 1.0;
           for (int o = 0; o < int(U.quality.z); ++o) {
             s_sum += b * cloud_phase(cos_view_sun, L.optics.y, L.optics.z, L.optics.w, L.optics2.x, c) * exp(-a * tau);

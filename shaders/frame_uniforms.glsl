@@ -25,8 +25,9 @@ layout(std140, binding = 0) uniform FrameUniforms {
   vec4 ground_albedo;      // rgb diffuse albedo of the ground; w night-sky radiance (W m^-2 sr^-1 nm^-1)
   vec4 quality;            // x primary steps, y light steps, z multiple-scattering octaves, w ground-shadow steps per layer
   vec4 ms_params;          // x a (extinction scale per octave), y b (energy per octave), z c (eccentricity per octave), w t_ref of the step distribution (m; 0 = uniform)
-  vec4 ap_params;          // x aerial-perspective max distance (m), y weather map height (texels), z weight of the next weather keyframe, w coverage pyramid on (1/0)
+  vec4 ap_params;          // x aerial-perspective max distance (m), y weather map height (texels), z weight of the next weather keyframe, w unused
   vec4 march;              // x long-step factor in empty air (1 = off), y LOD on (0/1), z pixel angle (rad), w mean detail-noise value
+  vec4 skips;              // x coverage pyramid on (1/0), y light-march optical-depth cut-off (1e30 = none), zw unused
   ivec4 counts;            // x layer count, y frame index, z count density evaluations (0/1), w footprint jitter (0/1)
   vec4 noise_quantiles[4]; // base shape noise value below which a fraction i/15 of texels lie, i = 0..15
   vec4 weather_pole_south; // weather map value at the south pole (mean of the southernmost row)

@@ -37,7 +37,7 @@ void main() {
     float z = ((alt - h) * (2.0 * R + alt + h) - d2) / (sqrt((R + alt) * (R + alt) - d2) + R + h);
     vec3 p = vec3(d, z);
     float mu_s = dot(up_at(p, R, h), U.sun_dir.xyz);
-    tau = light_optical_depth(li, p, alt, U.sun_dir.xyz, mu_s, int(U.quality.y), weather_at(p));
+    tau = light_optical_depth(li, p, alt, U.sun_dir.xyz, mu_s, int(U.quality.y), weather_at(p), 1e30);  // no cut-off: the volume is interpolated
   }
   if (U.counts.z != 0) atomicAdd(counters.density_evals, g_density_evals);
   imageStore(volume_out, id, vec4(tau));

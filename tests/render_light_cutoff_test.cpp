@@ -1,0 +1,57 @@
+// Light marches stop once the sun's beam is spent (RenderQuality::light_march_cutoff,
+// shaders/cloud_lighting.glsl): past an optical depth of 12 towards the sun the sun term
+// e^-tau is below 6e-6 of its unshadowed value whatever lies beyond, so the image may not
+// change visibly while thick clouds need far fewer density evaluations. Cumulonimbus (the
+// thickest preset) and a stratocumulus deck at sunset (long slant light paths), every
+// pixel marched in full.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "../tests/accuracy_scenes.h"
+#include "render_test_support.h"
+
+namespace cloudsvc::test {
+namespace {
+
+class LightCutoff : public ::testing::TestWithParam<int> {};
+
+TEST_P(LightCutoff, StopsSpentLightMarchesWithoutChangingTheImage) {
+  const accuracy::AccuracyScene& s = accuracy::accuracy_scenes()[static_cast<size_t>(GetParam())];
+  const ViewRequest v = accuracy::accuracy_view(s, 96, 54);
+  RenderQuality every;
+  every.light_march_cutoff = 0.0;
+  RenderQuality cut;  // the default: 12
+  ASSERT_EQ(cut.light_march_cutoff, 12.0);
+  // the second frame of each: the first also builds the ground shadow map (its own march)
+  auto second_frame = [&](const RenderQuality& q) {
+    render_preset(s.preset, v, q);
+    return shared_renderer().render(v, q);
+  };
+  const FrameImage a = second_frame(every), b = second_frame(cut);
+  ASSERT_GT(a.stats.cloud_pixels, 100);
+  // difference per pixel relative to the pixel, with a floor of 1e-3 of the image's
+  // brightest value (the sky behind thin cloud edges is dark in the blue at sunset)
+  double peak = 0.0, worst = 0.0;
+  for (float x : a.rgba) peak = std::max(peak, static_cast<double>(x));
+  for (size_t k = 0; k < a.rgba.size(); ++k)
+    worst = std::max(worst, std::abs(static_cast<double>(b.rgba[k]) - a.rgba[k]) / (std::abs(a.rgba[k]) + 1e-3 * peak));
+  std::printf("%s: density evaluations per pixel %.1f -> %.1f, worst relative change %.2e\n", s.name,
+              a.stats.density_evals_per_pixel, b.stats.density_evals_per_pixel, worst);
+  EXPECT_LT(worst, 1e-4);
+  EXPECT_LT(b.stats.density_evals_per_pixel, 0.9 * a.stats.density_evals_per_pixel);
+}
+
+std::string scene_name(const ::testing::TestParamInfo<int>& info) {
+  std::string n = accuracy::accuracy_scenes()[static_cast<size_t>(info.param)].name;
+  for (char& c : n) if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  return n;
+}
+
+// indices into accuracy_scenes(): above stratocumulus at sunset, cumulonimbus
+INSTANTIATE_TEST_SUITE_P(ThickClouds, LightCutoff, ::testing::Values(7, 8), scene_name);
+
+}  // namespace
+}  // namespace cloudsvc::test

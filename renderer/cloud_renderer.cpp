@@ -94,33 +94,17 @@ weather::WeatherTimeline::Blend CloudRenderer::update_weather_textures(double ut
 }
 
 // The coverage max-pyramid of the keyframes (renderer/coverage_pyramid.h) into the storage
-// buffer shaders/coverage_pyramid.glsl reads: 16 ivec4 level records (width, height,
-// offset; the first one's w: the level count), then the cells. A map too large for 16
-// levels (over 32768 texels a side) leaves the pyramid off (pyramid_levels_ = 0).
+// buffer shaders/coverage_pyramid.glsl reads; off (the march does not query it) for a map
+// too large to pack.
 void CloudRenderer::upload_coverage_pyramid(const weather::WeatherMap& from, const weather::WeatherMap* to) {
-  constexpr int kMaxLevels = 16;
-  const CoveragePyramid p = build_coverage_pyramid(from, to);
-  pyramid_levels_ = p.levels.size() <= kMaxLevels ? static_cast<int>(p.levels.size()) : 0;
-  std::vector<std::int32_t> header(4 * kMaxLevels, 0);
-  for (int k = 0; k < pyramid_levels_; ++k) {
-    const CoveragePyramid::Level& l = p.levels[static_cast<size_t>(k)];
-    header[static_cast<size_t>(4 * k)] = l.width;
-    header[static_cast<size_t>(4 * k + 1)] = l.height;
-    header[static_cast<size_t>(4 * k + 2)] = l.offset;
-  }
-  header[3] = pyramid_levels_;
-  facts_.coverage_pyramid = pyramid_levels_ > 0;
-  const std::size_t cells = pyramid_levels_ > 0 ? p.cells.size() : 1;
-  const std::size_t bytes = header.size() * sizeof(std::int32_t) + cells * sizeof(float);
+  const std::vector<std::uint32_t> words = pack_for_gpu(build_coverage_pyramid(from, to));
+  facts_.coverage_pyramid = !words.empty();
+  const std::size_t bytes = std::max<std::size_t>(words.size(), 1) * sizeof(std::uint32_t);
   if (!coverage_pyramid_ || bytes != coverage_pyramid_bytes_) {
     coverage_pyramid_ = gl::make_buffer(static_cast<GLsizeiptr>(bytes), nullptr, GL_STATIC_DRAW);
     coverage_pyramid_bytes_ = bytes;
   }
-  glNamedBufferSubData(coverage_pyramid_.id(), 0, static_cast<GLsizeiptr>(header.size() * sizeof(std::int32_t)),
-                       header.data());
-  if (pyramid_levels_ > 0)
-    glNamedBufferSubData(coverage_pyramid_.id(), static_cast<GLintptr>(header.size() * sizeof(std::int32_t)),
-                         static_cast<GLsizeiptr>(p.cells.size() * sizeof(float)), p.cells.data());
+  if (!words.empty()) glNamedBufferSubData(coverage_pyramid_.id(), 0, static_cast<GLsizeiptr>(bytes), words.data());
 }
 
 void CloudRenderer::apply_tile(const weather::MapTile& tile, double now_utc_s) {

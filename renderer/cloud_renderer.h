@@ -84,7 +84,6 @@ class CloudRenderer {
   gl::Buffer uniforms_, temporal_uniforms_, counters_;
   gl::Buffer coverage_pyramid_;  // renderer/coverage_pyramid.h of the keyframes in weather_maps_
   std::size_t coverage_pyramid_bytes_ = 0;
-  int pyramid_levels_ = 0;  // 0: no pyramid (the march does not query it)
   int target_w_ = 0, target_h_ = 0, cloud_w_ = 0, cloud_h_ = 0;
   gl::PassTimer timer_;  // passes: 0 LUTs, 1 march, 2 resolve, 3 composite, 4 shadow map
   std::size_t static_gpu_bytes_ = 0;  // noise volumes, weather maps, atmosphere LUTs

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 
 namespace cloudsvc {
@@ -108,6 +109,19 @@ float pyramid_max_in_cap(const CoveragePyramid& p, double lat_rad, double lon_ra
   if (i0 >= W) { i0 -= W; i1 -= W; }
   if (i1 < W) return max_in_range(p, i0, i1, r0, r1);
   return std::max(max_in_range(p, i0, W - 1, r0, r1), max_in_range(p, 0, i1 - W, r0, r1));
+}
+
+std::vector<std::uint32_t> pack_for_gpu(const CoveragePyramid& p) {
+  if (p.empty() || p.levels.size() > static_cast<size_t>(kGpuPyramidLevels)) return {};
+  std::vector<std::uint32_t> words(4 * kGpuPyramidLevels + p.cells.size(), 0u);
+  for (size_t k = 0; k < p.levels.size(); ++k) {
+    words[4 * k] = static_cast<std::uint32_t>(p.levels[k].width);
+    words[4 * k + 1] = static_cast<std::uint32_t>(p.levels[k].height);
+    words[4 * k + 2] = static_cast<std::uint32_t>(p.levels[k].offset);
+  }
+  words[3] = static_cast<std::uint32_t>(p.levels.size());
+  std::memcpy(&words[4 * kGpuPyramidLevels], p.cells.data(), p.cells.size() * sizeof(float));
+  return words;
 }
 
 }  // namespace cloudsvc

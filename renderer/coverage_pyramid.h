@@ -18,6 +18,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "weather/weather_map.h"
@@ -49,5 +50,12 @@ CoveragePyramid build_coverage_pyramid(const weather::WeatherMap& map, const wea
 // that few, twice across the antimeridian. The CPU mirror of pyramid_max_in_cap in
 // shaders/coverage_pyramid.glsl (tests hold the two to the same answer).
 float pyramid_max_in_cap(const CoveragePyramid& p, double lat_rad, double lon_rad, double cap_rad);
+
+// The pyramid as the std430 storage buffer shaders/coverage_pyramid.glsl reads, in 32-bit
+// words: kGpuPyramidLevels ivec4 level records (width, height, offset; the first one's w:
+// the level count), then the cells as floats. Empty if the pyramid is empty or has more
+// levels than that (a map over 32768 texels a side): the march then does not use it.
+constexpr int kGpuPyramidLevels = 16;
+std::vector<std::uint32_t> pack_for_gpu(const CoveragePyramid& p);
 
 }  // namespace cloudsvc

@@ -37,6 +37,20 @@ const int PYRAMID_RUN = 8;
 // zenith angle at the ground below moves by 1.6e-3 rad over it (10 km / 6371 km).
 const float GROUND_IRRADIANCE_SPACING = 10000.0;
 
+// Can the points of the ray (local frame, from the camera) between distances ta and tb
+// have cloud of layer li? False only where the pyramid bounds the layer's local coverage
+// to 0 over a cap holding the whole segment: centred on its midpoint's direction, of
+// angular radius asin(L / |M|) <= L / (|M| - L) (L half its length, |M| the midpoint's
+// distance from the shell centre) plus 1e-5 rad (~60 m) for float rounding.
+bool segment_may_have_cloud(int li, vec3 dir, float ta, float tb) {
+  vec3 mid = 0.5 * (ta + tb) * dir;
+  vec3 q = mat3(U.enu_to_ecef) * (mid + vec3(0.0, 0.0, U.planet.x + U.planet.y));
+  float half_len = 0.5 * (tb - ta);
+  float a = half_len / max(length(q) - half_len, 1.0) + 1e-5;
+  float m = pyramid_max_in_cap(atan(q.z, length(q.xy)), atan(q.y, q.x), a);
+  return local_coverage(U.layers[li], vec4(m)) > 0.0;
+}
+
 // Light steps at distance t: the full count while the pixel footprint is finer than a
 // base-noise texel, falling in proportion beyond (no finer lighting than the pixel can
 // show), to a third at most (seed 002, LOD by the ray's cone footprint).

@@ -1,11 +1,11 @@
 // The coverage max-pyramid of the weather map (renderer/coverage_pyramid.h, built on the
 // CPU from both keyframes): the largest coverage modulation m the map can give anywhere in
-// a cap on the shell sphere, from at most 2 x 2 cells of one level (twice across the
-// antimeridian). Mirrors pyramid_max_in_cap of renderer/coverage_pyramid.cpp. Needs
-// common.glsl and frame_uniforms.glsl (weather_at's frame).
+// a cap on the shell sphere, from at most 3 x 3 cells of one level (twice across the
+// antimeridian). Mirrors pyramid_max_in_cap of renderer/coverage_pyramid.cpp (held to
+// it by tests/gpu_coverage_pyramid_test.cpp). Needs common.glsl.
 
 layout(std430, binding = 1) readonly buffer CoveragePyramid {
-  ivec4 cp_level[16];  // per level: x width, y height (cells), z offset of its first cell; cp_level[0].w = levels
+  ivec4 cp_level[16];  // kGpuPyramidLevels (renderer/coverage_pyramid.h); per level: x width, y height (cells), z offset of its first cell; cp_level[0].w = levels
   float cp_cell[];     // row-major per level, rows from the south
 } CP;
 
@@ -44,18 +44,4 @@ float pyramid_max_in_cap(float lat, float lon, float a) {
   if (i0 >= W) { i0 -= W; i1 -= W; }
   if (i1 < W) return cp_max_in_range(i0, i1, r0, r1);
   return max(cp_max_in_range(i0, W - 1, r0, r1), cp_max_in_range(0, i1 - W, r0, r1));
-}
-
-// Can the points of the ray (local frame, from the camera) between distances ta and tb
-// have cloud of layer li? False only where the pyramid bounds the layer's local coverage
-// to 0 over a cap holding the whole segment: centred on its midpoint's direction, of
-// angular radius asin(L / |M|) <= L / (|M| - L) (L half its length, |M| the midpoint's
-// distance from the shell centre) plus 1e-5 rad (~60 m) for float rounding.
-bool segment_may_have_cloud(int li, vec3 dir, float ta, float tb) {
-  vec3 mid = 0.5 * (ta + tb) * dir;
-  vec3 q = mat3(U.enu_to_ecef) * (mid + vec3(0.0, 0.0, U.planet.x + U.planet.y));
-  float half_len = 0.5 * (tb - ta);
-  float a = half_len / max(length(q) - half_len, 1.0) + 1e-5;
-  float m = pyramid_max_in_cap(atan(q.z, length(q.xy)), atan(q.y, q.x), a);
-  return local_coverage(U.layers[li], vec4(m)) > 0.0;
 }

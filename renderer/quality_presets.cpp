@@ -2,12 +2,12 @@
 // docs/PERFORMANCE.md: error at 160x90 vs the CPU reference's 3 x 3-ray pixel footprint
 // after 17 frames of a still view, amortised cost at 160x90, summed over the 8 benchmark
 // scenes; llvmpipe, 2 cores; speed, march work (density evaluations) and RMSE relative to
-// naive, 2026-12-02, one run):
+// naive, 2026-12-02, one run; cost-only runs the same day: default 5.3-6.1x):
 //   naive    uniform 64 primary, 6 light, no skips, pixel centre        1.0x,   1.0x work, RMSE 1.00
-//   low      64 log, 6 light, long steps x4, LOD, half res, 1/16 px    10.0x, 101x work, RMSE 1.60
-//   medium   64 log, 4 light, long steps x2, 1/16 px per frame          5.5x,  24x work, RMSE 1.01
-//   default  64 log, 6 light, long steps x2, 1/16 px per frame          5.7x,  20x work, RMSE 0.94
-//   high     96 log, 8 light, long steps x2, 1/4 px per frame           2.3x,   3x work, RMSE 0.65
+//   low      64 log, 6 light, long steps x4, LOD, half res, 1/16 px     8.4x, 101x work, RMSE 1.60
+//   medium   64 log, 4 light, long steps x2, 1/16 px per frame          4.7x,  24x work, RMSE 1.01
+//   default  64 log, 6 light, long steps x2, 1/16 px per frame          4.8x,  20x work, RMSE 0.94
+//   high     96 log, 8 light, long steps x2, 1/4 px per frame           2.1x,   3x work, RMSE 0.65
 //   ultra    192 log, 12 light, every pixel, accumulated while still    0.5x, 0.3x work, RMSE 0.45
 // All: one octave (single scattering + the delta-Eddington diffuse term), the coverage
 // pyramid and the light-march cut-off (RenderQuality defaults; not in naive); every

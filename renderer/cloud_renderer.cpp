@@ -99,7 +99,8 @@ weather::WeatherTimeline::Blend CloudRenderer::update_weather_textures(double ut
 void CloudRenderer::upload_coverage_pyramid(const weather::WeatherMap& from, const weather::WeatherMap* to) {
   const std::vector<std::uint32_t> words = pack_for_gpu(build_coverage_pyramid(from, to));
   facts_.coverage_pyramid = !words.empty();
-  const std::size_t bytes = std::max<std::size_t>(words.size(), 1) * sizeof(std::uint32_t);
+  // off: a buffer of the block's fixed part and one cell (bound, never read: skips.x = 0)
+  const std::size_t bytes = std::max<std::size_t>(words.size(), 4 * kGpuPyramidLevels + 1) * sizeof(std::uint32_t);
   if (!coverage_pyramid_ || bytes != coverage_pyramid_bytes_) {
     coverage_pyramid_ = gl::make_buffer(static_cast<GLsizeiptr>(bytes), nullptr, GL_STATIC_DRAW);
     coverage_pyramid_bytes_ = bytes;
@@ -311,7 +312,7 @@ FrameImage CloudRenderer::render(const ViewRequest& view, const RenderQuality& q
   img.stats.shadow_map_ms = timer_.ms(4);
   img.stats.marched_fraction = tu.grid.x == 0 ? 0.0 : 1.0 / (static_cast<double>(tu.grid.x) * tu.grid.x);
   img.stats.gpu_memory_bytes = static_cast<std::int64_t>(
-      static_gpu_bytes_ + static_cast<std::size_t>(target_w_) * target_h_ * 16 +
+      static_gpu_bytes_ + coverage_pyramid_bytes_ + static_cast<std::size_t>(target_w_) * target_h_ * 16 +
       6 * static_cast<std::size_t>(cloud_w_) * cloud_h_ * 16);
   img.stats.render_ms = std::chrono::duration<double, std::milli>(end - start).count();
   img.stats.readback_ms = std::chrono::duration<double, std::milli>(end - readback_start).count();

@@ -24,7 +24,8 @@ bool same_march(const RenderQuality& a, const RenderQuality& b) {
          a.step_growth_ref_m == b.step_growth_ref_m && a.temporal_stride == b.temporal_stride &&
          a.cloud_resolution_divisor == b.cloud_resolution_divisor && a.long_step_factor == b.long_step_factor &&
          a.level_of_detail == b.level_of_detail && a.temporal_reuse == b.temporal_reuse &&
-         a.ground_shadow_map == b.ground_shadow_map && a.light_volume == b.light_volume;
+         a.ground_shadow_map == b.ground_shadow_map && a.light_volume == b.light_volume &&
+         a.coverage_pyramid == b.coverage_pyramid && a.light_march_cutoff == b.light_march_cutoff;
 }
 
 // current local -> previous local for a field that moves by the ECEF rotation q (the

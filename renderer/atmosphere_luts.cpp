@@ -51,36 +51,59 @@ bool AtmosphereLuts::same_sky(const ViewKey& a, const ViewKey& b) {
   return std::abs(a.planet.y - b.planet.y) < 1.0f && std::abs(zenith_a - zenith_b) < 1e-4f;
 }
 
-bool AtmosphereLuts::same_froxels(const ViewKey& a, const ViewKey& b) {
-  const glm::vec3 sa(a.sun_dir), sb(b.sun_dir);
-  return a.camera_forward == b.camera_forward && a.camera_right == b.camera_right && a.camera_up == b.camera_up &&
-         a.view == b.view && std::abs(a.planet.y - b.planet.y) < 1.0f && glm::length(sa - sb) < 1e-4f &&
-         std::abs(a.ap_params.x - b.ap_params.x) < 1.0f;
+bool AtmosphereLuts::froxels_serve(const ViewKey& a, const FrameUniforms& u) {
+  const glm::vec3 sa(a.sun_dir), sb(u.sun_dir);
+  if (!(std::abs(a.planet.y - u.planet.y) < 1.0f && glm::length(sa - sb) < 1e-4f &&
+        std::abs(a.ap_params.x - u.ap_params.x) < 1.0f))
+    return false;
+  const float tx = u.view.x, ty = u.view.y;  // the camera's tan(half fov) per axis
+  // not much coarser than a volume built for this camera would be
+  if (a.ap_right.w > (1.0f + 2.0f * kApMargin) * tx || a.ap_up.w > (1.0f + 2.0f * kApMargin) * ty) return false;
+  // the camera's frustum (a convex cone spanned by its four corner rays) inside the volume's
+  const glm::vec3 f(u.camera_forward), r(u.camera_right), up(u.camera_up);
+  const glm::vec3 af(a.ap_forward), ar(a.ap_right), au(a.ap_up);
+  for (const float sx : {-1.0f, 1.0f})
+    for (const float sy : {-1.0f, 1.0f}) {
+      const glm::vec3 d = f + sx * tx * r + sy * ty * up;
+      const float z = glm::dot(d, af);
+      if (!(z > 0.0f) || std::abs(glm::dot(d, ar)) > a.ap_right.w * z || std::abs(glm::dot(d, au)) > a.ap_up.w * z)
+        return false;
+    }
+  return true;
 }
 
-AtmosphereLuts::ViewLutUpdate AtmosphereLuts::update_view_dependent(const FrameUniforms& u) {
-  const ViewKey key{u.camera_forward, u.camera_right, u.camera_up, u.view, u.planet, u.sun_dir, u.ap_params};
-  ViewLutUpdate done;
-  done.sky_view = !(last_sky_ && same_sky(*last_sky_, key));
-  done.aerial_perspective = !(last_froxels_ && same_froxels(*last_froxels_, key));
-  if (!done.sky_view && !done.aerial_perspective) return done;
+AtmosphereLuts::ViewLutUpdate AtmosphereLuts::plan_view_dependent(FrameUniforms& u) {
+  ViewLutUpdate plan;
+  const ViewKey camera{u.camera_forward,
+                       glm::vec4(glm::vec3(u.camera_right), u.view.x * (1.0f + kApMargin)),
+                       glm::vec4(glm::vec3(u.camera_up), u.view.y * (1.0f + kApMargin)),
+                       u.planet, u.sun_dir, u.ap_params};
+  plan.sky_view = !(last_sky_ && same_sky(*last_sky_, camera));
+  if (plan.sky_view) last_sky_ = camera;
+  plan.aerial_perspective = !(last_froxels_ && froxels_serve(*last_froxels_, u));
+  if (plan.aerial_perspective) last_froxels_ = camera;
+  u.ap_forward = last_froxels_->ap_forward;
+  u.ap_right = last_froxels_->ap_right;
+  u.ap_up = last_froxels_->ap_up;
+  return plan;
+}
+
+void AtmosphereLuts::recompute(const ViewLutUpdate& plan) {
+  if (!plan.sky_view && !plan.aerial_perspective) return;
   glBindTextureUnit(0, transmittance_.id());
   glBindTextureUnit(1, multiscatter_.id());
   glBindTextureUnit(2, irradiance_.id());
-  if (done.sky_view) {
-    last_sky_ = key;
+  if (plan.sky_view) {
     sky_view_prog_.use();
     glBindImageTexture(0, sky_view_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     dispatch_2d(kSkyViewW, kSkyViewH);
   }
-  if (done.aerial_perspective) {
-    last_froxels_ = key;
+  if (plan.aerial_perspective) {
     ap_prog_.use();
     glBindImageTexture(0, ap_inscatter_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glBindImageTexture(1, ap_transmittance_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     dispatch_2d(kApSize, kApSize);
   }
-  return done;
 }
 
 void AtmosphereLuts::bind_for_scene() const {

@@ -35,26 +35,36 @@ class AtmosphereLuts {
     bool aerial_perspective = false;  // aerial-perspective volume
   };
 
-  // Recomputes the camera-dependent LUTs (the frame uniform buffer must be bound at 0)
-  // unless their inputs are unchanged since the last call. The sky-view LUT is
-  // parameterised relative to the local vertical and the sun's azimuth (Hillaire 2020
-  // §5.3), so it depends only on the camera altitude (kept within 1 m) and the sun's
-  // zenith angle (within 1e-4 rad, at least ~1.4 s of sun motion; longer near solar noon,
-  // when the elevation hardly changes): turning the camera or flying level keeps it. The aerial-perspective volume is made of the camera's froxels:
-  // it also needs the same camera axes, field of view, reach and sun direction (within
-  // 1e-4 rad).
-  ViewLutUpdate update_view_dependent(const FrameUniforms& u);
+  // Decides which camera-dependent LUTs the frame u needs recomputed and writes the
+  // aerial-perspective volume's frustum into u (ap_forward, ap_right, ap_up); call before
+  // uploading u. The sky-view LUT is parameterised relative to the local vertical and the
+  // sun's azimuth (Hillaire 2020 §5.3), so it depends only on the camera altitude (kept
+  // within 1 m) and the sun's zenith angle (within 1e-4 rad, at least ~1.4 s of sun motion;
+  // longer near solar noon, when the elevation hardly changes): turning the camera or
+  // flying level keeps it. The aerial-perspective volume is made of froxels of a frustum
+  // kApMargin wider than the camera's (per axis, in tangent): it is kept while the camera's
+  // frustum stays inside it and is not much narrower (kApMargin again), and the altitude
+  // (1 m), reach (1 m) and sun direction (1e-4 rad) hold. A camera turning at 3 deg/s
+  // keeps it for about a second.
+  ViewLutUpdate plan_view_dependent(FrameUniforms& u);
+  // Recomputes what plan_view_dependent decided (the frame uniforms it wrote must be
+  // uploaded and bound at 0).
+  void recompute(const ViewLutUpdate& plan);
+
+  static constexpr float kApMargin = 0.1f;
 
   // Binds the LUTs to the texture units the scene shader expects (0, 1, 2, 6, 7, 8).
   void bind_for_scene() const;
 
  private:
-  // The inputs the view-dependent LUTs were last computed for.
+  // The inputs the view-dependent LUTs were last computed for: for the froxels, the
+  // volume's frustum (ap_*), not the camera's.
   struct ViewKey {
-    glm::vec4 camera_forward, camera_right, camera_up, view, planet, sun_dir, ap_params;
+    glm::vec4 ap_forward, ap_right, ap_up, planet, sun_dir, ap_params;
   };
   static bool same_sky(const ViewKey& a, const ViewKey& b);
-  static bool same_froxels(const ViewKey& a, const ViewKey& b);
+  // The volume of key a still serves frame u (camera frustum inside, inputs unchanged).
+  static bool froxels_serve(const ViewKey& a, const FrameUniforms& u);
   std::optional<ViewKey> last_sky_, last_froxels_;
   gl::ShaderProgram sky_view_prog_, ap_prog_;
   gl::Texture transmittance_, multiscatter_, irradiance_, sky_view_, ap_inscatter_, ap_transmittance_;

@@ -259,6 +259,7 @@ FrameImage CloudRenderer::render(const ViewRequest& view, const RenderQuality& q
   const weather::WeatherTimeline::Blend blend = update_weather_textures(view.unix_time_s);
   FrameUniforms u = make_frame_uniforms(view, weather_, quality, facts_, &*wind_anchor_);
   const unsigned culled = cull_layers_without_cloud_in_view(u, view, blend);
+  const AtmosphereLuts::ViewLutUpdate view_luts = atmosphere_.plan_view_dependent(u);  // sets u.ap_*
   glNamedBufferSubData(uniforms_.id(), 0, sizeof(FrameUniforms), &u);
   glBindBufferBase(GL_UNIFORM_BUFFER, 0, uniforms_.id());
   const Counters zero{0, 0, 0};
@@ -267,7 +268,7 @@ FrameImage CloudRenderer::render(const ViewRequest& view, const RenderQuality& q
 
   timer_.reset();
   timer_.begin(0);
-  const AtmosphereLuts::ViewLutUpdate view_luts = atmosphere_.update_view_dependent(u);
+  atmosphere_.recompute(view_luts);
   timer_.end();
   atmosphere_.bind_for_scene();
   glBindTextureUnit(3, base_noise_.id());

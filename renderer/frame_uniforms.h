@@ -33,6 +33,9 @@ struct FrameUniforms {
   glm::vec4 ap_params;
   glm::vec4 march;   // long-step factor, LOD on, pixel angle (rad), mean detail-noise value
   glm::vec4 skips;   // coverage pyramid on (1/0), light-march optical-depth cut-off (1e30 = none), unused x2
+  // frustum of the aerial-perspective volume (AtmosphereLuts::plan_view_dependent): its
+  // forward, right (w: tan of half its width) and up (w: tan of half its height) axes
+  glm::vec4 ap_forward, ap_right, ap_up;
   glm::ivec4 counts;
   glm::vec4 noise_quantiles[4];  // base-noise quantiles at p = i / 15, i = 0..15
   glm::vec4 weather_pole_south;  // weather map value at the south pole (row mean)
@@ -41,6 +44,6 @@ struct FrameUniforms {
 };
 
 static_assert(sizeof(CloudLayerGpu) == 10 * 16, "std140 layout");
-static_assert(sizeof(FrameUniforms) == 64 + 20 * 16 + kGpuMaxLayers * 10 * 16, "std140 layout");
+static_assert(sizeof(FrameUniforms) == 64 + 23 * 16 + kGpuMaxLayers * 10 * 16, "std140 layout");
 
 }  // namespace cloudsvc

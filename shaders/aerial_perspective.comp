@@ -1,7 +1,8 @@
 #version 450 core
 // Aerial-perspective volume (Hillaire 2020 §5.4, extended to flight distances): for each
-// of 32x32 view directions through the screen, in-scattered radiance (unit sun) and
-// transmittance from the camera to 32 distances d_k = d_max (k / 31)^2, k = 0..31, with
+// of 32x32 view directions through its frustum (U.ap_forward/right/up: the camera's, a
+// little wider, kept while the camera turns within it), in-scattered radiance (unit sun)
+// and transmittance from the camera to 32 distances d_k = d_max (k / 31)^2, k = 0..31, with
 // d_max = U.ap_params.x (hundreds of km). One invocation marches one column.
 #include "common.glsl"
 #include "frame_uniforms.glsl"
@@ -19,8 +20,7 @@ void main() {
   ivec2 px = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(px, size.xy))) return;
   vec2 ndc = (vec2(px) / vec2(size.xy - 1)) * 2.0 - 1.0;
-  vec3 d = normalize(U.camera_forward.xyz + ndc.x * U.view.x * U.camera_right.xyz +
-                     ndc.y * U.view.y * U.camera_up.xyz);
+  vec3 d = normalize(U.ap_forward.xyz + ndc.x * U.ap_right.w * U.ap_right.xyz + ndc.y * U.ap_up.w * U.ap_up.xyz);
   float r = atmo_radius(U.planet.y);
   vec3 sun = U.sun_dir.xyz;
   float nu = dot(d, sun);

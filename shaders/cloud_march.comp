@@ -217,7 +217,7 @@ void main() {
   // depth: evaluated with the sample, so temporal reuse reuses it too
   if (opacity > 0.0) {
     vec3 ap_in, ap_T;
-    aerial_perspective(ndc_ray, max(depth, 0.0), ap_in, ap_T);
+    aerial_perspective(dir, max(depth, 0.0), ap_in, ap_T);
     C = C * ap_T + opacity * E_sun * ap_in;
   }
 

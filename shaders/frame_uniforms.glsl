@@ -28,6 +28,9 @@ layout(std140, binding = 0) uniform FrameUniforms {
   vec4 ap_params;          // x aerial-perspective max distance (m), y weather map height (texels), z weight of the next weather keyframe, w unused
   vec4 march;              // x long-step factor in empty air (1 = off), y LOD on (0/1), z pixel angle (rad), w mean detail-noise value
   vec4 skips;              // x coverage pyramid on (1/0), y light-march optical-depth cut-off (1e30 = none), zw unused
+  vec4 ap_forward;         // frustum of the aerial-perspective volume (local ENU): xyz forward,
+  vec4 ap_right;           //   xyz right, w tan(half its width),
+  vec4 ap_up;              //   xyz up, w tan(half its height)
   ivec4 counts;            // x layer count, y frame index, z count density evaluations (0/1), w footprint jitter (0/1)
   vec4 noise_quantiles[4]; // base shape noise value below which a fraction i/15 of texels lie, i = 0..15
   vec4 weather_pole_south; // weather map value at the south pole (mean of the southernmost row)

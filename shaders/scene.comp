@@ -91,7 +91,7 @@ vec3 sun_disk(vec3 dir, float h) {
 // Radiance of the ground seen along dir, which hits it at distance t_ground (W m^-2 sr^-1
 // nm^-1): lit by the sun through the clouds' optical depth above the ground point (ground
 // shadow map, or marched per pixel) and by the sky, seen through the aerial perspective.
-vec3 ground_radiance(vec3 dir, float t_ground, vec2 ndc) {
+vec3 ground_radiance(vec3 dir, float t_ground) {
   float R = U.planet.x, h = U.planet.y, ground_alt = U.planet.z;
   vec3 sun = U.sun_dir.xyz;
   vec3 E_sun = U.sun_irradiance.rgb;
@@ -113,7 +113,7 @@ vec3 ground_radiance(vec3 dir, float t_ground, vec2 ndc) {
   vec3 E = E_sun * (T_atm * max(mu_s, 0.0) * sun_through + sky_irradiance(ground_alt, mu_s) * slab_diffuse_transmittance(tau_v));
   vec3 L_ground = U.ground_albedo.rgb / PI * E;
   vec3 ap_in, ap_T;
-  aerial_perspective(ndc, t_ground, ap_in, ap_T);
+  aerial_perspective(dir, t_ground, ap_in, ap_T);
   return L_ground * ap_T + E_sun * ap_in;
 }
 
@@ -232,7 +232,7 @@ void main() {
   float background_weight = saturate(T / BACKGROUND_T_EPS - 1.0);
   vec3 background = vec3(0.0);
   if (background_weight > 0.0) {
-    if (hs.f_ground > 0.0) background += hs.f_ground * ground_radiance(hs.dir_g, hs.t_g, ndc);
+    if (hs.f_ground > 0.0) background += hs.f_ground * ground_radiance(hs.dir_g, hs.t_g);
     if (hs.f_ground < 1.0) background += (1.0 - hs.f_ground) * sky_radiance(hs.dir_s);
   }
   vec3 sun_seen = hs.f_ground < 1.0 ? (1.0 - hs.f_ground) * sun_disk(dir, h) : vec3(0.0);

@@ -11,6 +11,7 @@
 #include <random>
 
 #include "render_test_support.h"
+#include "weather_tile_support.h"
 #include "renderer/coverage_pyramid.h"
 #include "renderer/quality_presets.h"
 #include "weather/weather_map.h"
@@ -135,20 +136,10 @@ double worst_relative(const FrameImage& a, const FrameImage& b) {
   return worst;
 }
 
-// A one-channel (coverage) tile of value m over lat 46..49 (or lat0..lat1), lon0..lon1.
+// A coverage tile of value m over lat0..lat1 (46..49 by default), lon0..lon1, 50 x 30 texels.
 weather::MapTile coverage_tile(double lon0, double lon1, float m, double valid_at, double lat0 = 46.0,
                                double lat1 = 49.0) {
-  weather::MapTile t;
-  t.lat_min_deg = lat0;
-  t.lat_max_deg = lat1;
-  t.lon_min_deg = lon0;
-  t.lon_max_deg = lon1;
-  t.width = 50;
-  t.height = 30;
-  t.channels = 1;
-  t.valid_at_utc_s = valid_at;
-  t.data.assign(static_cast<size_t>(t.width) * t.height, m);
-  return t;
+  return test::coverage_tile(lat0, lon0, lat1, lon1, m, valid_at, 50, 30);
 }
 
 // The second frame of view v after set_weather(scattered cumulus) and forecast(r): a full

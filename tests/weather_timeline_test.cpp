@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "weather/weather_timeline.h"
+#include "weather_tile_support.h"
 
 namespace cloudsvc::weather {
 namespace {
@@ -17,19 +18,7 @@ WeatherMap flat_map(float v, int w = 360, int h = 180) {
   return m;
 }
 
-MapTile coverage_tile(double lat0, double lon0, double lat1, double lon1, float value, double valid_at = 0.0) {
-  MapTile t;
-  t.lat_min_deg = lat0;
-  t.lon_min_deg = lon0;
-  t.lat_max_deg = lat1;
-  t.lon_max_deg = lon1;
-  t.width = 4;
-  t.height = 4;
-  t.channels = 1;  // coverage only
-  t.valid_at_utc_s = valid_at;
-  t.data.assign(16, value);
-  return t;
-}
+using test::coverage_tile;
 
 float at(const WeatherMap& m, double lat, double lon, int ch = 0) {
   float v[4];

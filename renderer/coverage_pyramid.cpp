@@ -58,29 +58,33 @@ CoveragePyramid build_coverage_pyramid(const weather::WeatherMap& map, const wea
   CoveragePyramid::Level l0{W, H + 1, 0};
   p.levels.push_back(l0);
   p.cells.assign(static_cast<size_t>(W) * (H + 1), 0.0f);
-  for (int r = 0; r <= H; ++r)
-    for (int i = 0; i < W; ++i) {
-      const int i1 = (i + 1) % W;
-      float m = 0.0f;
-      for (int j : {r - 1, r}) {
-        if (j < 0 || j >= H) continue;
-        m = std::max({m, texel[static_cast<size_t>(j) * W + i], texel[static_cast<size_t>(j) * W + i1]});
-      }
-      if (r == 0) m = std::max(m, pole[0]);
-      if (r == H) m = std::max(m, pole[1]);
-      p.cells[static_cast<size_t>(r) * W + i] = m;
-    }
+  std::vector<float> rows(static_cast<size_t>(W));  // max of the cell row's two texel rows
+  for (int r = 0; r <= H; ++r) {
+    const float* lo = &texel[static_cast<size_t>(std::max(r - 1, 0)) * W];
+    const float* hi = &texel[static_cast<size_t>(std::min(r, H - 1)) * W];
+    for (int i = 0; i < W; ++i) rows[static_cast<size_t>(i)] = std::max(lo[i], hi[i]);
+    float* out = &p.cells[static_cast<size_t>(r) * W];
+    for (int i = 0; i + 1 < W; ++i) out[i] = std::max(rows[static_cast<size_t>(i)], rows[static_cast<size_t>(i) + 1]);
+    out[W - 1] = std::max(rows[static_cast<size_t>(W) - 1], rows[0]);
+    const float pole_m = r == 0 ? pole[0] : r == H ? pole[1] : 0.0f;
+    if (r == 0 || r == H)
+      for (int i = 0; i < W; ++i) out[i] = std::max(out[i], pole_m);
+  }
   // coarser levels: 2 x 2 maxima up to a single cell
   while (p.levels.back().width > 1 || p.levels.back().height > 1) {
     const CoveragePyramid::Level prev = p.levels.back();
-    CoveragePyramid::Level l{(prev.width + 1) / 2, (prev.height + 1) / 2, static_cast<int>(p.cells.size())};
-    const int k = static_cast<int>(p.levels.size()) - 1;
+    const CoveragePyramid::Level l{(prev.width + 1) / 2, (prev.height + 1) / 2, static_cast<int>(p.cells.size())};
     p.levels.push_back(l);
     p.cells.resize(p.cells.size() + static_cast<size_t>(l.width) * l.height, 0.0f);
-    for (int r = 0; r < l.height; ++r)
-      for (int i = 0; i < l.width; ++i)
-        p.cells[static_cast<size_t>(l.offset + r * l.width + i)] =
-            max_over(p, k, 2 * i, std::min(2 * i + 1, prev.width - 1), 2 * r, std::min(2 * r + 1, prev.height - 1));
+    for (int r = 0; r < l.height; ++r) {
+      const float* a = &p.cells[static_cast<size_t>(prev.offset + 2 * r * prev.width)];
+      const float* b = &p.cells[static_cast<size_t>(prev.offset + std::min(2 * r + 1, prev.height - 1) * prev.width)];
+      float* out = &p.cells[static_cast<size_t>(l.offset + r * l.width)];
+      for (int i = 0; i < l.width; ++i) {
+        const int i1 = std::min(2 * i + 1, prev.width - 1);
+        out[i] = std::max(std::max(a[2 * i], a[i1]), std::max(b[2 * i], b[i1]));
+      }
+    }
   }
   return p;
 }

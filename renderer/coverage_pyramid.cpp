@@ -66,9 +66,8 @@ CoveragePyramid build_coverage_pyramid(const weather::WeatherMap& map, const wea
     float* out = &p.cells[static_cast<size_t>(r) * W];
     for (int i = 0; i + 1 < W; ++i) out[i] = std::max(rows[static_cast<size_t>(i)], rows[static_cast<size_t>(i) + 1]);
     out[W - 1] = std::max(rows[static_cast<size_t>(W) - 1], rows[0]);
-    const float pole_m = r == 0 ? pole[0] : r == H ? pole[1] : 0.0f;
-    if (r == 0 || r == H)
-      for (int i = 0; i < W; ++i) out[i] = std::max(out[i], pole_m);
+    if (r == 0 || r == H)  // the rows the shader blends towards a pole's value
+      for (int i = 0; i < W; ++i) out[i] = std::max(out[i], pole[r == 0 ? 0 : 1]);
   }
   // coarser levels: 2 x 2 maxima up to a single cell
   while (p.levels.back().width > 1 || p.levels.back().height > 1) {

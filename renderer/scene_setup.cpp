@@ -94,9 +94,9 @@ FrameUniforms make_frame_uniforms(const ViewRequest& view, const weather::Weathe
   u.march = glm::vec4(static_cast<float>(std::max(1, quality.long_step_factor)), quality.level_of_detail ? 1.0f : 0.0f,
                       static_cast<float>(2.0 * tan_h / view.width * std::max(1, quality.cloud_resolution_divisor)),
                       resources.detail_mean);
-  // Light marches stop once the sun's beam is spent: optical depth past the cut-off for the
-  // octave that decays slowest (a^(octaves - 1) tau, cloud_march.comp).
-  // octave k decays as e^(-a^k tau): the slowest is the last for a < 1, the first for a >= 1
+  // Light marches stop once the sun's beam is spent: past the cut-off for the octave that
+  // decays slowest (octave k decays as e^(-a^k tau), cloud_march.comp: the last for a < 1,
+  // the first for a >= 1).
   const double slowest = std::pow(std::min(quality.ms_a, 1.0), std::max(0, quality.ms_octaves - 1));
   const double light_cut = quality.light_march_cutoff > 0.0 ? quality.light_march_cutoff / slowest : 1e30;
   u.skips = glm::vec4(quality.coverage_pyramid && resources.coverage_pyramid ? 1.0f : 0.0f,

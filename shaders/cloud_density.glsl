@@ -10,14 +10,19 @@ layout(binding = 9) uniform sampler2D weather_map_next;  // the next keyframe, b
 
 uint g_density_evals = 0u;  // per-invocation count of density evaluations
 
+// A point p of the local frame as seen from the shell centre, in ECEF axes (m).
+vec3 from_shell_centre(vec3 p) { return mat3(U.enu_to_ecef) * (p + vec3(0.0, 0.0, U.planet.x + U.planet.y)); }
+
+// Latitude and longitude (rad) of the direction q from the shell centre, as the weather map
+// is indexed. atan2 for latitude keeps full precision near the poles (asin would lose ~km
+// there in float).
+vec2 map_lat_lon(vec3 q) { return vec2(atan(q.z, length(q.xy)), atan(q.y, q.x)); }
+
 // Weather map at a point p (local frame): the map is indexed by latitude/longitude of the
-// point's direction from the shell centre, in ECEF axes. atan2 for latitude keeps full
-// precision near the poles (asin would lose ~km there in float).
+// point's direction from the shell centre, in ECEF axes.
 vec4 weather_at(vec3 p) {
-  vec3 q = (mat3(U.enu_to_ecef) * (p + vec3(0.0, 0.0, U.planet.x + U.planet.y)));
-  float lat = atan(q.z, length(q.xy));
-  float lon = atan(q.y, q.x);
-  vec2 uv = vec2(lon * (0.5 / PI) + 0.5, lat / PI + 0.5);
+  vec2 ll = map_lat_lon(from_shell_centre(p));
+  vec2 uv = vec2(ll.y * (0.5 / PI) + 0.5, ll.x / PI + 0.5);
   // the next keyframe only while one is fading in (a uniform branch: no divergence)
   vec4 w = textureLod(weather_map, uv, 0.0);
   if (U.ap_params.z > 0.0) w = mix(w, textureLod(weather_map_next, uv, 0.0), U.ap_params.z);

@@ -43,11 +43,11 @@ const float GROUND_IRRADIANCE_SPACING = 10000.0;
 // angular radius asin(L / |M|) <= L / (|M| - L) (L half its length, |M| the midpoint's
 // distance from the shell centre) plus 1e-5 rad (~60 m) for float rounding.
 bool segment_may_have_cloud(int li, vec3 dir, float ta, float tb) {
-  vec3 mid = 0.5 * (ta + tb) * dir;
-  vec3 q = mat3(U.enu_to_ecef) * (mid + vec3(0.0, 0.0, U.planet.x + U.planet.y));
+  vec3 q = from_shell_centre(0.5 * (ta + tb) * dir);
   float half_len = 0.5 * (tb - ta);
   float a = half_len / max(length(q) - half_len, 1.0) + 1e-5;
-  float m = pyramid_max_in_cap(atan(q.z, length(q.xy)), atan(q.y, q.x), a);
+  vec2 ll = map_lat_lon(q);
+  float m = pyramid_max_in_cap(ll.x, ll.y, a);
   return local_coverage(U.layers[li], vec4(m)) > 0.0;
 }
 

@@ -128,7 +128,8 @@ Error get(const wire::Error& m) {
 StatsRequest get(const wire::StatsRequest&) { return StatsRequest{}; }
 
 Stats get(const wire::Stats& m) {
-  return Stats{m.frames_rendered(), m.fps(), m.poses_received(), m.poses_dropped(), m.clients()};
+  return Stats{m.frames_rendered(), m.fps(), m.poses_received(), m.poses_dropped(), m.clients(),
+               m.frame_in_progress_ms()};
 }
 
 // The body as a Message; nullopt if the union's table is absent.

@@ -90,7 +90,7 @@ struct BodyWriter {
   fb::Offset<void> operator()(const StatsRequest&) { return wire::CreateStatsRequest(b).Union(); }
   fb::Offset<void> operator()(const Stats& m) {
     return wire::CreateStats(b, m.frames_rendered, m.fps, m.poses_received, m.poses_dropped,
-                             m.clients)
+                             m.clients, m.frame_in_progress_ms)
         .Union();
   }
 };

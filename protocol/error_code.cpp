@@ -32,13 +32,18 @@ std::string_view error_code_name(ErrorCode code) {
       return "RenderFailed";
     case ErrorCode::Internal:
       return "Internal";
+    case ErrorCode::Overloaded:
+      return "Overloaded";
+    case ErrorCode::IdleTimeout:
+      return "IdleTimeout";
   }
   return "Unknown";
 }
 
 bool is_fatal(ErrorCode code) {
   return code == ErrorCode::HandshakeRequired || code == ErrorCode::VersionMismatch ||
-         code == ErrorCode::FramingError || code == ErrorCode::Busy;
+         code == ErrorCode::FramingError || code == ErrorCode::Busy ||
+         code == ErrorCode::IdleTimeout;
 }
 
 }  // namespace cloudsvc::protocol

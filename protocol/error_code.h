@@ -22,12 +22,14 @@ enum class ErrorCode : std::uint16_t {
   Busy = 11,               // connection refused, e.g. too many clients (fatal)
   RenderFailed = 12,       // the renderer failed for this frame
   Internal = 13,           // bug in the service
+  Overloaded = 14,         // refused: a per-client or memory bound is reached; retry later (minor 1)
+  IdleTimeout = 15,        // the client sent nothing for the service's idle timeout (fatal; minor 1)
 };
 
 // "InvalidField", ...; "Unknown" for values outside the enum (a newer peer's codes).
 std::string_view error_code_name(ErrorCode code);
 
-// True for HandshakeRequired, VersionMismatch, FramingError and Busy.
+// True for HandshakeRequired, VersionMismatch, FramingError, Busy and IdleTimeout.
 bool is_fatal(ErrorCode code);
 
 }  // namespace cloudsvc::protocol

@@ -211,6 +211,7 @@ struct Stats {
   std::uint64_t poses_received = 0;
   std::uint64_t poses_dropped = 0;  // superseded before being rendered
   std::uint32_t clients = 0;
+  double frame_in_progress_ms = 0.0;  // time spent so far on the frame being rendered; 0 when idle (minor 1)
   bool operator==(const Stats&) const = default;
 };
 

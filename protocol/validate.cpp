@@ -308,6 +308,7 @@ Problem check(const StatsRequest&) { return {}; }
 
 Problem check(const Stats& m) {
   CHECK(nonnegative("Stats.fps", m.fps));
+  CHECK(nonnegative("Stats.frame_in_progress_ms", m.frame_in_progress_ms));
   if (m.poses_dropped > m.poses_received) {
     return join("Stats.poses_dropped ", num(m.poses_dropped), " exceeds poses_received ",
                 num(m.poses_received));

@@ -85,6 +85,8 @@ static_assert(kSameCode<ErrorCode::CapabilityMissing, w::ErrorCode::CapabilityMi
 static_assert(kSameCode<ErrorCode::Busy, w::ErrorCode::Busy>);
 static_assert(kSameCode<ErrorCode::RenderFailed, w::ErrorCode::RenderFailed>);
 static_assert(kSameCode<ErrorCode::Internal, w::ErrorCode::Internal>);
-static_assert(kSameCode<ErrorCode::Internal, w::ErrorCode::MAX>);
+static_assert(kSameCode<ErrorCode::Overloaded, w::ErrorCode::Overloaded>);
+static_assert(kSameCode<ErrorCode::IdleTimeout, w::ErrorCode::IdleTimeout>);
+static_assert(kSameCode<ErrorCode::IdleTimeout, w::ErrorCode::MAX>);
 
 }  // namespace cloudsvc::protocol::wire_checks

@@ -1,10 +1,15 @@
 #include "renderer/image_output.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
@@ -54,40 +59,69 @@ std::vector<std::uint8_t> tone_map_srgb8(const FrameImage& img, double exposure_
   return out;
 }
 
-void write_image(const std::string& path, const FrameImage& img, double exposure_ev) {
-  const std::string ext = lower_extension(path);
-  if (ext != ".exr" && ext != ".png") throw std::runtime_error(path + ": unsupported extension (use .exr or .png)");
-  const std::filesystem::path final_path(path);
-  const std::filesystem::path tmp_path =
-      final_path.parent_path() / ("." + final_path.stem().string() + ".tmp" + std::to_string(::getpid()) + ext);
+namespace {
 
-  auto out = OIIO::ImageOutput::create(tmp_path.string());
+// The encoded file (EXR or PNG) in memory: OpenImageIO writes through an in-memory proxy,
+// so no file is opened by name until write_file_safely.
+std::vector<unsigned char> encode_image(const std::string& path, const std::string& ext, const FrameImage& img,
+                                        double exposure_ev) {
+  std::vector<unsigned char> bytes;
+  OIIO::Filesystem::IOVecOutput proxy(bytes);
+  auto out = OIIO::ImageOutput::create(path);
   if (!out) throw std::runtime_error(path + ": cannot create image writer: " + OIIO::geterror());
+  if (!out->supports("ioproxy")) throw std::runtime_error(path + ": the image writer cannot write to memory");
   bool ok = false;
   if (ext == ".exr") {
     OIIO::ImageSpec spec(img.width, img.height, 4, OIIO::TypeDesc::HALF);
     spec.channelnames = {"R", "G", "B", "A"};
     spec.attribute("compression", "zip");
     spec.attribute("cloudsvc:radiance_units", "W m^-2 sr^-1 nm^-1 at 680/550/440 nm; A = cloud opacity");
-    ok = out->open(tmp_path.string(), spec) && out->write_image(OIIO::TypeDesc::FLOAT, img.rgba.data());
+    OIIO::Filesystem::IOProxy* p = &proxy;
+    spec.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &p);
+    ok = out->open(path, spec) && out->write_image(OIIO::TypeDesc::FLOAT, img.rgba.data());
   } else {
     const std::vector<std::uint8_t> px = tone_map_srgb8(img, exposure_ev);
     OIIO::ImageSpec spec(img.width, img.height, 4, OIIO::TypeDesc::UINT8);
-    ok = out->open(tmp_path.string(), spec) && out->write_image(OIIO::TypeDesc::UINT8, px.data());
+    OIIO::Filesystem::IOProxy* p = &proxy;
+    spec.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &p);
+    ok = out->open(path, spec) && out->write_image(OIIO::TypeDesc::UINT8, px.data());
   }
   ok = out->close() && ok;
-  if (!ok) {
-    std::string err = out->geterror();
-    std::error_code ec;
-    std::filesystem::remove(tmp_path, ec);
-    throw std::runtime_error(path + ": write failed: " + err);
+  if (!ok) throw std::runtime_error(path + ": encoding failed: " + out->geterror());
+  return bytes;
+}
+
+// Writes bytes to path without following or clobbering anything an attacker may have put
+// in the folder: a fresh temporary with an unpredictable name is created exclusively
+// (mkostemps: O_CREAT | O_EXCL, which never follows a symbolic link), filled, synced and
+// renamed over path (rename replaces a link at path, never the file it points to).
+void write_file_safely(const std::filesystem::path& path, const std::vector<unsigned char>& bytes) {
+  const std::string ext = path.extension().string();
+  std::string tmpl = (path.parent_path() / ("." + path.stem().string() + ".XXXXXX" + ext)).string();
+  const int fd = ::mkostemps(tmpl.data(), static_cast<int>(ext.size()), O_CLOEXEC);
+  if (fd < 0) throw std::runtime_error(path.string() + ": cannot create a temporary file: " + std::strerror(errno));
+  bool ok = ::fchmod(fd, 0644) == 0;  // mkostemps makes 0600; a frame is for other readers too
+  for (std::size_t done = 0; ok && done < bytes.size();) {
+    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    ok = n > 0;
+    if (ok) done += static_cast<std::size_t>(n);
   }
-  std::error_code ec;
-  std::filesystem::rename(tmp_path, final_path, ec);
-  if (ec) {
-    std::filesystem::remove(tmp_path, ec);
-    throw std::runtime_error(path + ": cannot move the finished image into place: " + ec.message());
+  const int write_errno = errno;
+  ok = ::close(fd) == 0 && ok;
+  if (!ok || ::rename(tmpl.c_str(), path.c_str()) != 0) {
+    const std::string why = std::strerror(ok ? errno : write_errno);
+    ::unlink(tmpl.c_str());
+    throw std::runtime_error(path.string() + ": write failed: " + why);
   }
+}
+
+}  // namespace
+
+void write_image(const std::string& path, const FrameImage& img, double exposure_ev) {
+  const std::string ext = lower_extension(path);
+  if (ext != ".exr" && ext != ".png") throw std::runtime_error(path + ": unsupported extension (use .exr or .png)");
+  write_file_safely(std::filesystem::path(path), encode_image(path, ext, img, exposure_ev));
 }
 
 }  // namespace cloudsvc

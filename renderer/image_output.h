@@ -1,6 +1,9 @@
 // Writing frames to files with OpenImageIO: EXR = linear radiance as half float RGBA
-// (A = cloud opacity); PNG = tone-mapped 8-bit sRGB for people. Files are written to a
-// temporary name in the same folder and renamed, so a failed write leaves no partial file.
+// (A = cloud opacity); PNG = tone-mapped 8-bit sRGB for people. The image is encoded in
+// memory, written to a fresh temporary of unpredictable name created exclusively in the
+// same folder, and renamed into place: a failed write leaves no partial file, and a file or
+// symbolic link someone planted under the temporary's or the final name is never written
+// through.
 #pragma once
 
 #include <cstdint>

@@ -2,12 +2,19 @@
 // thread (DESIGN.md §1). Poses are latest-wins: a newer pose replaces an unrendered one
 // (counted as dropped), so a fast sender never builds a backlog. Everything else that
 // changes state (view, weather, tiles, time) is kept in arrival order: nothing accepted
-// is lost. The render thread takes everything pending at once.
+// is lost. What one client can queue is bounded, and a request over a bound is refused
+// (the caller answers Overloaded) instead of being queued: at most kMaxRendersPerClient
+// render requests per client, and weather tiles up to a byte budget for all clients.
+// The render thread takes all state changes and the newest pose at once, but only one
+// render request per client per batch, so requests of one client never hold back the
+// poses (or the requests) of another for more than one frame each.
 #pragma once
 
 #include <chrono>
 #include <condition_variable>
+#include <cstddef>
 #include <cstdint>
+#include <map>
 #include <mutex>
 #include <optional>
 #include <variant>
@@ -44,10 +51,26 @@ struct MailboxBatch {
 
 class FrameMailbox {
  public:
+  // Render requests one client may have queued or in progress.
+  static constexpr std::size_t kMaxRendersPerClient = 2;
+
+  explicit FrameMailbox(std::size_t tile_budget_bytes = std::size_t{256} << 20);
+
   void post_pose(PendingPose p);
-  void post_change(StateChange c);
-  void post_render(PendingRender r);
+  // False (nothing queued) when a WeatherMapTile would take the tiles received but not yet
+  // applied above the budget; other changes are always queued.
+  bool post_change(StateChange c);
+  // False (nothing queued) when the client already has kMaxRendersPerClient requests.
+  bool post_render(PendingRender r);
   void request_stop();
+
+  // The render thread reports each request it has finished (or failed) and each tile it
+  // has applied (or dropped), which frees their place in the bounds.
+  void render_finished(std::uint64_t client_id);
+  void tile_applied(const protocol::WeatherMapTile& tile);
+
+  // Bytes a tile holds while it waits (its texel values).
+  static std::size_t tile_bytes(const protocol::WeatherMapTile& tile);
 
   // Blocks until something is pending or `timeout` passes; returns (and clears) it.
   MailboxBatch take(std::chrono::milliseconds timeout);
@@ -58,7 +81,10 @@ class FrameMailbox {
  private:
   mutable std::mutex mutex_;
   std::condition_variable cv_;
-  MailboxBatch pending_;
+  MailboxBatch pending_;                                  // renders: all clients, arrival order
+  std::map<std::uint64_t, std::size_t> renders_by_client_;  // queued + in progress
+  std::size_t tile_budget_bytes_;
+  std::size_t tile_bytes_ = 0;                            // received, not yet applied
   std::uint64_t poses_received_ = 0;
   std::uint64_t poses_dropped_ = 0;
 };

@@ -1,8 +1,11 @@
 #include "service/network_server.h"
 
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <deque>
 #include <filesystem>
 #include <stdexcept>
@@ -19,6 +22,41 @@ using Tcp = asio::ip::tcp;
 using Local = asio::local::stream_protocol;
 
 bool is_frame_ready(const protocol::Message& m) { return std::holds_alternative<protocol::FrameReady>(m); }
+
+// True when a process accepts connections on the Unix socket at path (a live service).
+bool someone_listens(const std::string& path) {
+  asio::io_context probe_io;
+  Local::socket probe(probe_io);
+  asio::error_code ec;
+  probe.connect(Local::endpoint(path), ec);
+  return !ec;  // ECONNREFUSED: a stale file nobody listens on
+}
+
+// Binds and listens on path with permissions `mode`. The file is created while the umask
+// denies group and others everything, so it is never reachable by them before chmod.
+std::unique_ptr<Local::acceptor> bind_unix_socket(asio::io_context& io, const std::string& path, unsigned mode) {
+  std::error_code fec;
+  if (std::filesystem::is_socket(path, fec)) {
+    if (someone_listens(path))
+      throw std::runtime_error("another process is listening on this socket; refusing to replace it "
+                               "(stop that service first, or choose another path)");
+    std::filesystem::remove(path, fec);  // stale socket file of a service that is gone
+  }
+  auto acc = std::make_unique<Local::acceptor>(io);
+  acc->open(Local());
+  const mode_t old_umask = ::umask(077);  // single-threaded here: the render thread starts later
+  asio::error_code ec;
+  acc->bind(Local::endpoint(path), ec);
+  ::umask(old_umask);
+  if (ec) throw std::runtime_error(ec.message());
+  if (::chmod(path.c_str(), static_cast<mode_t>(mode)) != 0) {
+    const std::string why = std::strerror(errno);
+    ::unlink(path.c_str());
+    throw std::runtime_error("cannot set the socket's permissions: " + why);
+  }
+  acc->listen();
+  return acc;
+}
 }  // namespace
 
 // One connected client. Lives on the network thread; owned by the server's session map
@@ -28,7 +66,7 @@ class ClientSession : public std::enable_shared_from_this<ClientSession> {
   using Socket = std::variant<Tcp::socket, Local::socket>;
 
   ClientSession(NetworkServer& server, std::uint64_t id, Socket socket)
-      : server_(server), id_(id), socket_(std::move(socket)), timer_(server.io_),
+      : server_(server), id_(id), socket_(std::move(socket)), timer_(server.io_), idle_timer_(server.io_),
         decoder_(server.config_.welcome.limits.max_payload_bytes) {}
 
   std::uint64_t id() const { return id_; }
@@ -76,6 +114,7 @@ class ClientSession : public std::enable_shared_from_this<ClientSession> {
     if (closing_) return;
     closing_ = true;
     timer_.cancel();
+    idle_timer_.cancel();
     std::visit([](auto& s) {
       asio::error_code ec;
       s.shutdown(asio::socket_base::shutdown_both, ec);
@@ -123,8 +162,10 @@ class ClientSession : public std::enable_shared_from_this<ClientSession> {
       handshaken_ = true;
       timer_.cancel();
       send(v.reply);
+      arm_idle_timer();
       return;
     }
+    arm_idle_timer();  // any message, valid or not, shows the client is alive
     if (!r.ok()) {
       send(r.to_error());  // the client's state is untouched; it may go on
       return;
@@ -134,6 +175,21 @@ class ClientSession : public std::enable_shared_from_this<ClientSession> {
       return;
     }
     server_.handler_(id_, *r.message, r.seq);
+  }
+
+  // (Re)starts the idle countdown; on expiry the client gets IdleTimeout and is dropped.
+  void arm_idle_timer() {
+    const auto timeout = server_.config_.idle_timeout;
+    if (timeout.count() <= 0 || closing_) return;
+    idle_timer_.expires_after(timeout);
+    idle_timer_.async_wait([self = shared_from_this(), timeout](const asio::error_code& ec) {
+      if (ec || self->closing_ || self->close_after_write_) return;  // re-armed, closed or already leaving
+      const auto s = std::chrono::duration_cast<std::chrono::seconds>(timeout).count();
+      self->send_and_close(protocol::Error{protocol::ErrorCode::IdleTimeout,
+                                           "no message for " + std::to_string(s) +
+                                               " s (idle timeout); send a StatsRequest to stay connected",
+                                           0});
+    });
   }
 
   void write_next() {
@@ -156,7 +212,8 @@ class ClientSession : public std::enable_shared_from_this<ClientSession> {
   NetworkServer& server_;
   std::uint64_t id_;
   Socket socket_;
-  asio::steady_timer timer_;
+  asio::steady_timer timer_;       // handshake deadline
+  asio::steady_timer idle_timer_;  // idle deadline after the handshake
   protocol::FrameDecoder decoder_;
   std::array<std::uint8_t, 65536> buffer_{};
   std::deque<std::shared_ptr<std::vector<std::uint8_t>>> queue_;
@@ -180,13 +237,11 @@ NetworkServer::NetworkServer(asio::io_context& io, Config config, Handler handle
         acc->listen();
         tcp_.push_back(std::move(acc));
       } else {
-        std::error_code ec;
-        if (std::filesystem::is_socket(a.path, ec)) std::filesystem::remove(a.path, ec);  // stale socket file
-        auto acc = std::make_unique<Local::acceptor>(io_, Local::endpoint(a.path));
-        unix_.push_back(std::move(acc));
+        unix_.push_back(bind_unix_socket(io_, a.path, config_.socket_mode));
         unix_paths_.push_back(a.path);
       }
     } catch (const std::exception& e) {
+      for (const std::string& p : unix_paths_) ::unlink(p.c_str());  // the ones this service created
       throw std::runtime_error("--listen " + a.text + ": " + e.what());
     }
   }
@@ -228,6 +283,22 @@ void NetworkServer::start_session(std::shared_ptr<ClientSession> s) {
 
 void NetworkServer::session_closed(std::uint64_t id) { sessions_.erase(id); }
 
+std::vector<std::string> NetworkServer::bound_addresses() const {
+  std::vector<std::string> out;
+  std::size_t t = 0, u = 0;
+  for (const ListenAddress& a : config_.listen) {
+    if (a.kind == ListenAddress::Kind::Tcp) {
+      asio::error_code ec;
+      const Tcp::endpoint ep = tcp_[t++]->local_endpoint(ec);
+      const std::string host = ep.address().is_v6() ? "[" + ep.address().to_string() + "]" : ep.address().to_string();
+      out.push_back("tcp://" + host + ":" + std::to_string(ep.port()));
+    } else {
+      out.push_back("unix:" + unix_paths_[u++]);
+    }
+  }
+  return out;
+}
+
 void NetworkServer::send_to(std::uint64_t client_id, const protocol::Message& m) {
   auto it = sessions_.find(client_id);
   if (it == sessions_.end()) return;
@@ -243,16 +314,20 @@ void NetworkServer::broadcast(const protocol::Message& m) {
     if (s->handshaken()) s->send(m);
 }
 
-void NetworkServer::stop() {
+void NetworkServer::stop_listening() {
   if (stopped_) return;
   stopped_ = true;
   asio::error_code ec;
   for (auto& a : tcp_) a->close(ec);
   for (auto& a : unix_) a->close(ec);
+  for (const std::string& p : unix_paths_) ::unlink(p.c_str());
+}
+
+void NetworkServer::stop() {
+  stop_listening();
   std::vector<std::shared_ptr<ClientSession>> all;
   for (auto& [id, s] : sessions_) all.push_back(s);
   for (auto& s : all) s->close();
-  for (const std::string& p : unix_paths_) ::unlink(p.c_str());
 }
 
 }  // namespace cloudsvc

@@ -33,6 +33,10 @@ class NetworkServer {
     protocol::Welcome welcome;
     int max_clients = 16;
     std::chrono::milliseconds handshake_timeout{10000};  // a client that sends no Hello is dropped
+    // A handshaken client that sends nothing for this long gets IdleTimeout and is dropped,
+    // so idle connections cannot hold every --max-clients place; zero = never.
+    std::chrono::milliseconds idle_timeout{60000};
+    unsigned socket_mode = 0600;  // permissions of every Unix socket file
     // Per-client outbound queue (bytes of framed messages not yet taken by the socket;
     // docs/PROTOCOL.md, "Limits"): above max_queued_notice_bytes FrameReady notices are
     // dropped; a message that would take the queue above max_queued_bytes disconnects the
@@ -42,18 +46,25 @@ class NetworkServer {
   };
 
   // Binds every listen address (throws std::runtime_error naming the address on failure).
+  // A Unix socket path where another process is listening is refused without touching it;
+  // only a stale socket file (nobody accepts connections on it) is replaced. Socket files
+  // are created with no access for others and then given config.socket_mode.
   NetworkServer(asio::io_context& io, Config config, Handler handler);
   ~NetworkServer();
 
   // Network thread only (use asio::post from other threads).
   void send_to(std::uint64_t client_id, const protocol::Message& m);
   void broadcast(const protocol::Message& m);
-  void stop();  // closes listeners and sessions, removes Unix socket files
+  void stop_listening();  // closes listeners, removes Unix socket files; sessions go on
+  void stop();            // stop_listening, then closes every session
 
   std::size_t client_count() const { return sessions_.size(); }
   std::uint64_t notices_dropped() const { return notices_dropped_; }
   std::uint64_t clients_dropped_for_queue() const { return clients_dropped_for_queue_; }
   const Config& config() const { return config_; }
+  // The bound addresses in listen order, as tcp://HOST:PORT (the kernel's port for port 0)
+  // or unix:PATH.
+  std::vector<std::string> bound_addresses() const;
 
  private:
   friend class ClientSession;

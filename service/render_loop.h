@@ -7,6 +7,7 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <mutex>
 #include <optional>
 
 #include "protocol/messages.h"
@@ -15,6 +16,8 @@
 
 namespace cloudsvc {
 
+class ShmFrameWriter;
+
 class RenderLoop {
  public:
   // Called on the render thread; must hand the message to the network thread.
@@ -22,26 +25,52 @@ class RenderLoop {
   using Notify = std::function<void(std::optional<std::uint64_t> client, protocol::Message m)>;
   using StopService = std::function<void()>;
 
-  RenderLoop(const ServeOptions& options, FrameMailbox& mailbox, Notify notify, StopService stop_service);
+  // `shm` (may be null) is the ring the frames go to when the view asks for it. Every
+  // write to a sink (ring, file, window) happens while `publish_mutex` is held, so whoever
+  // holds it knows no frame is half published (serve abandons a frame that way).
+  // options.out_dir must be canonical: the file sink's directories are checked against it.
+  RenderLoop(const ServeOptions& options, FrameMailbox& mailbox, Notify notify, StopService stop_service,
+             ShmFrameWriter* shm, std::mutex& publish_mutex);
 
-  // Runs until the mailbox says stop (finishes the frame in progress first). Throws
-  // std::runtime_error when the GL context or a sink cannot be created.
+  // Runs until the mailbox says stop; a pose or request still pending then is not
+  // rendered. Throws std::runtime_error when the GL context or the window cannot be made.
   void run();
 
   std::uint64_t frames_rendered() const { return frames_.load(); }
   double fps() const { return fps_.load(); }
+  // Milliseconds spent so far on the frame being rendered, 0 when none is.
+  double frame_in_progress_ms() const;
 
  private:
   const ServeOptions& options_;
   FrameMailbox& mailbox_;
   Notify notify_;
   StopService stop_service_;
+  ShmFrameWriter* shm_;
+  std::mutex& publish_mutex_;
   std::atomic<std::uint64_t> frames_{0};
   std::atomic<double> fps_{0.0};
+  std::atomic<std::int64_t> frame_started_ns_{0};  // steady clock; 0 = idle
 };
 
 // The initial view of a service: sinks from the command line (shm if --shm, file if
 // --out-dir, window if --window), size and fov from --size/--fov.
 protocol::SetView initial_view(const ServeOptions& options);
+
+// UTC of each pose: its own when it carries one, else the last SetTime (or the command
+// line's --time) advanced by the simulation time since then.
+class SimClock {
+ public:
+  void set(double utc_s);
+  // The pose's effective UTC, without changing the clock.
+  double utc_for(const protocol::Pose& p) const;
+  // Takes the pose as the clock's new reference (after it was found valid).
+  void observe(const protocol::Pose& p);
+  double base_utc_s() const { return base_utc_s_; }
+
+ private:
+  double base_utc_s_ = 0.0;
+  std::optional<double> base_sim_s_;  // sim time of the first pose after the base was set
+};
 
 }  // namespace cloudsvc

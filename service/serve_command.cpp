@@ -1,13 +1,20 @@
 // `cloudsvc serve`: network thread (asio: sockets, signals) + render thread (GL), joined
-// by the FrameMailbox. See docs/ARCHITECTURE.md ("The service") and docs/PROTOCOL.md.
+// by the FrameMailbox. See docs/ARCHITECTURE.md ("The service"), docs/PROTOCOL.md and
+// docs/RELIABILITY.md (limits, shutdown).
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <asio.hpp>
 
 #include <atomic>
+#include <cerrno>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
+#include <mutex>
 #include <thread>
 
 #include "protocol/limits.h"
@@ -15,11 +22,18 @@
 #include "service/commands.h"
 #include "service/frame_mailbox.h"
 #include "service/network_server.h"
+#include "service/output_directory.h"
 #include "service/render_loop.h"
+#include "service/shm_frame_writer.h"
 
 namespace cloudsvc {
 
 namespace {
+
+// How long SIGINT/SIGTERM wait for the frame in progress before abandoning it, and how
+// long the Errors announcing that get to reach the clients: together well inside 2 s.
+constexpr auto kShutdownGrace = std::chrono::milliseconds(1200);
+constexpr auto kAbandonFlush = std::chrono::milliseconds(300);
 
 protocol::Welcome make_welcome(const ServeOptions& opt) {
   protocol::Welcome w;
@@ -32,46 +46,114 @@ protocol::Welcome make_welcome(const ServeOptions& opt) {
   return w;
 }
 
-// Checks a SetView against what this service can deliver; empty when it can.
-std::string check_view(const protocol::SetView& v, const ServeOptions& opt) {
+struct ViewProblem {
+  protocol::ErrorCode code = protocol::ErrorCode::SinkUnavailable;
+  std::string text;  // empty: the view can be delivered
+};
+
+// Checks a SetView against what this service can deliver; on success the view's file_dir
+// becomes the resolved directory inside --out-dir.
+ViewProblem check_view(protocol::SetView& v, const ServeOptions& opt) {
+  using protocol::ErrorCode;
+  const std::string size = std::to_string(v.width) + "x" + std::to_string(v.height);
+  if (static_cast<int>(v.width) > opt.max_view_width || static_cast<int>(v.height) > opt.max_view_height)
+    return {ErrorCode::InvalidField, "SetView.width/height " + size + " exceed the service's --max-view-size " +
+                                         std::to_string(opt.max_view_width) + "x" + std::to_string(opt.max_view_height)};
   if ((v.sinks & protocol::sink::kShm) && opt.shm_name.empty())
-    return "SetView.sinks: shared memory requested but the service runs without --shm";
+    return {ErrorCode::SinkUnavailable, "SetView.sinks: shared memory requested but the service runs without --shm"};
   if ((v.sinks & protocol::sink::kShm) &&
       (static_cast<int>(v.width) > opt.shm_max_width || static_cast<int>(v.height) > opt.shm_max_height))
-    return "SetView.width/height " + std::to_string(v.width) + "x" + std::to_string(v.height) +
-           " exceed the shared-memory ring's " + std::to_string(opt.shm_max_width) + "x" +
-           std::to_string(opt.shm_max_height) + " (--shm-max-size)";
+    return {ErrorCode::SinkUnavailable, "SetView.width/height " + size + " exceed the shared-memory ring's " +
+                                            std::to_string(opt.shm_max_width) + "x" +
+                                            std::to_string(opt.shm_max_height) + " (--shm-max-size)"};
   if ((v.sinks & protocol::sink::kWindow) && !opt.window)
-    return "SetView.sinks: window requested but the service runs without --window";
+    return {ErrorCode::SinkUnavailable, "SetView.sinks: window requested but the service runs without --window"};
   if (v.sinks & protocol::sink::kFile) {
-    std::error_code ec;
-    if (v.file_dir.empty() || !std::filesystem::is_directory(v.file_dir, ec) || ::access(v.file_dir.c_str(), W_OK) != 0)
-      return "SetView.file_dir '" + v.file_dir + "': not a writable directory on the service's machine";
+    const ClientDirectory dir = resolve_client_directory(v.file_dir, opt.out_dir);
+    if (!dir.problem.empty()) return {ErrorCode::SinkUnavailable, dir.problem};
+    v.file_dir = dir.path.string();
   }
   if (!v.quality_preset.empty() && !quality_preset(v.quality_preset)) {
     std::string names;
     for (const std::string& n : quality_preset_names()) names += (names.empty() ? "" : ", ") + n;
-    return "SetView.quality_preset '" + v.quality_preset + "': unknown (available: " + names + ")";
+    return {ErrorCode::UnknownPreset, "SetView.quality_preset '" + v.quality_preset + "': unknown (available: " + names + ")"};
   }
   return {};
 }
 
+// Writes the bound addresses, one per line, to path: into a fresh temporary in the same
+// folder, then renamed, so a reader never sees a partial file.
+void write_ready_file(const std::string& path, const std::vector<std::string>& addresses) {
+  const std::filesystem::path p(path);
+  std::string tmpl = (p.parent_path() / ("." + p.filename().string() + ".XXXXXX")).string();
+  const int fd = ::mkostemp(tmpl.data(), O_CLOEXEC);
+  if (fd < 0) throw std::runtime_error("--ready-file " + path + ": " + std::strerror(errno));
+  std::string text;
+  for (const std::string& a : addresses) text += a + "\n";
+  const bool ok = ::write(fd, text.data(), text.size()) == static_cast<ssize_t>(text.size()) && ::fchmod(fd, 0644) == 0;
+  const bool closed = ::close(fd) == 0;
+  if (!ok || !closed || ::rename(tmpl.c_str(), path.c_str()) != 0) {
+    const std::string why = std::strerror(errno);
+    ::unlink(tmpl.c_str());
+    throw std::runtime_error("--ready-file " + path + ": " + why);
+  }
+}
+
 }  // namespace
 
-int run_serve(const ServeOptions& opt) {
-  if (!opt.out_dir.empty()) std::filesystem::create_directories(opt.out_dir);
+int run_serve(const ServeOptions& command_line) {
+  ServeOptions opt = command_line;
+  if (!opt.out_dir.empty()) {
+    std::filesystem::create_directories(opt.out_dir);
+    opt.out_dir = std::filesystem::canonical(opt.out_dir).string();  // the root every client directory is held to
+  }
+  // The ring before the sockets: a clash with another service ends this one before it
+  // touches any socket path.
+  std::unique_ptr<ShmFrameWriter> shm;
+  if (!opt.shm_name.empty())
+    shm = std::make_unique<ShmFrameWriter>(opt.shm_name, opt.shm_max_width, opt.shm_max_height, opt.shm_mode);
+
   asio::io_context io;
   auto work = asio::make_work_guard(io);
-  FrameMailbox mailbox;
+  FrameMailbox mailbox(static_cast<std::size_t>(opt.tile_budget_mib) << 20);
   std::unique_ptr<NetworkServer> server;
   std::atomic<bool> stopping{false};
   std::unique_ptr<RenderLoop> loop;
+  std::mutex publish_mutex;  // held by the render thread while it writes to a sink
+  asio::steady_timer grace_timer(io);
+  asio::signal_set signals(io, SIGINT, SIGTERM);
 
+  // The render thread did not finish its frame within the grace: tell the clients, make
+  // sure no frame is half written (the ring keeps its last whole frame), remove the socket
+  // files and the ring's name, and leave without waiting for the GL work.
+  auto abandon_frame = [&] {
+    std::printf("cloudsvc serve: the frame in progress did not finish within %lld ms; abandoning it\n",
+                static_cast<long long>(kShutdownGrace.count()));
+    std::fflush(stdout);
+    server->broadcast(protocol::Error{protocol::ErrorCode::RenderFailed,
+                                      "the service is shutting down: the frame in progress was abandoned", 0});
+    grace_timer.expires_after(kAbandonFlush);
+    grace_timer.async_wait([&](const asio::error_code&) {
+      publish_mutex.lock();  // a sink write in progress ends first; none starts after
+      server->stop();
+      if (shm) shm->unlink_name();
+      std::printf("cloudsvc serve: stopped after %llu frames (one abandoned)\n",
+                  static_cast<unsigned long long>(loop ? loop->frames_rendered() : 0));
+      std::fflush(stdout);
+      std::_Exit(0);
+    });
+  };
+
+  // SIGINT/SIGTERM, --exit-after-frames, a closed window, or the render thread's end.
   auto stop_service = [&] {
     asio::post(io, [&] {
       if (stopping.exchange(true)) return;
-      mailbox.request_stop();  // the render thread finishes its frame and leaves
-      if (server) server->stop();  // no new requests; sockets closed, socket files removed
+      mailbox.request_stop();          // no new frame starts
+      if (server) server->stop_listening();  // no new clients; socket files removed
+      grace_timer.expires_after(kShutdownGrace);
+      grace_timer.async_wait([&](const asio::error_code& ec) {
+        if (!ec) abandon_frame();
+      });
     });
   };
 
@@ -79,24 +161,29 @@ int run_serve(const ServeOptions& opt) {
   NetworkServer::Handler handler = [&](std::uint64_t client, const protocol::Message& m, std::uint64_t seq) {
     if (stopping) return;
     const auto now = std::chrono::steady_clock::now();
+    auto overloaded = [&](const std::string& text) {
+      server->send_to(client, protocol::Error{protocol::ErrorCode::Overloaded, text, seq});
+    };
     std::visit([&](const auto& msg) {
       using T = std::decay_t<decltype(msg)>;
       if constexpr (std::is_same_v<T, protocol::Pose>) {
         mailbox.post_pose(PendingPose{msg, now, client});
       } else if constexpr (std::is_same_v<T, protocol::SetView>) {
-        const std::string problem = check_view(msg, opt);
-        if (!problem.empty()) {
-          const auto code = problem.find("quality_preset") != std::string::npos ? protocol::ErrorCode::UnknownPreset
-                                                                                 : protocol::ErrorCode::SinkUnavailable;
-          server->send_to(client, protocol::Error{code, problem, seq});
-        } else {
-          mailbox.post_change(msg);
-        }
-      } else if constexpr (std::is_same_v<T, protocol::SetTime> || std::is_same_v<T, protocol::WeatherLayers> ||
-                           std::is_same_v<T, protocol::WeatherMapTile>) {
+        protocol::SetView view = msg;
+        const ViewProblem problem = check_view(view, opt);
+        if (!problem.text.empty()) server->send_to(client, protocol::Error{problem.code, problem.text, seq});
+        else mailbox.post_change(view);
+      } else if constexpr (std::is_same_v<T, protocol::WeatherMapTile>) {
+        if (!mailbox.post_change(msg))
+          overloaded("WeatherMapTile refused: tiles waiting to be applied would exceed the service's --tile-budget of " +
+                     std::to_string(opt.tile_budget_mib) + " MiB; send it again after the next FrameReady");
+      } else if constexpr (std::is_same_v<T, protocol::SetTime> || std::is_same_v<T, protocol::WeatherLayers>) {
         mailbox.post_change(msg);
       } else if constexpr (std::is_same_v<T, protocol::RenderRequest>) {
-        mailbox.post_render(PendingRender{msg.request_id, client, now});
+        if (!mailbox.post_render(PendingRender{msg.request_id, client, now}))
+          overloaded("RenderRequest " + std::to_string(msg.request_id) + " refused: this client already has " +
+                     std::to_string(FrameMailbox::kMaxRendersPerClient) +
+                     " render requests pending; send the next after a FrameReady");
       } else if constexpr (std::is_same_v<T, protocol::StatsRequest>) {
         protocol::Stats s;
         s.frames_rendered = loop ? loop->frames_rendered() : 0;
@@ -104,6 +191,7 @@ int run_serve(const ServeOptions& opt) {
         s.poses_received = mailbox.poses_received();
         s.poses_dropped = mailbox.poses_dropped();
         s.clients = static_cast<std::uint32_t>(server->client_count());
+        s.frame_in_progress_ms = loop ? loop->frame_in_progress_ms() : 0.0;
         server->send_to(client, s);
       } else {
         server->send_to(client, protocol::Error{protocol::ErrorCode::UnexpectedMessage,
@@ -116,12 +204,16 @@ int run_serve(const ServeOptions& opt) {
   cfg.listen = opt.listen;
   cfg.welcome = welcome;
   cfg.max_clients = opt.max_clients;
+  cfg.idle_timeout = std::chrono::seconds(opt.idle_timeout_s);
+  cfg.socket_mode = opt.socket_mode;
   server = std::make_unique<NetworkServer>(io, cfg, handler);
+  const std::vector<std::string> bound = server->bound_addresses();
+  if (!opt.ready_file.empty()) write_ready_file(opt.ready_file, bound);  // throws: exit 1, sockets removed
 
-  asio::signal_set signals(io, SIGINT, SIGTERM);
   signals.async_wait([&](const asio::error_code& ec, int sig) {
     if (!ec) {
-      std::printf("cloudsvc serve: signal %d, finishing the current frame and shutting down\n", sig);
+      std::printf("cloudsvc serve: signal %d, shutting down (a frame in progress gets %lld ms to finish)\n", sig,
+                  static_cast<long long>(kShutdownGrace.count()));
       std::fflush(stdout);
       stop_service();
     }
@@ -137,7 +229,7 @@ int run_serve(const ServeOptions& opt) {
           else server->broadcast(m);
         });
       },
-      stop_service);
+      stop_service, shm.get(), publish_mutex);
 
   std::string render_error;
   std::thread render_thread([&] {
@@ -147,17 +239,20 @@ int run_serve(const ServeOptions& opt) {
       render_error = e.what();
     }
     stop_service();
-    asio::post(io, [&] {
+    asio::post(io, [&] {  // after stop_service's own post: everything is in place to close
+      grace_timer.cancel();
+      server->stop();
       signals.cancel();
       work.reset();
     });
   });
 
-  for (const ListenAddress& a : opt.listen) std::printf("cloudsvc serve: listening on %s\n", a.text.c_str());
+  for (const std::string& a : bound) std::printf("cloudsvc serve: listening on %s\n", a.c_str());
   if (!opt.shm_name.empty()) std::printf("cloudsvc serve: frames in shared memory /%s\n", opt.shm_name.c_str());
   std::fflush(stdout);
   io.run();
   render_thread.join();
+  server.reset();
   if (!render_error.empty()) {
     std::fprintf(stderr, "cloudsvc serve: error: %s\n", render_error.c_str());
     return 1;

@@ -28,7 +28,7 @@ namespace fs = std::filesystem;
 
 constexpr std::string_view kTcpScheme = "tcp://";
 constexpr std::string_view kUnixScheme = "unix:";
-constexpr int kMinPort = 1;
+constexpr int kMinPort = 0;  // 0: the kernel picks a free port
 constexpr int kMaxPort = 65535;
 // Longest Unix socket path: sun_path holds 108 bytes including the terminating NUL.
 constexpr std::size_t kMaxUnixPathBytes = sizeof(sockaddr_un{}.sun_path) - 1;
@@ -36,20 +36,23 @@ static_assert(kMaxUnixPathBytes == 107);
 constexpr std::size_t kMaxShmNameChars = 200;
 constexpr int kMinClients = 1;
 constexpr int kMaxClients = 1024;
+constexpr int kMaxIdleTimeout_s = 86400;
+constexpr int kMinTileBudget_mib = 16;  // one full 1024 x 1024 x 4-channel tile
+constexpr int kMaxTileBudget_mib = 65536;
 
 const std::string kListenForms =
     "expected tcp://HOST:PORT (HOST a numeric IPv4 address, [IPv6 address] or localhost; "
-    "PORT in [1, 65535]) or unix:PATH";
+    "PORT in [0, 65535], 0 = any free port) or unix:PATH";
 
 // ---- --listen --------------------------------------------------------------------------
 
-// PORT of tcp://HOST:PORT, in [1, 65535].
+// PORT of tcp://HOST:PORT, in [0, 65535].
 std::uint16_t parse_port(std::string_view flag, const std::string& text, std::string_view port) {
-  if (port.empty()) fail(flag, text, "missing port after ':' (integer in [1, 65535])");
+  if (port.empty()) fail(flag, text, "missing port after ':' (integer in [0, 65535])");
   const std::optional<int> value = parse_digits(port);
-  if (!value) fail(flag, text, "port " + std::string(port) + " is not an integer in [1, 65535]");
+  if (!value) fail(flag, text, "port " + std::string(port) + " is not an integer in [0, 65535]");
   if (*value < kMinPort || *value > kMaxPort) {
-    fail(flag, text, "port " + std::string(port) + " out of range [1, 65535]");
+    fail(flag, text, "port " + std::string(port) + " out of range [0, 65535]");
   }
   return static_cast<std::uint16_t>(*value);
 }
@@ -78,13 +81,13 @@ ListenAddress parse_tcp_address(std::string_view flag, const std::string& text,
     host = std::string(rest.substr(1, close - 1));
     bracketed = true;
     if (close + 1 == rest.size() || rest[close + 1] != ':') {
-      fail(flag, text, "missing :PORT after the address (integer in [1, 65535])");
+      fail(flag, text, "missing :PORT after the address (integer in [0, 65535])");
     }
     colon = close + 1;
   } else {
     colon = rest.rfind(':');
     if (colon == std::string_view::npos) {
-      fail(flag, text, "missing :PORT after the host (integer in [1, 65535])");
+      fail(flag, text, "missing :PORT after the host (integer in [0, 65535])");
     }
     host = std::string(rest.substr(0, colon));
     if (host.find(':') != std::string::npos) {
@@ -154,7 +157,7 @@ bool conflicts(const ListenAddress& a, const ListenAddress& b) {
     return fs::absolute(a.path, ec).lexically_normal() ==
            fs::absolute(b.path, ec).lexically_normal();
   }
-  if (a.port != b.port || is_ipv6(a) != is_ipv6(b)) return false;
+  if (a.port == 0 || a.port != b.port || is_ipv6(a) != is_ipv6(b)) return false;  // port 0: each gets its own
   return a.host == b.host || is_wildcard(a) || is_wildcard(b);
 }
 
@@ -205,6 +208,20 @@ std::string parse_shm_name(std::string_view flag, const std::string& text) {
   return text;
 }
 
+// --socket-mode/--shm-mode OCTAL: permission bits in [0600, 0777] that keep the owner's
+// read and write (the service itself must use the object) and set nothing else.
+unsigned parse_mode(std::string_view flag, const std::string& text) {
+  const std::string expected = "expected octal permissions like 0600 or 0660 (owner read+write required, at most 0777)";
+  if (text.empty() || text.size() > 4) fail(flag, text, expected);
+  unsigned mode = 0;
+  for (char c : text) {
+    if (c < '0' || c > '7') fail(flag, text, expected);
+    mode = mode * 8 + static_cast<unsigned>(c - '0');
+  }
+  if (mode > 0777 || (mode & 0600) != 0600) fail(flag, text, expected);
+  return mode;
+}
+
 // Seconds since the Unix epoch now, from the system clock.
 double now_unix_s() {
   const auto since_epoch = std::chrono::system_clock::now().time_since_epoch();
@@ -222,6 +239,7 @@ struct ServeCommandLine::Args {
   CLI::App* command = nullptr;
   std::vector<std::string> listen;
   std::string shm, shm_max_size, out_dir, weather, time, size, fov, max_clients, exit_after_frames;
+  std::string socket_mode, shm_mode, idle_timeout, max_view_size, tile_budget, ready_file;
   bool window = false;
 };
 
@@ -231,7 +249,7 @@ void add_endpoint_flags(CLI::App& cmd, ServeCommandLine::Args& args, const Serve
   cmd.add_option("--listen", args.listen,
                  "Address to accept protocol clients on; repeat for several. tcp://HOST:PORT: "
                  "HOST a numeric IPv4 address, an IPv6 address in brackets ([::1]) or localhost "
-                 "(names are not resolved), PORT in [1, 65535]. unix:PATH: a Unix socket, PATH "
+                 "(names are not resolved), PORT in [0, 65535] (0: any free port, see --ready-file). unix:PATH: a Unix socket, PATH "
                  "at most 107 bytes in an existing writable directory. A HOST other than "
                  "loopback (e.g. 0.0.0.0) exposes the service, which has no authentication, to "
                  "the network; default tcp://127.0.0.1:7420 (loopback only)")
@@ -239,6 +257,31 @@ void add_endpoint_flags(CLI::App& cmd, ServeCommandLine::Args& args, const Serve
       ->expected(1)
       ->allow_extra_args(false)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  cmd.add_option("--socket-mode", args.socket_mode,
+                 "Permissions of every Unix socket file, octal (owner read+write required): who "
+                 "on this machine may connect and send poses and weather; e.g. 0660 for a group; "
+                 "default 0600 (the service's user only)")
+      ->type_name("OCTAL");
+  cmd.add_option("--idle-timeout", args.idle_timeout,
+                 "Disconnect a client that has sent nothing (not even a StatsRequest) for this "
+                 "long after its handshake, integer seconds in [0, " + std::to_string(kMaxIdleTimeout_s) +
+                     "], 0 = never; default " + std::to_string(defaults.idle_timeout_s))
+      ->type_name("S");
+  cmd.add_option("--max-view-size", args.max_view_size,
+                 "Largest view a client may set, pixels, width x height, each in [" + std::to_string(kMinImageSide) +
+                     ", " + std::to_string(kMaxImageSide) + "]; default " +
+                     size_text(defaults.max_view_width, defaults.max_view_height))
+      ->type_name("WxH");
+  cmd.add_option("--tile-budget", args.tile_budget,
+                 "Memory for weather-map tiles received but not yet applied by the render thread, "
+                 "all clients together, integer MiB in [" + std::to_string(kMinTileBudget_mib) + ", " +
+                     std::to_string(kMaxTileBudget_mib) + "]; a tile beyond it is refused with Overloaded; default " +
+                     std::to_string(defaults.tile_budget_mib))
+      ->type_name("MIB");
+  cmd.add_option("--ready-file", args.ready_file,
+                 "Once every listener is bound, write the bound addresses (one per line, with the "
+                 "port the kernel chose for tcp://HOST:0) to this file, atomically; default none")
+      ->type_name("PATH");
   cmd.add_option("--max-clients", args.max_clients,
                  "Most clients connected at the same time, integer in [" +
                      std::to_string(kMinClients) + ", " + std::to_string(kMaxClients) +
@@ -251,6 +294,11 @@ void add_sink_flags(CLI::App& cmd, ServeCommandLine::Args& args, const ServeOpti
                  "Publish every frame in the POSIX shared-memory ring /NAME; NAME 1..200 "
                  "characters from letters, digits, '-', '_', '.'; default none")
       ->type_name("NAME");
+  cmd.add_option("--shm-mode", args.shm_mode,
+                 "With --shm: permissions of the shared-memory ring, octal (owner read+write "
+                 "required): who on this machine may read the aircraft's position and the frames; "
+                 "e.g. 0640 for a group; default 0600 (the service's user only)")
+      ->type_name("OCTAL");
   cmd.add_option("--shm-max-size", args.shm_max_size,
                  "With --shm: largest frame the ring holds, pixels, width x height, each in [" +
                      std::to_string(kMinImageSide) + ", " + std::to_string(kMaxImageSide) +
@@ -296,6 +344,19 @@ void apply_endpoints(const ServeCommandLine::Args& a, ServeOptions& opt) {
   if (given(cmd, "--max-clients")) {
     opt.max_clients = parse_integer("--max-clients", a.max_clients, kMinClients, kMaxClients, "clients");
   }
+  if (given(cmd, "--socket-mode")) opt.socket_mode = parse_mode("--socket-mode", a.socket_mode);
+  if (given(cmd, "--idle-timeout"))
+    opt.idle_timeout_s = parse_integer("--idle-timeout", a.idle_timeout, 0, kMaxIdleTimeout_s, "seconds");
+  if (given(cmd, "--max-view-size"))
+    std::tie(opt.max_view_width, opt.max_view_height) = parse_image_size("--max-view-size", a.max_view_size);
+  if (given(cmd, "--tile-budget"))
+    opt.tile_budget_mib = parse_integer("--tile-budget", a.tile_budget, kMinTileBudget_mib, kMaxTileBudget_mib, "MiB");
+  if (given(cmd, "--ready-file")) {
+    const fs::path ready(a.ready_file);
+    if (!ready.has_filename()) fail("--ready-file", a.ready_file, "names a directory, expected a file name");
+    require_writable_directory("--ready-file", a.ready_file, ready.has_parent_path() ? ready.parent_path() : ".");
+    opt.ready_file = a.ready_file;
+  }
 }
 
 void apply_scene(const ServeCommandLine::Args& a, ServeOptions& opt) {
@@ -320,6 +381,10 @@ void apply_scene(const ServeCommandLine::Args& a, ServeOptions& opt) {
 void apply_sinks(const ServeCommandLine::Args& a, ServeOptions& opt) {
   const CLI::App& cmd = *a.command;
   if (given(cmd, "--shm")) opt.shm_name = parse_shm_name("--shm", a.shm);
+  if (given(cmd, "--shm-mode")) {
+    opt.shm_mode = parse_mode("--shm-mode", a.shm_mode);
+    if (opt.shm_name.empty()) fail("--shm-mode", a.shm_mode, "only valid together with --shm");
+  }
   if (given(cmd, "--shm-max-size")) {
     std::tie(opt.shm_max_width, opt.shm_max_height) =
         parse_image_size("--shm-max-size", a.shm_max_size);
@@ -333,6 +398,11 @@ void apply_sinks(const ServeCommandLine::Args& a, ServeOptions& opt) {
     }
     fail("--shm-max-size", a.shm_max_size,
          "smaller than the view size " + size_text(opt.width, opt.height) + " (--size)");
+  }
+  if (opt.width > opt.max_view_width || opt.height > opt.max_view_height) {
+    fail(given(cmd, "--size") ? "--size" : "--max-view-size", given(cmd, "--size") ? a.size : a.max_view_size,
+         "the view " + size_text(opt.width, opt.height) + " exceeds --max-view-size " +
+             size_text(opt.max_view_width, opt.max_view_height));
   }
   opt.window = a.window;
   if (given(cmd, "--out-dir")) {

@@ -2,6 +2,7 @@
 // docs/PROTOCOL.md). Parsed and validated by parse_command_line (render_options.h).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -15,7 +16,7 @@ namespace cloudsvc {
 struct ListenAddress {
   enum class Kind { Tcp, Unix } kind = Kind::Tcp;
   std::string host = "127.0.0.1";  // Tcp: numeric address ("localhost" resolved to 127.0.0.1)
-  std::uint16_t port = 7420;       // Tcp: 1..65535
+  std::uint16_t port = 7420;       // Tcp: 0..65535; 0 = the kernel picks a free port (reported on stdout and in --ready-file)
   std::string path;                // Unix: socket file path (at most 107 bytes)
   std::string text;                // as given, for logs
 };
@@ -35,6 +36,14 @@ struct ServeOptions {
   int height = 360;
   double fov_deg = 60.0;              // --fov: initial horizontal field of view, (0, 170]
   int max_clients = 16;               // --max-clients 1..1024
+  // Access and resource bounds (docs/RELIABILITY.md).
+  unsigned socket_mode = 0600;        // --socket-mode OCTAL: permissions of every Unix socket file
+  unsigned shm_mode = 0600;           // --shm-mode OCTAL: permissions of the shared-memory ring
+  int idle_timeout_s = 60;            // --idle-timeout S: a handshaken client silent this long is dropped; 0 = never
+  int max_view_width = 3840;          // --max-view-size WxH: largest SetView a client may ask for
+  int max_view_height = 2160;
+  int tile_budget_mib = 256;          // --tile-budget MIB: weather tiles accepted but not yet applied, all clients
+  std::string ready_file;             // --ready-file PATH: written (atomically) once every listener is bound
   int exit_after_frames = 0;          // --exit-after-frames N: stop after N frames (tests, benchmarks); 0 = run until signalled
 };
 

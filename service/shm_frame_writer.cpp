@@ -42,7 +42,7 @@ void remove_stale_segment(const std::string& path) {
 
 }  // namespace
 
-ShmFrameWriter::ShmFrameWriter(const std::string& name, int max_width, int max_height, int slot_count)
+ShmFrameWriter::ShmFrameWriter(const std::string& name, int max_width, int max_height, unsigned mode, int slot_count)
     : name_(name), max_width_(max_width), max_height_(max_height), slot_count_(static_cast<std::uint32_t>(slot_count)) {
   if (!valid_name(name)) throw std::runtime_error("--shm " + name + ": use letters, digits, '-', '_', '.'");
   if (max_width < 1 || max_height < 1 || slot_count < 2) throw std::runtime_error("shm: bad ring size");
@@ -51,8 +51,15 @@ ShmFrameWriter::ShmFrameWriter(const std::string& name, int max_width, int max_h
   const std::uint64_t stride =
       CLOUDSVC_SHM_SLOT_HEADER_BYTES + ((static_cast<std::uint64_t>(max_width) * max_height * 8 + 4095) / 4096) * 4096;
   bytes_ = CLOUDSVC_SHM_HEADER_BYTES + stride * slot_count_;
-  const int fd = ::shm_open(path.c_str(), O_RDWR | O_CREAT | O_EXCL, 0644);
+  const int fd = ::shm_open(path.c_str(), O_RDWR | O_CREAT | O_EXCL, 0600);
   if (fd < 0) throw std::runtime_error("shm_open " + path + ": " + std::strerror(errno));
+  // shm_open applied the umask to 0600; fchmod sets exactly `mode`, before any frame is in it.
+  if (::fchmod(fd, static_cast<mode_t>(mode & 0777)) != 0) {
+    const int e = errno;
+    ::close(fd);
+    ::shm_unlink(path.c_str());
+    throw std::runtime_error("fchmod " + path + ": " + std::strerror(e));
+  }
   if (::ftruncate(fd, static_cast<off_t>(bytes_)) != 0) {
     const int e = errno;
     ::close(fd);
@@ -76,6 +83,8 @@ ShmFrameWriter::ShmFrameWriter(const std::string& name, int max_width, int max_h
   h->writer_pid = static_cast<std::uint32_t>(::getpid());
   std::atomic_ref<std::uint32_t>(h->magic).store(CLOUDSVC_SHM_MAGIC, std::memory_order_release);
 }
+
+void ShmFrameWriter::unlink_name() const { ::shm_unlink(shm_path(name_).c_str()); }
 
 ShmFrameWriter::~ShmFrameWriter() {
   if (base_) ::munmap(base_, bytes_);

@@ -20,10 +20,15 @@ struct ShmFrameMeta {
 class ShmFrameWriter {
  public:
   // Creates (or takes over a stale) segment "/name" able to hold frames up to
-  // max_width x max_height in either pixel format. Throws std::runtime_error if the name
-  // is invalid, the segment belongs to another live cloudsvc, or memory cannot be had.
-  ShmFrameWriter(const std::string& name, int max_width, int max_height, int slot_count = 3);
+  // max_width x max_height in either pixel format, with permissions `mode` (exactly:
+  // created owner-only, then set). Throws std::runtime_error if the name is invalid, the
+  // segment belongs to another live cloudsvc, or memory cannot be had.
+  ShmFrameWriter(const std::string& name, int max_width, int max_height, unsigned mode = 0600, int slot_count = 3);
   ~ShmFrameWriter();  // unmaps and removes the segment
+
+  // Removes the name now (readers that have it mapped keep the last whole frame); for a
+  // process about to exit without running destructors.
+  void unlink_name() const;
   ShmFrameWriter(const ShmFrameWriter&) = delete;
   ShmFrameWriter& operator=(const ShmFrameWriter&) = delete;
 

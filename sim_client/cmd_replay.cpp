@@ -101,7 +101,7 @@ class Replay {
       std::filesystem::create_directories(o_.out_dir, ec);
       if (ec) throw RunError("--out " + o_.out_dir.string() + ": cannot create: " + ec.message());
       view.sinks |= protocol::sink::kFile;
-      view.file_dir = o_.out_dir.string();
+      view.file_dir = std::filesystem::absolute(o_.out_dir).string();  // the service's cwd is not ours
       view.file_format = o_.format;
     }
     if (session.offers(protocol::capability::kSinkShm)) view.sinks |= protocol::sink::kShm;

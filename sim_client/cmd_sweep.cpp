@@ -72,7 +72,7 @@ int run_sweep(const SweepOptions& o, const SweepPlan& plan) {
   view.height = o.height;
   view.hfov_deg = o.fov_deg;
   view.sinks = protocol::sink::kFile;  // EXR only: linear radiance for physical statistics
-  view.file_dir = o.out_dir.string();
+  view.file_dir = std::filesystem::absolute(o.out_dir).string();  // the service's cwd is not ours
   view.file_format = protocol::FileFormat::Exr;
   session.set_view(view, [](const std::string& w) { warn(kName, w); });
 

@@ -145,6 +145,13 @@ TEST_F(CliServeOptionsTest, Defaults) {
   EXPECT_DOUBLE_EQ(o.fov_deg, 60.0);
   EXPECT_EQ(o.max_clients, 16);
   EXPECT_EQ(o.exit_after_frames, 0);
+  EXPECT_EQ(o.socket_mode, 0600u) << "only the service's user may connect";
+  EXPECT_EQ(o.shm_mode, 0600u) << "only the service's user may read the frames";
+  EXPECT_EQ(o.idle_timeout_s, 60);
+  EXPECT_EQ(o.max_view_width, 3840);
+  EXPECT_EQ(o.max_view_height, 2160);
+  EXPECT_EQ(o.tile_budget_mib, 256);
+  EXPECT_TRUE(o.ready_file.empty());
 }
 
 TEST_F(CliServeOptionsTest, HelpDocumentsEveryFlagWithUnitsRangesDefaultsAndExample) {
@@ -154,7 +161,8 @@ TEST_F(CliServeOptionsTest, HelpDocumentsEveryFlagWithUnitsRangesDefaultsAndExam
   for (const char* text :
        {"--listen", "--shm", "--shm-max-size", "--window", "--out-dir", "--weather", "--time",
         "--size", "--fov", "--max-clients", "--exit-after-frames", "tcp://HOST:PORT",
-        "unix:PATH", "[1, 65535]", "107 bytes", "localhost", "[::1]", "not resolved",
+        "unix:PATH", "[0, 65535]", "107 bytes", "--socket-mode", "--shm-mode", "0600", "--idle-timeout",
+        "--max-view-size", "default 3840x2160", "--tile-budget", "Overloaded", "--ready-file", "localhost", "[::1]", "not resolved",
         "exposes the service", "default tcp://127.0.0.1:7420", "1..200", "default 1920x1080",
         "[1, 8192]", "pixels", "(0, 170] (degrees)", "default 60", "[1, 1024] (clients)",
         "default 16", "ISO 8601", "UTC", "current time", "broken-cumulus", ".json",
@@ -256,15 +264,18 @@ TEST_F(CliServeOptionsTest, BadSchemes) {
 
 TEST_F(CliServeOptionsTest, BadPorts) {
   for (const char* address :
-       {"tcp://127.0.0.1:0", "tcp://127.0.0.1:65536", "tcp://127.0.0.1:abc", "tcp://127.0.0.1",
+       {"tcp://127.0.0.1:65536", "tcp://127.0.0.1:abc", "tcp://127.0.0.1",
         "tcp://127.0.0.1:", "tcp://127.0.0.1:-1", "tcp://127.0.0.1:+80", "tcp://127.0.0.1:80.5",
-        "tcp://127.0.0.1:99999999999", "tcp://[::1]", "tcp://[::1]:", "tcp://[::1]80",
-        "tcp://[::1]:0"}) {
+        "tcp://127.0.0.1:99999999999", "tcp://[::1]", "tcp://[::1]:", "tcp://[::1]80"}) {
     expect_listen_rejected(address);
   }
   const Outcome r = run({"serve", "--listen", "tcp://127.0.0.1:65536"});
   EXPECT_EQ(r.cmd.error,
-            "cloudsvc serve: --listen tcp://127.0.0.1:65536: port 65536 out of range [1, 65535]");
+            "cloudsvc serve: --listen tcp://127.0.0.1:65536: port 65536 out of range [0, 65535]");
+  // Port 0: the kernel picks (reported in --ready-file); two such addresses do not clash.
+  const ServeOptions any = serve_with({"--listen", "tcp://127.0.0.1:0", "--listen", "tcp://127.0.0.1:0"});
+  ASSERT_EQ(any.listen.size(), 2u);
+  EXPECT_EQ(any.listen[0].port, 0);
 }
 
 TEST_F(CliServeOptionsTest, HostsMustBeNumericOrLocalhost) {
@@ -384,6 +395,16 @@ TEST_F(CliServeOptionsTest, LimitFlags) {
   EXPECT_EQ(serve_with({"--max-clients", "1024"}).max_clients, 1024);
   EXPECT_EQ(serve_with({"--exit-after-frames", "0"}).exit_after_frames, 0);
   EXPECT_EQ(serve_with({"--exit-after-frames", "300"}).exit_after_frames, 300);
+  EXPECT_EQ(serve_with({"--socket-mode", "0660"}).socket_mode, 0660u);
+  EXPECT_EQ(serve_with({"--socket-mode", "777"}).socket_mode, 0777u);
+  EXPECT_EQ(serve_with({"--shm", "x", "--shm-mode", "0640"}).shm_mode, 0640u);
+  EXPECT_EQ(serve_with({"--idle-timeout", "0"}).idle_timeout_s, 0);
+  EXPECT_EQ(serve_with({"--idle-timeout", "5"}).idle_timeout_s, 5);
+  const ServeOptions v = serve_with({"--max-view-size", "1920x1080", "--size", "320x180"});
+  EXPECT_EQ(v.max_view_width, 1920);
+  EXPECT_EQ(v.max_view_height, 1080);
+  EXPECT_EQ(serve_with({"--tile-budget", "16"}).tile_budget_mib, 16);
+  EXPECT_EQ(serve_with({"--ready-file", path("ready")}).ready_file, path("ready"));
 }
 
 TEST_F(CliServeOptionsTest, BadSceneValues) {
@@ -411,6 +432,25 @@ TEST_F(CliServeOptionsTest, BadLimits) {
   for (const char* value : {"-1", "2.5", "abc", "", "99999999999"}) {
     expect_serve_rejected({"--exit-after-frames", value}, "--exit-after-frames");
   }
+  // Permissions must keep the owner's read+write and be octal.
+  for (const char* value : {"0400", "0200", "0000", "1777", "0800", "rw", "", "06000"}) {
+    expect_serve_rejected({"--socket-mode", value}, "--socket-mode");
+    expect_serve_rejected({"--shm", "x", "--shm-mode", value}, "--shm-mode");
+  }
+  expect_serve_rejected({"--shm-mode", "0600"}, "--shm-mode", "0600");  // without --shm
+  for (const char* value : {"-1", "86401", "1.5", "abc", ""}) {
+    expect_serve_rejected({"--idle-timeout", value}, "--idle-timeout");
+  }
+  for (const char* value : {"15", "65537", "abc", ""}) {
+    expect_serve_rejected({"--tile-budget", value}, "--tile-budget");
+  }
+  for (const char* value : {"0x0", "8193x100", "axb"}) {
+    expect_serve_rejected({"--max-view-size", value}, "--max-view-size");
+  }
+  // The initial view must fit the limit clients are held to.
+  expect_serve_rejected({"--max-view-size", "320x180", "--size", "640x360"}, "--size", "640x360");
+  expect_serve_rejected({"--size", "4000x2000"}, "--size", "4000x2000");
+  expect_serve_rejected({"--ready-file", path("no/such/dir/ready")}, "--ready-file");
 }
 
 TEST_F(CliServeOptionsTest, UnknownRepeatedAndStrayArguments) {

@@ -124,7 +124,7 @@ std::vector<Message> sample_messages() {
       no_sinks,
       Error{ErrorCode::InvalidField, "Pose.lat_deg 91 out of range [-90, 90]", 17},
       StatsRequest{},
-      Stats{123456, 29.97, 200000, 1234, 3},
+      Stats{123456, 29.97, 200000, 1234, 3, 812.5},
   };
 }
 
@@ -545,6 +545,7 @@ TEST(ProtocolValidate, OtherMessages) {
   expect_invalid({"request id 0", RenderRequest{0}, "RenderRequest.request_id"});
   expect_invalid({"dropped > received", Stats{1, 30.0, 5, 6, 1}, "Stats.poses_dropped"});
   expect_invalid({"negative fps", Stats{1, -1.0, 5, 1, 1}, "Stats.fps"});
+  expect_invalid({"negative frame time", Stats{1, 1.0, 5, 1, 1, -2.0}, "Stats.frame_in_progress_ms"});
   expect_invalid({"negative render time",
                   with<FrameReady>(sample_frame_ready(), [](FrameReady& f) { f.render_ms = -0.5; }),
                   "FrameReady.render_ms"});

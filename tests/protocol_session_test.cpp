@@ -42,7 +42,7 @@ TEST(ProtocolHandshake, MajorMismatchIsFatal) {
   EXPECT_EQ(e.code, ErrorCode::VersionMismatch);
   EXPECT_TRUE(is_fatal(e.code));
   EXPECT_EQ(e.answers_seq, 3u);
-  EXPECT_EQ(e.text, "client protocol 2.0, service protocol 1.0 (majors must match)");
+  EXPECT_EQ(e.text, "client protocol 2.0, service protocol 1." + std::to_string(kProtocolMinor) + " (majors must match)");
 }
 
 TEST(ProtocolHandshake, FirstMessageMustBeHello) {
@@ -157,11 +157,13 @@ TEST(ProtocolErrors, NamesAndFatality) {
   EXPECT_EQ(error_code_name(ErrorCode::InvalidField), "InvalidField");
   EXPECT_EQ(error_code_name(ErrorCode{999}), "Unknown");
   int fatal = 0;
-  for (int c = 0; c <= static_cast<int>(ErrorCode::Internal); ++c) {
+  for (int c = 0; c <= static_cast<int>(ErrorCode::IdleTimeout); ++c) {
     EXPECT_NE(error_code_name(static_cast<ErrorCode>(c)), "Unknown") << c;
     fatal += is_fatal(static_cast<ErrorCode>(c));
   }
-  EXPECT_EQ(fatal, 4);
+  EXPECT_EQ(fatal, 5);
+  EXPECT_FALSE(is_fatal(ErrorCode::Overloaded)) << "a refused request leaves the connection open";
+  EXPECT_TRUE(is_fatal(ErrorCode::IdleTimeout));
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 
 #include <OpenImageIO/imagebuf.h>
 
+#include <atomic>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -15,6 +16,7 @@
 #include <thread>
 
 #include "service_test_support.h"
+#include "shm_test_ring.h"
 #include "sim_client/service_connection.h"
 
 namespace cloudsvc::test {
@@ -68,10 +70,10 @@ fs::path write_log(const fs::path& dir) {
 }
 
 TEST(SimClientCli, ReplayOfAFivePoseCsvWritesFiveFramesAndASummary) {
-  ServiceProcess svc("simcli_replay");
+  ServiceProcess svc("simcli_replay", {}, ServiceProcess::Tcp::No, ServiceProcess::OutDir::Yes);
   ASSERT_TRUE(svc.running());
   const fs::path log = write_log(svc.dir());
-  const fs::path frames = svc.dir() / "frames" / "nested";  // created by sim_client
+  const fs::path frames = svc.out_dir() / "frames" / "nested";  // created by sim_client
   const fs::path sheet = svc.dir() / "sheet.png";
   const RunResult r = run_sim_client(svc.dir(), "replay " + log.string() + " --connect " + svc.address() + " --out " +
                                                     frames.string() + " --size 64x36 --fps 1 --contact-sheet " +
@@ -108,14 +110,14 @@ TEST(SimClientCli, RealtimeReplayReportsFramesAgainstPoses) {
 }
 
 TEST(SimClientCli, SweepOfThreePosesWritesAManifestWithFiniteStatistics) {
-  ServiceProcess svc("simcli_sweep");
+  ServiceProcess svc("simcli_sweep", {}, ServiceProcess::Tcp::No, ServiceProcess::OutDir::Yes);
   ASSERT_TRUE(svc.running());
   const fs::path sweep = svc.dir() / "sweep.json";
   std::ofstream(sweep) << R"({"time": "2026-06-21T12:00:00Z", "poses": [
       {"lat": 47.45, "lon": 8.56, "alt": 2500, "heading": 270, "pitch": 5, "weather": "clear"},
       {"lat": 47.45, "lon": 8.56, "alt": 2500, "heading": 270, "pitch": 5, "weather": "overcast-stratus"},
       {"lat": 47.45, "lon": 8.56, "alt": 600, "heading": 90, "pitch": 10}]})";
-  const fs::path out = svc.dir() / "sweep";
+  const fs::path out = svc.out_dir() / "sweep";
   const RunResult r = run_sim_client(svc.dir(), "sweep " + sweep.string() + " --connect " + svc.address() + " --out " +
                                                     out.string() + " --size 64x36 --png");
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -245,6 +247,45 @@ TEST(SimClientCli, WatchCountsFramesForOneSecond) {
   EXPECT_LE(mean_ms, max_ms);
   EXPECT_LT(max_ms, 500.0);
   EXPECT_EQ(svc.stop(), 0);
+}
+
+// A ring whose header claims 2 slots of 2^63 bytes: 2^63 x 2 wraps to 0 in 64 bits, so an
+// unchecked reader takes the ring for 8 KiB and, at the first new frame, reads slot 1 far
+// outside the mapping. While `watch` runs, this test publishes frames into the ring as a
+// service would; `watch` must refuse the ring with one line naming the fields (exit 1),
+// not die of SIGSEGV.
+TEST(SimClientCli, WatchRefusesARingWhoseSlotSizesWrapAround) {
+  const fs::path dir = fs::temp_directory_path() / ("simcli_hostile_ring_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  cloudsvc_shm_header h{};
+  h.magic = CLOUDSVC_SHM_MAGIC;
+  h.version = CLOUDSVC_SHM_VERSION;
+  h.header_bytes = CLOUDSVC_SHM_HEADER_BYTES;
+  h.slot_count = 2;
+  h.slot_stride = std::uint64_t{1} << 63;
+  h.max_width = 16;
+  h.max_height = 16;
+  h.latest_frame = 1;
+  h.latest_slot = 1;
+  TestRing ring("watch-wrap", h, 2 * CLOUDSVC_SHM_HEADER_BYTES);
+  std::atomic<bool> done{false};
+  RunResult r;
+  std::thread watcher([&] {
+    r = run_sim_client(dir, "watch --shm " + ring.name() + " --seconds 1");
+    done = true;
+  });
+  std::atomic_ref<std::uint64_t> latest(ring.header()->latest_frame);
+  while (!done) {  // a new frame every 5 ms until the watcher has exited, however it exits
+    latest.fetch_add(1);
+    std::this_thread::sleep_for(5ms);
+  }
+  watcher.join();
+  EXPECT_EQ(r.exit_code, 1) << "stdout: " << r.out << " stderr: " << r.err;
+  EXPECT_EQ(lines_of(r.err).size(), 1u) << r.err;
+  EXPECT_EQ(r.err.rfind("sim_client watch: --shm " + ring.name() + ": ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find("slot_stride"), std::string::npos) << r.err;
+  std::error_code ec;
+  fs::remove_all(dir, ec);
 }
 
 TEST(SimClientCli, BadInputExitsTwoAndConnectionFailureExitsOneWithOneLine) {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "weather/weather_timeline.h"
 #include "weather_tile_support.h"
@@ -73,7 +74,51 @@ TEST(WeatherTimeline, FutureForecastBlendsIn) {
   EXPECT_NEAR(blend_at(now + 600.0 - 15.0), 0.7f, 1e-5);
   EXPECT_NEAR(blend_at(now + 600.0), 0.9f, 1e-6);
   EXPECT_NEAR(blend_at(now + 900.0), 0.9f, 1e-6);
-  EXPECT_EQ(tl.keyframe_count(), 1u) << "keyframes in the past are dropped";
+  EXPECT_NEAR(blend_at(now), 0.5f, 1e-6) << "going back shows the weather valid then";
+}
+
+double blended_coverage(const WeatherTimeline& tl, double t) {
+  const auto b = tl.at(t);
+  EXPECT_TRUE(b.from && b.to);
+  EXPECT_TRUE(std::isfinite(b.weight) && b.weight >= 0.0f && b.weight <= 1.0f) << "t " << t;
+  return at(*b.from, 45, 10) * (1 - b.weight) + at(*b.to, 45, 10) * b.weight;
+}
+
+// Three forecasts (10:30, 11:00, 11:30), a pose at 10:45, then one at 10:00 (a simulator
+// that resets its clock): every time renders, before, between, after and far from the
+// keyframes, in any order. Used to be undefined behaviour (std::prev of begin()) that hung
+// the service's render thread.
+TEST(WeatherTimeline, AnyTimeInAnyOrder) {
+  const double t1030 = 37800.0, t1100 = 39600.0, t1130 = 41400.0;
+  WeatherTimeline tl(flat_map(0.5f));
+  const double now = 36000.0;  // 10:00
+  tl.apply(coverage_tile(40, 0, 50, 20, 0.1f, t1030), now);
+  tl.apply(coverage_tile(40, 0, 50, 20, 0.2f, t1100), now);
+  tl.apply(coverage_tile(40, 0, 50, 20, 0.3f, t1130), now);
+  ASSERT_EQ(tl.keyframe_count(), 4u);
+  EXPECT_NEAR(blended_coverage(tl, 38700.0), 0.15f, 1e-5);  // 10:45
+  EXPECT_NEAR(blended_coverage(tl, now), 0.5f, 1e-6);       // back to 10:00: the base map
+  EXPECT_NEAR(blended_coverage(tl, t1130 + 1e6), 0.3f, 1e-6);
+  EXPECT_NEAR(blended_coverage(tl, -1e12), 0.5f, 1e-6);
+  EXPECT_NEAR(blended_coverage(tl, t1100), 0.2f, 1e-6);
+  const double inf = std::numeric_limits<double>::infinity();
+  for (double t : {std::nan(""), inf, -inf, 1e300, -1e300}) blended_coverage(tl, t);
+}
+
+// Past keyframes are dropped only at the limit, oldest first; a time before the oldest one
+// kept uses it. Each new tile still lands (and is seen) at its valid-at time.
+TEST(WeatherTimeline, BeforeTheOldestKeyframeKept) {
+  WeatherTimeline tl(flat_map(0.5f));
+  const std::size_t n = WeatherTimeline::kMaxKeyframes + 3;
+  for (std::size_t i = 1; i <= n; ++i) {
+    const double valid = 1000.0 * static_cast<double>(i);
+    tl.apply(coverage_tile(40, 0, 50, 20, 0.05f * static_cast<float>(i), valid), valid - 1.0);
+    EXPECT_LE(tl.keyframe_count(), WeatherTimeline::kMaxKeyframes);
+    EXPECT_NEAR(blended_coverage(tl, valid), 0.05f * static_cast<float>(i), 1e-5);
+  }
+  EXPECT_EQ(tl.keyframe_count(), WeatherTimeline::kMaxKeyframes);
+  const double oldest_kept = 0.05f * static_cast<float>(n - WeatherTimeline::kMaxKeyframes + 1);
+  EXPECT_NEAR(blended_coverage(tl, 0.0), oldest_kept, 1e-5) << "before every keyframe: the oldest kept";
 }
 
 // A tile valid now (or earlier) does not pop: it arrives over the transition.

@@ -66,15 +66,27 @@ void WeatherTimeline::reset(WeatherMap base) {
   frames_[-std::numeric_limits<double>::infinity()] = Keyframe{std::move(base), next_version_++};
 }
 
+std::map<double, WeatherTimeline::Keyframe>::const_iterator WeatherTimeline::keyframe_in_use(double t) const {
+  // upper_bound(t) is the first keyframe valid after t; the one before it is in use. When
+  // t precedes every keyframe (a clock set back past the oldest one kept), the oldest one
+  // stands for all earlier times. frames_ is never empty (reset and the constructor add one).
+  auto after = frames_.upper_bound(t);
+  return after == frames_.begin() ? after : std::prev(after);
+}
+
 void WeatherTimeline::apply(const MapTile& tile, double now_utc_s, double transition_s) {
   const double when = tile.valid_at_utc_s > now_utc_s ? tile.valid_at_utc_s : now_utc_s + transition_s;
   auto it = frames_.find(when);
   if (it == frames_.end()) {
-    if (frames_.size() >= kMaxKeyframes) {  // merge into the farthest keyframe instead
+    // At the limit, the oldest keyframe goes if it is no longer in use at now; otherwise
+    // (every keyframe is current or ahead) the tile merges into the farthest one.
+    if (frames_.size() >= kMaxKeyframes && frames_.begin() != keyframe_in_use(now_utc_s)) frames_.erase(frames_.begin());
+    if (frames_.size() >= kMaxKeyframes) {
       it = std::prev(frames_.end());
     } else {
-      auto before = std::prev(frames_.upper_bound(when));
-      it = frames_.emplace(when, Keyframe{before->second.map, 0}).first;
+      // A new keyframe starts as a copy of the state valid at `when`.
+      const Keyframe& before = keyframe_in_use(when)->second;
+      it = frames_.emplace(when, Keyframe{before.map, 0}).first;
     }
   }
   apply_tile(it->second.map, tile);
@@ -87,14 +99,12 @@ void WeatherTimeline::apply(const MapTile& tile, double now_utc_s, double transi
   }
 }
 
-WeatherTimeline::Blend WeatherTimeline::at(double t) {
-  // Drop keyframes before the one in use.
-  auto cur = std::prev(frames_.upper_bound(t));
-  frames_.erase(frames_.begin(), cur);
+WeatherTimeline::Blend WeatherTimeline::at(double t) const {
+  const auto cur = keyframe_in_use(t);
   Blend b;
   b.from = &cur->second.map;
   b.from_version = cur->second.version;
-  auto next = std::next(cur);
+  const auto next = std::next(cur);
   if (next == frames_.end()) {
     b.to = b.from;
     b.to_version = b.from_version;
@@ -103,9 +113,11 @@ WeatherTimeline::Blend WeatherTimeline::at(double t) {
   b.to = &next->second.map;
   b.to_version = next->second.version;
   // Linear in time between the two valid-at times; the base keyframe (valid since
-  // forever) fades over the transition before the next one.
+  // forever) fades over the transition before the next one. Before the oldest keyframe
+  // (t < cur->first) the weight clamps to 0; a non-finite t gets 0, never NaN.
   const double span = std::isfinite(cur->first) ? next->first - cur->first : kDefaultTransition_s;
-  b.weight = static_cast<float>(std::clamp(1.0 - (next->first - t) / span, 0.0, 1.0));
+  const double w = 1.0 - (next->first - t) / span;
+  b.weight = std::isfinite(w) ? static_cast<float>(std::clamp(w, 0.0, 1.0)) : 0.0f;
   return b;
 }
 

@@ -3,10 +3,13 @@
 // keyframes around the current time, so a new forecast fades in instead of popping.
 //
 // A tile (a georeferenced patch of some channels) updates the keyframe at its valid-at
-// time; a missing keyframe is created as a copy of the latest one before it. A tile valid
+// time; a missing keyframe is created as a copy of the state valid then. A tile valid
 // at or before "now" would pop, so it goes into a keyframe at now + transition instead.
-// Keyframes older than the one in use are dropped; at most kMaxKeyframes are kept (the
-// farthest future ones are merged into the last).
+// Any time may be asked for, in any order (a simulator may set its clock back or replay
+// an older flight): keyframes in the past are kept, so going back shows the weather that
+// was valid then; times before the oldest keyframe kept use that one. At most
+// kMaxKeyframes are kept: at the limit the oldest keyframe no longer in use at "now" is
+// dropped, and when every keyframe is current or ahead the new tile merges into the last.
 #pragma once
 
 #include <cstdint>
@@ -55,8 +58,9 @@ class WeatherTimeline {
     float weight = 0.0f;               // 0 -> from, 1 -> to
     std::uint64_t from_version = 0, to_version = 0;  // change counters, for GPU uploads
   };
-  // The keyframes around t; drops keyframes no longer needed.
-  Blend at(double t_utc_s);
+  // The keyframes around t, for any t (finite or not, before, between or after the
+  // keyframes); the weight is always finite, in [0, 1].
+  Blend at(double t_utc_s) const;
 
   std::size_t keyframe_count() const { return frames_.size(); }
 
@@ -65,7 +69,10 @@ class WeatherTimeline {
     WeatherMap map;
     std::uint64_t version = 0;
   };
-  std::map<double, Keyframe> frames_;  // by valid-at UTC; the first entry covers all earlier times
+  // The keyframe whose validity holds t: the last one at or before t, else the oldest.
+  std::map<double, Keyframe>::const_iterator keyframe_in_use(double t) const;
+
+  std::map<double, Keyframe> frames_;  // by valid-at UTC, never empty; the first entry covers all earlier times
   std::uint64_t next_version_ = 1;
 };
 

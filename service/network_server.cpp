@@ -32,8 +32,10 @@ bool someone_listens(const std::string& path) {
   return !ec;  // ECONNREFUSED: a stale file nobody listens on
 }
 
-// Binds and listens on path with permissions `mode`. The file is created while the umask
-// denies group and others everything, so it is never reachable by them before chmod.
+// Binds and listens on path with permissions `mode`. The socket is bound under a
+// temporary name in the same folder while the umask denies group and others everything,
+// given its mode, made to listen, and only then renamed to path: whoever sees the file at
+// path can connect, and nobody but the owner could reach it before its mode was set.
 std::unique_ptr<Local::acceptor> bind_unix_socket(asio::io_context& io, const std::string& path, unsigned mode) {
   std::error_code fec;
   if (std::filesystem::is_socket(path, fec)) {
@@ -42,19 +44,26 @@ std::unique_ptr<Local::acceptor> bind_unix_socket(asio::io_context& io, const st
                                "(stop that service first, or choose another path)");
     std::filesystem::remove(path, fec);  // stale socket file of a service that is gone
   }
+  // sun_path holds 107 bytes: a path too long for the temporary suffix is bound directly.
+  std::string bind_path = path + "." + std::to_string(::getpid()) + ".tmp";
+  if (bind_path.size() > 107) bind_path = path;
+  ::unlink(bind_path.c_str());  // a leftover of an earlier process with this pid
   auto acc = std::make_unique<Local::acceptor>(io);
   acc->open(Local());
   const mode_t old_umask = ::umask(077);  // single-threaded here: the render thread starts later
   asio::error_code ec;
-  acc->bind(Local::endpoint(path), ec);
+  acc->bind(Local::endpoint(bind_path), ec);
   ::umask(old_umask);
   if (ec) throw std::runtime_error(ec.message());
-  if (::chmod(path.c_str(), static_cast<mode_t>(mode)) != 0) {
+  auto fail = [&](const std::string& what) {
     const std::string why = std::strerror(errno);
-    ::unlink(path.c_str());
-    throw std::runtime_error("cannot set the socket's permissions: " + why);
-  }
-  acc->listen();
+    ::unlink(bind_path.c_str());
+    throw std::runtime_error(what + ": " + why);
+  };
+  if (::chmod(bind_path.c_str(), static_cast<mode_t>(mode)) != 0) fail("cannot set the socket's permissions");
+  acc->listen(asio::socket_base::max_listen_connections, ec);
+  if (ec) fail("listen: " + ec.message());
+  if (bind_path != path && ::rename(bind_path.c_str(), path.c_str()) != 0) fail("cannot move the socket into place");
   return acc;
 }
 }  // namespace

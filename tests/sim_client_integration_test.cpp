@@ -220,12 +220,15 @@ TEST(SimClientCli, WatchCountsFramesForOneSecond) {
   };
   render_one();  // the first frame of a service also builds its weather volumes: slow
   RunResult watch;
-  std::thread watcher([&] { watch = run_sim_client(svc.dir(), "watch --shm " + svc.shm_name() + " --seconds 1"); });
-  std::this_thread::sleep_for(300ms);  // let the watcher map the ring
-  // Frames while it watches: one pose at a time until the watcher has finished.
-  const auto until = std::chrono::steady_clock::now() + 1500ms;
+  std::atomic<bool> watching{true};
+  std::thread watcher([&] {
+    watch = run_sim_client(svc.dir(), "watch --shm " + svc.shm_name() + " --seconds 1");
+    watching = false;
+  });
+  // Frames while it watches: one pose at a time until the watcher has finished, however
+  // long it takes to start on a loaded machine.
   const int before = sent;
-  while (std::chrono::steady_clock::now() < until) render_one();
+  while (watching) render_one();
   watcher.join();
   ASSERT_EQ(watch.exit_code, 0) << watch.err;
   const auto lines = lines_of(watch.out);

@@ -182,14 +182,16 @@ class AcmiParser {
       fail(r.line, "first T= of object " + describe(id_) +
                        " leaves longitude, latitude or altitude empty");
     if (auto p = range_problem("latitude", *lat_, -90.0, 90.0)) fail(r.line, *p);
-    if (auto p = range_problem("longitude", *lon_, -180.0, 180.0)) fail(r.line, *p);
+    // Longitudes are ReferenceLongitude + offset, which runs past +-180 on a flight across
+    // the antimeridian (Tacview itself wraps them): any finite sum is a longitude.
+    if (auto p = finite_problem("longitude", *lon_)) fail(r.line, *p);
     if (auto p = range_problem("altitude", *alt_, kMinAltitude_m, kMaxAltitude_m))
       fail(r.line, *p);
     if (auto p = range_problem("pitch", pitch_, -90.0, 90.0)) fail(r.line, *p);
 
     PoseSample s;
     s.unix_time_s = r.time_s;  // relative until build_track
-    s.position = {*lat_, *lon_, *alt_};
+    s.position = {*lat_, wrap_lon_deg(*lon_), *alt_};
     s.attitude = {wrap_deg_360(yaw_), pitch_, wrap_deg_180(roll_)};
     if (!samples_.empty() && samples_.back().unix_time_s == r.time_s) {
       samples_.back() = s;  // several T= in one frame: the last wins

@@ -15,8 +15,10 @@
 //  - takes Roll/Pitch/Yaw as roll/pitch/heading. Samples recorded without orientation (an
 //    object written with the 3- or 5-field forms only) get the attitude derived from the
 //    track (track_attitude.h). velocity_enu_mps is always derived from the track.
-// Checked for the chosen object: latitude in [-90, 90], longitude in [-180, 180] after the
-// reference is added, altitude in [kMinAltitude_m, kMaxAltitude_m], pitch in [-90, 90].
+// Checked for the chosen object, after the reference is added: latitude in [-90, 90]
+// (not wrapped: past a pole is an error), longitude finite and wrapped into [-180, 180)
+// (Tacview coordinates are reference + offset and run past +-180 on a flight across the
+// antimeridian), altitude in [kMinAltitude_m, kMaxAltitude_m], pitch in [-90, 90].
 #pragma once
 
 #include <string>

@@ -97,6 +97,25 @@ long long parse_flag_integer(std::string_view flag, const std::string& text, lon
   return v;
 }
 
+double parse_flag_duration(std::string_view flag, const std::string& text, double max_s) {
+  double unit_s = 1.0;
+  std::string number = text;
+  if (!number.empty()) {
+    const char last = number.back();
+    if (last == 's' || last == 'm' || last == 'h') {
+      unit_s = last == 'h' ? 3600.0 : last == 'm' ? 60.0 : 1.0;
+      number.pop_back();
+    }
+  }
+  const std::string expected = "expected seconds (90 or 90s), minutes (10m) or hours (1.5h), in (0, " +
+                               number_text(max_s) + "] s";
+  const std::optional<double> v = strict_finite(number);
+  if (!v) fail_flag(flag, text, expected);
+  const double seconds = *v * unit_s;
+  if (!(seconds > 0.0) || seconds > max_s) fail_flag(flag, text, "out of range: " + expected);
+  return seconds;
+}
+
 std::pair<std::uint32_t, std::uint32_t> parse_flag_size(std::string_view flag, const std::string& text,
                                                         std::uint32_t max_side) {
   const std::string expected = "expected WxH in pixels, each side in [1, " + std::to_string(max_side) + "], e.g. 640x360";

@@ -45,6 +45,9 @@ double parse_flag_number(std::string_view flag, const std::string& text, const N
 // A whole number in [min, max] (decimal digits only).
 long long parse_flag_integer(std::string_view flag, const std::string& text, long long min, long long max,
                              std::string_view unit);
+// A duration: a number of seconds, optionally with a unit suffix s, m (minutes) or h
+// ("90", "90s", "10m", "1.5h"), in (0, max_s] seconds; returns seconds.
+double parse_flag_duration(std::string_view flag, const std::string& text, double max_s);
 // "WxH" (or "WXH"), each side in [1, max_side] pixels.
 std::pair<std::uint32_t, std::uint32_t> parse_flag_size(std::string_view flag, const std::string& text,
                                                         std::uint32_t max_side = 8192);

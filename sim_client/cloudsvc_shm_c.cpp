@@ -1,15 +1,19 @@
-// C ABI wrapper of ShmFrameReader (sim_client/cloudsvc_shm.h).
+// C ABI wrapper of ShmFrameReader (sim_client/cloudsvc_shm.h). No C++ exception crosses
+// the C boundary: each becomes a return code and a message.
 #include "sim_client/cloudsvc_shm.h"
 
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <stdexcept>
+#include <string>
 
 #include "sim_client/shm_frame_reader.h"
 
 struct cloudsvc_shm_reader {
   cloudsvc::client::ShmFrameReader reader;
   cloudsvc::client::ShmFrame frame;
+  std::string last_error;  // of the last -3
   explicit cloudsvc_shm_reader(const char* name) : reader(name) {}
 };
 
@@ -26,11 +30,19 @@ extern "C" cloudsvc_shm_reader* cloudsvc_shm_open(const char* name, char* error,
 extern "C" int cloudsvc_shm_read_latest(cloudsvc_shm_reader* r, uint64_t after_frame, cloudsvc_shm_slot* info,
                                         void* pixels, size_t capacity) {
   if (!r || !info) return -2;
-  if (!r->reader.read_latest(after_frame, r->frame)) return 0;
+  r->last_error.clear();
+  try {
+    if (!r->reader.read_latest(after_frame, r->frame)) return 0;
+  } catch (const std::exception& e) {  // a corrupt ring, or no memory for the copy
+    r->last_error = e.what();
+    return -3;
+  }
   *info = r->frame.info;
   if (!pixels || capacity < r->frame.pixels.size()) return -1;
   std::memcpy(pixels, r->frame.pixels.data(), r->frame.pixels.size());
   return 1;
 }
+
+extern "C" const char* cloudsvc_shm_last_error(const cloudsvc_shm_reader* r) { return r ? r->last_error.c_str() : ""; }
 
 extern "C" void cloudsvc_shm_close(cloudsvc_shm_reader* r) { delete r; }

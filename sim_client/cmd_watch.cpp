@@ -76,7 +76,13 @@ int run_watch(const WatchOptions& o) {
     if (latest != stats.newest()) {
       // A new frame: its slot header (no pixels) for size, format and publish time.
       const std::uint64_t after = latest > described ? described : 0;  // a restarted service counts from 1
-      if (reader->read_latest_header(after, newest)) {
+      bool got = false;
+      try {
+        got = reader->read_latest_header(after, newest);
+      } catch (const std::exception& e) {  // a corrupt ring (ShmFrameReader checks every size)
+        throw RunError("--shm " + o.shm + ": " + e.what());
+      }
+      if (got) {
         described = newest.frame_number;
         stats.record_latency(static_cast<double>(realtime_ns() - newest.publish_unix_ns) / 1e6);
       }

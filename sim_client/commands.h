@@ -23,6 +23,7 @@ Command add_replay_command(CLI::App& app);   // cmd_replay.cpp
 Command add_sweep_command(CLI::App& app);    // cmd_sweep.cpp
 Command add_weather_command(CLI::App& app);  // cmd_weather.cpp
 Command add_watch_command(CLI::App& app);    // cmd_watch.cpp
+Command add_soak_command(CLI::App& app);     // cmd_soak.cpp
 
 // Shared flag text and checks of the commands (cmd_common.cpp).
 inline constexpr const char* kDefaultAddress = "tcp://127.0.0.1:7420";

@@ -21,6 +21,11 @@ constexpr std::array<const char*, 7> kColumns = {"time",    "lat",   "lon", "alt
                                                  "heading", "pitch", "roll"};
 enum Column { kTime, kLat, kLon, kAlt, kHeading, kPitch, kRoll };
 
+// Longitudes accepted, degrees: one turn either way, wrapped into [-180, 180). A track
+// counted on past +-180 (across the antimeridian) or the 0..360 convention reads as meant;
+// a larger magnitude is not a longitude anyone writes but a corrupt value.
+constexpr double kMaxLongitude_deg = 360.0;
+
 // Unix times of 1900-01-01T00:00:00Z and 2200-01-01T00:00:00Z: the ISO parser's years.
 constexpr double kMinUnixTime = -2208988800.0;
 constexpr double kEndUnixTime = 7258118400.0;
@@ -143,12 +148,13 @@ class CsvParser {
     const double roll = number(line, f, kRoll);
     std::optional<std::string> p;
     if ((p = range_problem("lat", s.position.lat_deg, -90.0, 90.0)) ||
-        (p = range_problem("lon", s.position.lon_deg, -180.0, 180.0)) ||
+        (p = range_problem("lon", s.position.lon_deg, -kMaxLongitude_deg, kMaxLongitude_deg)) ||
         (p = range_problem("alt", s.position.alt_m, kMinAltitude_m, kMaxAltitude_m)) ||
         (p = finite_problem("heading", heading)) ||
         (p = range_problem("pitch", s.attitude.pitch_deg, -90.0, 90.0)) ||
         (p = finite_problem("roll", roll)))
       fail(line, *p);
+    s.position.lon_deg = wrap_lon_deg(s.position.lon_deg);
     s.attitude.heading_deg = wrap_deg_360(heading);
     s.attitude.roll_deg = wrap_deg_180(roll);
 

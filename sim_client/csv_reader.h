@@ -12,10 +12,12 @@
 //    style ("a,b", "say ""hi""") with no line breaks inside.
 //  - time: ISO 8601 UTC ("2024-05-01T12:00:00Z", "...T12:00:00.25+00:00") or seconds since
 //    the Unix epoch (a plain number), per row; years 1900..2199; strictly increasing.
-//  - lat, lon: degrees WGS84, [-90, 90] and [-180, 180]. alt: metres above the WGS84
-//    ellipsoid, [kMinAltitude_m, kMaxAltitude_m]. heading: true, clockwise from north
-//    (wrapped to [0, 360)); pitch: nose up positive, [-90, 90]; roll: right wing down
-//    positive (wrapped to [-180, 180)); degrees.
+//  - lat, lon: degrees WGS84. lat in [-90, 90] (not wrapped). lon in [-360, 360], wrapped
+//    into [-180, 180): a track counted on past +-180 across the antimeridian, or written in
+//    the 0..360 convention, reads as it is meant; beyond one turn is an error.
+//    alt: metres above the WGS84 ellipsoid, [kMinAltitude_m, kMaxAltitude_m]. heading:
+//    true, clockwise from north (wrapped to [0, 360)); pitch: nose up positive, [-90, 90];
+//    roll: right wing down positive (wrapped to [-180, 180)); degrees.
 //  - velocity_enu_mps is left empty.
 #pragma once
 

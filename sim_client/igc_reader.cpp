@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "geodesy/utc_time.h"
+#include "sim_client/angles.h"
 #include "sim_client/flight_log_error.h"
 #include "sim_client/text_input.h"
 
@@ -129,10 +130,14 @@ class IgcParser {
       fail(line, std::string(name) + " minutes " + std::to_string(min) + " out of range [0, 60)");
     const double value = deg + (min + milli / 1000.0) / 60.0;
     const double limit = is_lat ? 90.0 : 180.0;
-    if (value > limit)
+    // Latitudes end at the poles. Longitude degrees 180 with minutes (180 00.060'E) are
+    // past the antimeridian, the same point as 179 59.940'W: wrapped below. 181 or more
+    // is not a recorder counting on but garbage.
+    if (is_lat ? value > limit : deg > 180)
       fail(line, std::string(name) + " " + format_number(value) + " deg out of range [-" +
                      format_number(limit) + ", " + format_number(limit) + "]");
-    return hemi == minus ? -value : value;
+    const double signed_value = hemi == minus ? -value : value;
+    return is_lat ? signed_value : wrap_lon_deg(signed_value);
   }
 
   void parse_fix(std::size_t line, std::string_view rec, bool is_last_record) {

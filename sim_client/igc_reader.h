@@ -9,6 +9,10 @@
 //  - B records, fixed columns (0-based byte offsets):
 //      [1,7) HHMMSS UTC   [7,15) DDMMmmm N/S   [15,24) DDDMMmmm E/W   [24] validity A/V
 //      [25,30) pressure altitude (m, ISA 1013.25 hPa)   [30,35) GNSS altitude (m)
+//    Latitude degrees 00..90 (at most 90 00.000'). Longitude degrees 000..180; 180 with
+//    non-zero minutes (a recorder counting on past the antimeridian) is the point that
+//    many minutes past it on the other side and is wrapped there; every longitude is
+//    returned in [-180, 180) (180 00.000'E is -180).
 //    Bytes after 35 are the extensions declared by the I record (FXA, ENL, LAD/LOD, ...):
 //    they are ignored, so unknown or malformed I records never matter.
 //  - All other records (C, D, E, F, G, J, K, L, H other than the date) are ignored.

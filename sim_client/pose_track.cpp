@@ -21,7 +21,8 @@ void interpolate_horizontal(const geo::Geodetic& a, const geo::Geodetic& b, doub
   const glm::dvec3 pb = geo::geodetic_to_ecef({b.lat_deg, b.lon_deg, 0.0});
   const geo::Geodetic g = geo::ecef_to_geodetic(pa + (pb - pa) * f);
   lat_deg = g.lat_deg;
-  lon_deg = g.lon_deg;
+  // GeographicLib gives +180 for a point on the antimeridian; the readers' range is [-180, 180).
+  lon_deg = wrap_lon_deg(g.lon_deg);
 }
 
 // An ENU vector given at `at`, expressed in ECEF.

@@ -32,7 +32,8 @@ struct PoseTrack {
   //  - horizontal position along the straight ECEF chord between the two sample points
   //    (taken at zero height) and mapped back to latitude/longitude, so the path takes the
   //    short way across the antimeridian and over or near a pole; the height is
-  //    interpolated separately (linear in metres) so long chords do not sag;
+  //    interpolated separately (linear in metres) so long chords do not sag; the longitude
+  //    is in [-180, 180) (a point on the antimeridian is -180), the readers' range;
   //  - heading and roll along the shortest arc (heading wrapped to [0, 360), roll to
   //    [-180, 180)), pitch linearly;
   //  - velocity, when both samples have one, in ECEF and expressed in the ENU frame of the

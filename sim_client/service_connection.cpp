@@ -8,6 +8,7 @@
 #include "protocol/codec.h"
 #include "protocol/framing.h"
 #include "protocol/handshake.h"
+#include "sim_client/service_address.h"
 
 namespace cloudsvc::client {
 
@@ -27,33 +28,23 @@ struct ServiceConnection::Impl {
 
   void connect(const std::string& address, std::chrono::milliseconds timeout) {
     asio::error_code ec;
-    if (address.rfind("tcp://", 0) == 0) {
-      const std::string hp = address.substr(6);
-      const auto colon = hp.rfind(':');
-      if (colon == std::string::npos) throw ConnectionError(address + ": expected tcp://HOST:PORT");
-      std::string host = hp.substr(0, colon);
-      if (host.size() > 2 && host.front() == '[' && host.back() == ']') host = host.substr(1, host.size() - 2);
-      if (host == "localhost") host = "127.0.0.1";
-      const auto addr = asio::ip::make_address(host, ec);
+    const ServiceAddress a = parse_service_address(address);
+    if (a.kind == ServiceAddress::Kind::Tcp) {
+      const auto addr = asio::ip::make_address(a.host, ec);
       if (ec) throw ConnectionError(address + ": bad host: " + ec.message());
-      int port = 0;
-      try { port = std::stoi(hp.substr(colon + 1)); } catch (...) { port = 0; }
-      if (port < 1 || port > 65535) throw ConnectionError(address + ": bad port");
       Tcp::socket s(io);
-      s.async_connect(Tcp::endpoint(addr, static_cast<unsigned short>(port)), [&](const asio::error_code& e) { ec = e; });
+      s.async_connect(Tcp::endpoint(addr, a.port), [&](const asio::error_code& e) { ec = e; });
       io.restart();
       io.run_for(timeout);
       if (!io.stopped()) throw ConnectionError(address + ": connect timed out");
       if (ec) throw ConnectionError(address + ": " + ec.message());
       s.set_option(Tcp::no_delay(true));
       socket = std::move(s);
-    } else if (address.rfind("unix:", 0) == 0) {
+    } else {
       Local::socket s(io);
-      s.connect(Local::endpoint(address.substr(5)), ec);
+      s.connect(Local::endpoint(a.path), ec);
       if (ec) throw ConnectionError(address + ": " + ec.message());
       socket = std::move(s);
-    } else {
-      throw ConnectionError(address + ": expected tcp://HOST:PORT or unix:PATH");
     }
   }
 

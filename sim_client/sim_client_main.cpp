@@ -1,5 +1,6 @@
 // sim_client: drives a running `cloudsvc serve` like a flight simulator would (replay,
-// sweep, weather) and watches its shared-memory frames (watch). docs/SIM_CLIENT.md.
+// sweep, weather), watches its shared-memory frames (watch) and load-tests it (soak).
+// docs/SIM_CLIENT.md.
 // Exit codes: 0 success (and --help), 1 runtime failure (connection, service error,
 // write failure), 2 bad input (flag, input file); every failure is one line on stderr.
 #include <CLI/CLI.hpp>
@@ -36,7 +37,7 @@ int main(int argc, char** argv) {
   CLI::App app("sim_client: a simulator-side client of the cloudsvc service (docs/SIM_CLIENT.md)", "sim_client");
   app.require_subcommand(1);
   std::vector<Command> commands = {add_replay_command(app), add_sweep_command(app), add_weather_command(app),
-                                   add_watch_command(app)};
+                                   add_watch_command(app), add_soak_command(app)};
   app.footer(std::string(kExitCodesHelp) +
              "\nExample: sim_client replay sim_client/demo_flight.csv --connect unix:/tmp/cloudsvc.sock "
              "--out frames/ --size 320x180");
@@ -44,7 +45,7 @@ int main(int argc, char** argv) {
     bool known = false;
     for (const Command& c : commands) known = known || c.app->get_name() == argv[1];
     if (!known)
-      return fail("sim_client: ", std::string(argv[1]) + ": unknown sub-command (expected replay, sweep, weather or watch)",
+      return fail("sim_client: ", std::string(argv[1]) + ": unknown sub-command (expected replay, sweep, weather, watch or soak)",
                   kExitBadInput);
   }
   try {
@@ -58,7 +59,7 @@ int main(int argc, char** argv) {
     for (const Command& c : commands)
       if (c.app->parsed()) where = "sim_client " + c.app->get_name() + ": ";
     std::string text = e.what();
-    if (text == "A subcommand is required") text += " (replay, sweep, weather or watch; see sim_client --help)";
+    if (text == "A subcommand is required") text += " (replay, sweep, weather, watch or soak; see sim_client --help)";
     return fail(where, text, kExitBadInput);
   }
   for (const Command& c : commands) {

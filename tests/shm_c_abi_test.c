@@ -93,6 +93,11 @@ int main(void) {
     for (int i = 0; i < 32; ++i) same = same && px[i] == (unsigned char)(i * 3);
     CHECK(same);
     CHECK(cloudsvc_shm_read_latest(r, 7, &info, px, sizeof px) == 0); /* nothing newer than 7 */
+    CHECK(strcmp(cloudsvc_shm_last_error(r), "") == 0);
+    /* A slot claiming more pixel bytes than its rows hold: -3 and a message, nothing copied. */
+    s->pixel_bytes = 1u << 20;
+    CHECK(cloudsvc_shm_read_latest(r, 0, &info, px, sizeof px) == -3);
+    CHECK(strstr(cloudsvc_shm_last_error(r), "pixel_bytes") != NULL);
     cloudsvc_shm_close(r);
   }
   munmap(base, bytes);

@@ -11,6 +11,7 @@
 #include "sim_client/acmi_lexer.h"
 #include "sim_client/acmi_reader.h"
 #include "sim_client/flight_log_error.h"
+#include "sim_client/replay_poses.h"
 
 namespace {
 
@@ -224,7 +225,11 @@ TEST(AcmiReader, RangeErrorsOfTheChosenObject) {
       kHeader + "0,ReferenceTime=2020-01-01T00:00:00Z\n0,ReferenceLatitude=80\n";  // 4 lines
   expect_error(head + join({"1,T=0|5|0", "#1", "1,T=0|10.5|0"}), {}, "rec.acmi:7: ",
                "latitude 90.5 out of range [-90, 90]");
-  expect_error(head + join({"1,T=181|5|0"}), {}, "rec.acmi:5: ", "longitude 181 out of range");
+  // Longitudes wrap (LongitudesWrapAcrossTheAntimeridian); only a non-finite sum is an error.
+  EXPECT_DOUBLE_EQ(parse_acmi(head + join({"1,T=181|5|0"}), "rec.acmi").samples[0].position.lon_deg, -179.0);
+  expect_error(kHeader + join({"0,ReferenceTime=2020-01-01T00:00:00Z", "0,ReferenceLongitude=1e308",
+                               "1,T=1e308|5|0"}),
+               {}, "rec.acmi:5: ", "longitude is not finite (inf)");
   expect_error(head + join({"1,T=1|5|300000"}), {}, "rec.acmi:5: ",
                "altitude 300000 out of range");
   expect_error(head + join({"1,T=1|5|10|0|95|0"}), {}, "rec.acmi:5: ",
@@ -233,6 +238,54 @@ TEST(AcmiReader, RangeErrorsOfTheChosenObject) {
                "first T= of object 1 leaves longitude, latitude or altitude empty");
   // Another object out of range does not matter.
   EXPECT_NO_THROW(parse_acmi(head + join({"1,T=1|5|10", "2,T=1|50|10"}), "rec.acmi", object("1")));
+}
+
+// Tacview positions are ReferenceLongitude + offset: a flight across the antimeridian runs
+// past 180 and wraps into [-180, 180); the track, its derived heading and speed, the
+// interpolated poses and the replay poses all stay on the short way across. Latitudes do
+// not wrap.
+TEST(AcmiReader, LongitudesWrapAcrossTheAntimeridian) {
+  const std::string text = kHeader + join({
+      "0,ReferenceTime=2020-01-01T00:00:00Z",
+      "0,ReferenceLongitude=180,ReferenceLatitude=-17",
+      "#0", "7,T=-0.0015|0.2|3000",  // 179.9985
+      "#1", "7,T=-0.0005|0.2|3000",  // 179.9995
+      "#2", "7,T=0.0005|0.2|3000",   // 180.0005 = -179.9995
+      "#3", "7,T=0.0015|0.2|3000",   // 180.0015 = -179.9985
+  });
+  const PoseTrack t = parse_acmi(text, "dateline.acmi");
+  ASSERT_EQ(t.samples.size(), 4u);
+  const double expected[4] = {179.9985, 179.9995, -179.9995, -179.9985};
+  for (std::size_t i = 0; i < 4; ++i) {
+    SCOPED_TRACE(i);
+    EXPECT_NEAR(t.samples[i].position.lon_deg, expected[i], 1e-9);
+    EXPECT_NEAR(t.samples[i].position.lat_deg, -16.8, 1e-9);
+    EXPECT_NEAR(t.samples[i].attitude.heading_deg, 90.0, 0.1) << "flying east";
+    EXPECT_NEAR(t.samples[i].velocity_enu_mps->x, 106.5, 1.0) << "0.001 deg of longitude per s at 16.8 S";
+  }
+  const double t0 = t.start_time();
+  const double mid = t.at(t0 + 1.5).position.lon_deg;  // between 179.9995 and -179.9995
+  EXPECT_NEAR(std::fabs(mid), 180.0, 1e-6);
+  EXPECT_GE(mid, -180.0);
+  EXPECT_LT(mid, 180.0);
+  const std::vector<cloudsvc::protocol::Pose> poses = cloudsvc::sim::replay_poses(t, 10.0, 0);
+  ASSERT_EQ(poses.size(), 31u);
+  for (const auto& p : poses) {
+    EXPECT_GE(std::fabs(p.lon_deg), 179.9985 - 1e-9) << "sim time " << p.sim_time_s << ": lon " << p.lon_deg;
+    EXPECT_LT(p.lon_deg, 180.0);
+  }
+
+  // Any finite sum wraps; the reference alone may be anywhere.
+  const std::string far = kHeader + join({"0,ReferenceTime=2020-01-01T00:00:00Z", "0,ReferenceLongitude=-180",
+                                          "#0", "7,T=-0.5|0|100", "#1", "7,T=530|0|100"});
+  const PoseTrack f = parse_acmi(far, "far.acmi");
+  ASSERT_EQ(f.samples.size(), 2u);
+  EXPECT_NEAR(f.samples[0].position.lon_deg, 179.5, 1e-9);
+  EXPECT_NEAR(f.samples[1].position.lon_deg, -10.0, 1e-9);
+
+  // Latitudes: reference + offset past a pole is an error naming the sum.
+  const std::string head = kHeader + "0,ReferenceTime=2020-01-01T00:00:00Z\n0,ReferenceLatitude=-89.9995\n";
+  expect_error(head + join({"1,T=0|-0.001|0"}), {}, "rec.acmi:5: ", "latitude -90.0005 out of range [-90, 90]");
 }
 
 TEST(AcmiReader, ObjectChoiceErrors) {

@@ -8,6 +8,7 @@
 #include "geodesy/utc_time.h"
 #include "sim_client/csv_reader.h"
 #include "sim_client/flight_log_error.h"
+#include "sim_client/replay_poses.h"
 
 namespace {
 
@@ -67,6 +68,7 @@ TEST(CsvReader, BothTimeFormsCommentsAndWrapping) {
   EXPECT_DOUBLE_EQ(t.samples[2].attitude.heading_deg, 0.0);
   EXPECT_DOUBLE_EQ(t.samples[2].attitude.roll_deg, -180.0);
   EXPECT_DOUBLE_EQ(t.samples[3].unix_time_s, utc("2024-05-01T12:00:03Z"));
+  EXPECT_DOUBLE_EQ(t.samples[3].position.lon_deg, -180.0);  // 180 is -180 in [-180, 180)
 }
 
 TEST(CsvReader, ColumnsInAnyOrderWithExtrasAndQuotes) {
@@ -112,7 +114,7 @@ TEST(CsvReader, RowErrors) {
   expect_error(row("1,nan,0,0,0,0,0"), "poses.csv:4: ", "lat is not finite (nan)");
   expect_error(row("1,0,0,0,inf,0,0"), "poses.csv:4: ", "heading is not finite (inf)");
   expect_error(row("1,90.5,0,0,0,0,0"), "poses.csv:4: ", "lat 90.5 out of range [-90, 90]");
-  expect_error(row("1,0,-180.01,0,0,0,0"), "poses.csv:4: ", "lon -180.01 out of range");
+  expect_error(row("1,0,-360.01,0,0,0,0"), "poses.csv:4: ", "lon -360.01 out of range [-360, 360]");
   expect_error(row("1,0,0,250000,0,0,0"), "poses.csv:4: ", "alt 250000 out of range");
   expect_error(row("1,0,0,0,0,91,0"), "poses.csv:4: ", "pitch 91 out of range [-90, 90]");
   expect_error(row("yesterday,0,0,0,0,0,0"), "poses.csv:4: ",
@@ -128,6 +130,34 @@ TEST(CsvReader, RowErrors) {
       "poses.csv:3: ",
       "time goes backwards: 1714564805.000 s (2024-05-01T12:00:05Z) after "
       "1714564810.000 s (2024-05-01T12:00:10Z) (line 2)");
+}
+
+// Longitudes past +-180 (a track counted on across the antimeridian, or the 0..360
+// convention) wrap into [-180, 180) once: |lon| up to 360. Latitudes do not wrap. A track
+// across the antimeridian interpolates the short way, near +-180.
+TEST(CsvReader, LongitudesPast180WrapLatitudesDoNot) {
+  const std::string text = join({kHeader,
+                                 "0,-17,179.998,3000,90,0,0",
+                                 "1,-17,179.999,3000,90,0,0",
+                                 "2,-17,180.001,3000,90,0,0",    // = -179.999
+                                 "3,-17,-180.002,3000,90,0,0",   // = 179.998: turned back west
+                                 "4,-17,359.5,3000,90,0,0",      // 0..360 convention: -0.5
+                                 "5,-17,-360,3000,90,0,0"});     // = 0
+  const PoseTrack t = parse_csv(text, "dateline.csv");
+  ASSERT_EQ(t.samples.size(), 6u);
+  const double expected[6] = {179.998, 179.999, -179.999, 179.998, -0.5, 0.0};
+  for (std::size_t i = 0; i < 6; ++i) EXPECT_NEAR(t.samples[i].position.lon_deg, expected[i], 1e-9) << i;
+  const double mid = t.at(1.5).position.lon_deg;
+  EXPECT_NEAR(std::fabs(mid), 180.0, 1e-6);
+  EXPECT_LT(mid, 180.0);
+  PoseTrack crossing = t;
+  crossing.samples.resize(3);
+  for (const auto& p : cloudsvc::sim::replay_poses(crossing, 8.0, 0))
+    EXPECT_GE(std::fabs(p.lon_deg), 179.998 - 1e-9) << "sim time " << p.sim_time_s << ": lon " << p.lon_deg;
+
+  const auto row = [](const std::string& r) { return join({kHeader, "0,0,0,0,0,0,0", r}); };
+  expect_error(row("1,0,360.5,0,0,0,0"), "poses.csv:3: ", "lon 360.5 out of range [-360, 360]");
+  expect_error(row("1,-90.0001,0,0,0,0,0"), "poses.csv:3: ", "lat -90.0001 out of range [-90, 90]");
 }
 
 TEST(CsvReader, TruncatedLastRow) {

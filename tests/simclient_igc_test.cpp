@@ -11,6 +11,7 @@
 #include "geodesy/utc_time.h"
 #include "sim_client/flight_log_error.h"
 #include "sim_client/igc_reader.h"
+#include "sim_client/replay_poses.h"
 
 namespace {
 
@@ -213,6 +214,41 @@ TEST(IgcReader, MalformedAndOutOfRangeFixes) {
                "flight.igc:4: ", "GNSS altitude");
   expect_error(with("B1200004700000N00800000EA01000"), "flight.igc:4: ",
                "malformed B record: 30 characters, a fix needs at least 35");
+}
+
+// The longitude field's degrees are 000-180: a fix written as 180 degrees and some minutes
+// (a recorder counting on past the antimeridian) is the same point as 179 degrees and 60
+// minus those minutes on the other side and wraps there; 181 or more is an error. A flight
+// across the antimeridian keeps its heading, and interpolated poses stay near +-180.
+TEST(IgcReader, LongitudesJustPast180WrapAcrossTheAntimeridian) {
+  const std::string text = join({"AXXX", "HFDTE010120",
+                                 b("120000", "1700000S", "17959880E"),    // 179.998
+                                 b("120001", "1700000S", "17959940E"),    // 179.999
+                                 b("120002", "1700000S", "18000060E"),    // 180.001 = -179.999
+                                 b("120003", "1700000S", "18000000W"),    // -180 (= 180)
+                                 b("120004", "1700000S", "17959880W")});  // -179.998
+  const PoseTrack t = parse_igc(text, "dateline.igc");
+  ASSERT_EQ(t.samples.size(), 5u);
+  const double expected[5] = {179.998, 179.999, -179.999, -180.0, -179.998};
+  for (std::size_t i = 0; i < 5; ++i) {
+    SCOPED_TRACE(i);
+    EXPECT_NEAR(t.samples[i].position.lon_deg, expected[i], 1e-9);
+    EXPECT_GE(t.samples[i].position.lon_deg, -180.0);
+    EXPECT_LT(t.samples[i].position.lon_deg, 180.0);
+  }
+  // 180.001 -> -180 goes back west by 0.001 degrees: the heading says so, the others east.
+  EXPECT_NEAR(t.samples[0].attitude.heading_deg, 90.0, 0.1);
+  const double mid = t.at(t.start_time() + 1.5).position.lon_deg;  // between 179.999 and -179.999
+  EXPECT_NEAR(std::fabs(mid), 180.0, 1e-6);
+  EXPECT_LT(mid, 180.0);
+  for (const auto& p : cloudsvc::sim::replay_poses(t, 4.0, 0))
+    EXPECT_GE(std::fabs(p.lon_deg), 179.998 - 1e-9) << "sim time " << p.sim_time_s << ": lon " << p.lon_deg;
+
+  const auto with = [](const std::string& rec) { return join({"AXXX", "HFDTE010120", b("115959"), rec}); };
+  expect_error(with(b("120000", "1700000S", "18100000W")), "flight.igc:4: ",
+               "longitude 181 deg out of range [-180, 180]");
+  expect_error(with(b("120000", "9000060N", "17959880W")), "flight.igc:4: ",
+               "latitude 90.001 deg out of range [-90, 90]");
 }
 
 TEST(IgcReader, TruncatedFileAndEmptyTrack) {

@@ -94,6 +94,21 @@ TEST(PoseTrackAt, AntimeridianTakesTheShortWay) {
   expect_short_path(track, 0.05);
 }
 
+// Longitudes come out in [-180, 180), the readers' range: the point of the chord right on
+// the antimeridian is -180, not +180 (GeographicLib returns +180 for it).
+TEST(PoseTrackAt, AntimeridianPointsAreInTheHalfOpenRange) {
+  PoseTrack track;
+  track.samples = {sample(0.0, 0.0, 179.9, 1000.0), sample(10.0, 0.0, -179.9, 1000.0)};
+  for (int k = 0; k <= 20; ++k) {
+    const double lon = track.at(0.5 * k).position.lon_deg;
+    SCOPED_TRACE(testing::Message() << "t " << 0.5 * k << " lon " << lon);
+    EXPECT_GE(lon, -180.0);
+    EXPECT_LT(lon, 180.0);
+    EXPECT_GE(std::fabs(lon), 179.9 - 1e-9) << "went the long way round";
+  }
+  EXPECT_NEAR(std::fabs(track.at(5.0).position.lon_deg), 180.0, 1e-9);
+}
+
 TEST(PoseTrackAt, OverThePoleTakesTheShortWay) {
   // 89.99 N on opposite meridians: 2.2 km apart across the pole, 20000 km the other way.
   PoseTrack track;

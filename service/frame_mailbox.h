@@ -30,12 +30,14 @@ struct PendingPose {
   protocol::Pose pose;
   SteadyTime received;
   std::uint64_t client_id = 0;
+  std::uint64_t seq = 0;  // the Pose's envelope seq, answered by an Error about it
 };
 
 struct PendingRender {
   std::uint64_t request_id = 0;
   std::uint64_t client_id = 0;
   SteadyTime received;
+  std::uint64_t seq = 0;  // the RenderRequest's envelope seq, answered by an Error about it
 };
 
 // A state change, applied by the render thread in arrival order.

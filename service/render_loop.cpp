@@ -107,7 +107,7 @@ void RenderLoop::run() {
 
   // Writes the frame to every sink the view asks for; fills in where it went.
   auto publish = [&](const FrameImage& img, const PendingPose& p, double utc, protocol::FrameReady& ready,
-                     std::optional<std::uint64_t> reply_to) {
+                     std::optional<std::uint64_t> reply_to, std::uint64_t answers_seq) {
     const std::lock_guard publishing(publish_mutex_);
     if ((view.sinks & protocol::sink::kShm) && shm_) {
       ShmFrameMeta meta{frame, p.pose.sim_time_s, utc, p.pose.lat_deg, p.pose.lon_deg, p.pose.alt_m,
@@ -135,7 +135,7 @@ void RenderLoop::run() {
         write_image(path, img);
         ready.file_path = path;
       } catch (const std::exception& e) {
-        notify_(reply_to, protocol::Error{protocol::ErrorCode::SinkUnavailable, e.what(), 0});
+        notify_(reply_to, protocol::Error{protocol::ErrorCode::SinkUnavailable, e.what(), answers_seq});
       }
     }
     if ((view.sinks & protocol::sink::kWindow) && window) window->present(img);
@@ -154,8 +154,9 @@ void RenderLoop::run() {
   };
 
   // Renders p and announces it: pose-driven frames to everyone (reply_to empty), requested
-  // frames to the requester.
-  auto render_and_publish = [&](const PendingPose& p, std::uint64_t request_id, std::optional<std::uint64_t> reply_to) {
+  // frames to the requester; an Error about the frame answers `answers_seq`.
+  auto render_and_publish = [&](const PendingPose& p, std::uint64_t request_id, std::optional<std::uint64_t> reply_to,
+                                std::uint64_t answers_seq) {
     const double utc = clock.utc_for(p.pose);
     ++frame;
     FrameImage img;
@@ -165,7 +166,7 @@ void RenderLoop::run() {
       img = renderer.render(view_request(p.pose, utc, view, frame), *quality_preset(preset));  // checked by check_view
     } catch (const std::exception& e) {
       frame_started_ns_.store(0);
-      notify_(reply_to, protocol::Error{protocol::ErrorCode::RenderFailed, e.what(), 0});
+      notify_(reply_to, protocol::Error{protocol::ErrorCode::RenderFailed, e.what(), answers_seq});
       return;
     }
     frame_started_ns_.store(0);
@@ -177,7 +178,7 @@ void RenderLoop::run() {
     ready.width = view.width;
     ready.height = view.height;
     ready.render_ms = img.stats.render_ms;
-    publish(img, p, utc, ready, reply_to);
+    publish(img, p, utc, ready, reply_to, answers_seq);
     ready.latency_ms = std::chrono::duration<double, std::milli>(SteadyClock::now() - p.received).count();
     count_frame();
     notify_(reply_to, ready);
@@ -219,21 +220,21 @@ void RenderLoop::run() {
                                 "Pose.sim_time_s: the pose's UTC (last SetTime advanced by sim time since) is " +
                                     std::to_string(utc) + " s, outside [" + std::to_string(protocol::kMinUtc_s) + ", " +
                                     std::to_string(protocol::kMaxUtc_s) + ") (years 1900-2199); pose not rendered",
-                                0});
+                                batch.pose->seq});
       } else {
         clock.observe(batch.pose->pose);
         pose = batch.pose;
-        render_and_publish(*pose, 0, std::nullopt);
+        render_and_publish(*pose, 0, std::nullopt, 0);
       }
     }
     for (const PendingRender& r : batch.renders) {
       if (!pose) {
         notify_(r.client_id, protocol::Error{protocol::ErrorCode::UnexpectedMessage,
-                                             "RenderRequest before any Pose: nothing to render", 0});
+                                             "RenderRequest before any Pose: nothing to render", r.seq});
       } else {
         PendingPose p = *pose;
         p.received = r.received;
-        render_and_publish(p, r.request_id, r.client_id);
+        render_and_publish(p, r.request_id, r.client_id, r.seq);
       }
       mailbox_.render_finished(r.client_id);
     }

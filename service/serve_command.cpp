@@ -167,7 +167,7 @@ int run_serve(const ServeOptions& command_line) {
     std::visit([&](const auto& msg) {
       using T = std::decay_t<decltype(msg)>;
       if constexpr (std::is_same_v<T, protocol::Pose>) {
-        mailbox.post_pose(PendingPose{msg, now, client});
+        mailbox.post_pose(PendingPose{msg, now, client, seq});
       } else if constexpr (std::is_same_v<T, protocol::SetView>) {
         protocol::SetView view = msg;
         const ViewProblem problem = check_view(view, opt);
@@ -180,7 +180,7 @@ int run_serve(const ServeOptions& command_line) {
       } else if constexpr (std::is_same_v<T, protocol::SetTime> || std::is_same_v<T, protocol::WeatherLayers>) {
         mailbox.post_change(msg);
       } else if constexpr (std::is_same_v<T, protocol::RenderRequest>) {
-        if (!mailbox.post_render(PendingRender{msg.request_id, client, now}))
+        if (!mailbox.post_render(PendingRender{msg.request_id, client, now, seq}))
           overloaded("RenderRequest " + std::to_string(msg.request_id) + " refused: this client already has " +
                      std::to_string(FrameMailbox::kMaxRendersPerClient) +
                      " render requests pending; send the next after a FrameReady");

@@ -302,6 +302,7 @@ TEST(ServiceReliability, PosesWhoseDerivedUtcIsOutOfRangeAreRefused) {
     c.send(test_pose(47.45, sim), 4);
     const protocol::Error e = expect_error(c);
     EXPECT_EQ(e.code, protocol::ErrorCode::InvalidField) << sim;
+    EXPECT_EQ(e.answers_seq, 4u) << "the Error names the pose it refuses";
     EXPECT_NE(e.text.find("UTC"), std::string::npos) << e.text;
   }
   c.send(test_pose(47.45, 60.0), 6);  // one minute after the first pose: renders

@@ -126,9 +126,14 @@ int run_serve(const ServeOptions& command_line) {
   // The render thread did not finish its frame within the grace: tell the clients, make
   // sure no frame is half written (the ring keeps its last whole frame), remove the socket
   // files and the ring's name, and leave without waiting for the GL work.
+  std::chrono::steady_clock::time_point stop_requested;
+  auto ms_since_stop = [&] {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - stop_requested).count();
+  };
   auto abandon_frame = [&] {
-    std::printf("cloudsvc serve: the frame in progress did not finish within %lld ms; abandoning it\n",
-                static_cast<long long>(kShutdownGrace.count()));
+    std::printf("cloudsvc serve: the frame in progress did not finish within %lld ms; abandoning it (%.0f ms after "
+                "the stop)\n",
+                static_cast<long long>(kShutdownGrace.count()), ms_since_stop());
     std::fflush(stdout);
     server->broadcast(protocol::Error{protocol::ErrorCode::RenderFailed,
                                       "the service is shutting down: the frame in progress was abandoned", 0});
@@ -137,8 +142,8 @@ int run_serve(const ServeOptions& command_line) {
       publish_mutex.lock();  // a sink write in progress ends first; none starts after
       server->stop();
       if (shm) shm->unlink_name();
-      std::printf("cloudsvc serve: stopped after %llu frames (one abandoned)\n",
-                  static_cast<unsigned long long>(loop ? loop->frames_rendered() : 0));
+      std::printf("cloudsvc serve: stopped after %llu frames (one abandoned), %.0f ms after the stop\n",
+                  static_cast<unsigned long long>(loop ? loop->frames_rendered() : 0), ms_since_stop());
       std::fflush(stdout);
       std::_Exit(0);
     });
@@ -148,6 +153,7 @@ int run_serve(const ServeOptions& command_line) {
   auto stop_service = [&] {
     asio::post(io, [&] {
       if (stopping.exchange(true)) return;
+      stop_requested = std::chrono::steady_clock::now();
       mailbox.request_stop();          // no new frame starts
       if (server) server->stop_listening();  // no new clients; socket files removed
       grace_timer.expires_after(kShutdownGrace);

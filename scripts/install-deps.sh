@@ -5,6 +5,7 @@ set -euo pipefail
 
 PACKAGES=(
   g++ cmake make pkgconf
+  clang libclang-rt-14-dev
   libglfw3-dev libglm-dev libgeographiclib-dev
   libepoxy-dev libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
   libopenimageio-dev openimageio-tools libimath-dev fonts-dejavu-core

@@ -131,6 +131,26 @@ TEST(TrackAttitude, ClampsBankAndPitch) {
   EXPECT_DOUBLE_EQ(steep[2].attitude.pitch_deg, 45.0);
 }
 
+// Found by fuzz/simclient_acmi_fuzz.cpp's track check: an ACMI file with ReferenceTime
+// 1970-01-01T00:00:00Z and frames #0 and #1e-320 gives samples 1e-320 s apart; the chord
+// speed overflowed to inf, so velocity (inf * sin 0) and bank (atan(inf * 0)) were NaN.
+// Whatever the spacing, the derived values stay finite (replay then refuses the absurd
+// speed with a message instead of sending NaN).
+TEST(TrackAttitude, SamplesCloserThanAnySpeedStayFinite) {
+  std::vector<PoseSample> track = {at_offset(0.0, 0.0, 0.0, 0.0, 0.0, 100.0),
+                                   at_offset(1e-320, 0.0, 0.0, 0.0, 110000.0, 300.0),
+                                   at_offset(2e-320, 0.0, 0.0, 90.0, 110000.0, 100.0)};
+  derive_attitude_from_track(track);
+  for (const PoseSample& s : track) {
+    EXPECT_TRUE(std::isfinite(s.attitude.heading_deg) && std::isfinite(s.attitude.pitch_deg) &&
+                std::isfinite(s.attitude.roll_deg))
+        << s.attitude.heading_deg << " " << s.attitude.pitch_deg << " " << s.attitude.roll_deg;
+    ASSERT_TRUE(s.velocity_enu_mps.has_value());
+    EXPECT_TRUE(std::isfinite(s.velocity_enu_mps->x) && std::isfinite(s.velocity_enu_mps->y) &&
+                std::isfinite(s.velocity_enu_mps->z));
+  }
+}
+
 TEST(TrackAttitude, SingleSampleHasNoVelocity) {
   std::vector<PoseSample> one = {at_offset(0.0, 1.0, 2.0, 0.0, 0.0, 3.0)};
   one[0].attitude.heading_deg = 123.0;

@@ -211,6 +211,22 @@ TEST_F(WeatherJson, WrongTypes) {
             0u);
 }
 
+// Found while writing fuzz/weather_json_fuzz.cpp (with an input deeper than its 16 KiB
+// inputs reach): the excerpt of a wrong value in a message was cut from the value's whole
+// serialisation, which recurses once per nesting level, so a file of a few hundred KB of
+// '[' overflowed the stack (SIGSEGV) instead of giving this error. The excerpt of an
+// ordinary value is what it was (last case, and WrongTypes above).
+TEST_F(WeatherJson, DeeplyNestedValuesGiveAnErrorNotACrash) {
+  constexpr std::size_t kDepth = 300000;  // 100000 levels already overflowed 8 MiB of stack
+  const std::string nested = std::string(kDepth, '[') + std::string(kDepth, ']');
+  const std::string excerpt = std::string(37, '[') + "...";  // 40 characters at most
+  EXPECT_EQ(error_of(doc(nested)), "layers[0]: expected an object, got array " + excerpt);
+  EXPECT_EQ(error_of(doc(layer(R"("wind_mps": )" + nested))),
+            "layers[0].wind_mps: expected [east, north] in m/s, got array " + excerpt);
+  EXPECT_EQ(error_of(R"({"layers": [], "name": [1, {"a": [true, null, "x\"y"]}, 2.5]})"),
+            R"(name: expected a string, got array [1,{"a":[true,null,"x\"y"]},2.5])");
+}
+
 TEST_F(WeatherJson, MissingAndUnknownValues) {
   EXPECT_EQ(error_of(doc(R"({"coverage": 0.5})")), "layers[0].type: missing (required)");
   EXPECT_EQ(error_of(doc(R"({"type": "cumulus"})")), "layers[0].coverage: missing (required)");

@@ -33,9 +33,28 @@ std::string one_line(std::string s) {
   throw WeatherFileError(one_line(source + ": " + field + ": " + problem));
 }
 
+// Appends j as compact JSON (as j.dump() writes it) to out, stopping once out is longer
+// than `limit`. Every nesting level writes a bracket before going deeper, so recursion and
+// work stay within `limit` however deep or long j is (j.dump() recurses once per level: a
+// file of nested '[' overflowed the stack).
+void dump_prefix(const json& j, std::string& out, std::size_t limit) {
+  if (!j.is_structured()) {
+    out += j.dump();
+    return;
+  }
+  out += j.is_array() ? '[' : '{';
+  for (auto it = j.begin(); it != j.end() && out.size() <= limit; ++it) {
+    if (it != j.begin()) out += ',';
+    if (j.is_object()) out += json(it.key()).dump() + ':';
+    dump_prefix(it.value(), out, limit);
+  }
+  out += j.is_array() ? ']' : '}';
+}
+
 // "string \"lots\"", "number 3", ... shortened for messages.
 std::string describe(const json& j) {
-  std::string text = j.dump();
+  std::string text;
+  dump_prefix(j, text, 40);
   if (text.size() > 40) text = text.substr(0, 37) + "...";
   return std::string(j.type_name()) + " " + text;
 }

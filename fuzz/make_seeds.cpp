@@ -1,0 +1,141 @@
+// Writes the generated seed corpora of the fuzz targets whose inputs are binary, so that no
+// binary seed is committed: `fuzz_make_seeds <dir>` (re)creates <dir>/<target>/ for
+//   protocol_decode    one encoded payload per message (seed_messages.h), valid or not;
+//   protocol_framing   streams of framed payloads, whole and cut short, behind the two
+//                      bytes that choose the chunking and the payload limit;
+//   protocol_session   client connections behind the offered-capabilities byte: a full
+//                      session, one refused at the handshake, one with a bad frame;
+//   protocol_validate, weather_timeline  pseudo-random bytes (for FuzzedDataProvider any
+//                      bytes are a valid input; these give it a start beyond the empty one);
+//   simclient_map_image  small images (seed_images.h).
+// The build runs it into build-san/fuzz/seeds (fuzz/CMakeLists.txt).
+#include <cstdint>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "fuzz/seed_images.h"
+#include "fuzz/seed_messages.h"
+#include "protocol/codec.h"
+#include "protocol/framing.h"
+
+namespace {
+
+using namespace cloudsvc;
+using Bytes = std::vector<std::uint8_t>;
+namespace fs = std::filesystem;
+
+void write_file(const fs::path& path, const Bytes& bytes) {
+  std::ofstream out(path, std::ios::binary);
+  out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+  if (!out) throw std::runtime_error(path.string() + ": cannot write");
+}
+
+fs::path fresh_dir(const fs::path& root, const std::string& target) {
+  const fs::path dir = root / target;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+void append(Bytes& out, const Bytes& more) { out.insert(out.end(), more.begin(), more.end()); }
+
+Bytes framed(const protocol::Message& m, std::uint64_t seq) { return protocol::frame(protocol::encode(m, seq)); }
+
+void write_decode_seeds(const fs::path& root) {
+  const fs::path dir = fresh_dir(root, "protocol_decode");
+  std::uint64_t seq = 1;
+  for (const auto& [name, m] : fuzz::valid_seed_messages()) write_file(dir / name, protocol::encode(m, seq++));
+  for (const auto& [name, m] : fuzz::invalid_seed_messages()) write_file(dir / name, protocol::encode(m, seq++));
+}
+
+void write_framing_seeds(const fs::path& root) {
+  const fs::path dir = fresh_dir(root, "protocol_framing");
+  const auto messages = fuzz::valid_seed_messages();
+  // chunking seed, limit selector (< 128: 64 MiB; 128 + k: 16 + 64 k bytes), then frames
+  Bytes three = {0x11, 0x00};
+  for (std::size_t i = 0; i < 3; ++i) append(three, framed(messages[i].second, i + 1));
+  write_file(dir / "three-frames", three);
+  Bytes cut = three;
+  cut.resize(cut.size() - 5);
+  write_file(dir / "cut-short", cut);
+  Bytes small_limit = {0x5a, 128 + 2};  // 144-byte limit: the tile's frame is over it
+  append(small_limit, framed(messages[3].second, 1));
+  append(small_limit, framed(messages[6].second, 2));
+  write_file(dir / "over-limit", small_limit);
+  Bytes bad_magic = {0x03, 0x00};
+  append(bad_magic, framed(messages[4].second, 1));
+  append(bad_magic, Bytes{'C', 'S', 'V', '2', 4, 0, 0, 0, 1, 2, 3, 4});
+  write_file(dir / "bad-magic", bad_magic);
+}
+
+void write_session_seeds(const fs::path& root) {
+  const fs::path dir = fresh_dir(root, "protocol_session");
+  const auto valid = fuzz::valid_seed_messages();
+  const auto invalid = fuzz::invalid_seed_messages();
+  const std::uint8_t all = static_cast<std::uint8_t>(protocol::capability::kAll);
+  Bytes session = {all};
+  std::uint64_t seq = 1;
+  append(session, framed(valid[0].second, seq++));  // Hello
+  for (const char* name : {"set-view", "pose", "set-time", "weather-layers", "weather-map-tile",
+                           "render-request", "stats-request", "welcome"}) {
+    for (const auto& [n, m] : valid)
+      if (n == name) append(session, framed(m, seq++));
+  }
+  for (const auto& [n, m] : invalid) append(session, framed(m, seq++));
+  write_file(dir / "full-session", session);
+  Bytes no_caps = session;
+  no_caps[0] = 0;
+  write_file(dir / "no-capabilities", no_caps);
+  Bytes pose_first = {all};
+  append(pose_first, framed(valid[3].second, 1));
+  write_file(dir / "pose-before-hello", pose_first);
+  Bytes future = {all};
+  append(future, framed(invalid.back().second, 1));  // Hello of major 2
+  write_file(dir / "version-mismatch", future);
+  Bytes bad_frame = {all};
+  append(bad_frame, framed(valid[0].second, 1));
+  append(bad_frame, Bytes{'C', 'S', 'V', '1', 0, 0, 0, 0});  // zero length
+  write_file(dir / "zero-length-frame", bad_frame);
+}
+
+// Deterministic bytes (xorshift32) for the FuzzedDataProvider targets.
+void write_random_seeds(const fs::path& root, const std::string& target, std::uint32_t state) {
+  const fs::path dir = fresh_dir(root, target);
+  for (const std::size_t size : {32, 64, 128, 256, 512, 1024}) {
+    Bytes bytes(size);
+    for (std::uint8_t& b : bytes) {
+      state ^= state << 13;
+      state ^= state >> 17;
+      state ^= state << 5;
+      b = static_cast<std::uint8_t>(state >> 24);
+    }
+    write_file(dir / ("random-" + std::to_string(size)), bytes);
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 2) {
+    std::fprintf(stderr, "usage: %s <seed-dir>\n", argv[0]);
+    return 2;
+  }
+  try {
+    const fs::path root = argv[1];
+    write_decode_seeds(root);
+    write_framing_seeds(root);
+    write_session_seeds(root);
+    write_random_seeds(root, "protocol_validate", 0x2545f491u);
+    write_random_seeds(root, "weather_timeline", 0x9e3779b9u);
+    fuzz::write_seed_images(fresh_dir(root, "simclient_map_image"));
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "make_seeds: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include <GeographicLib/Geodesic.hpp>
@@ -43,8 +44,12 @@ ChordMotion chord_motion(const std::vector<PoseSample>& s, std::size_t i, double
   const double x = std::cos(azi1 / kDegPerRad) + std::cos(azi2 / kDegPerRad);
   ChordMotion m;
   m.course_deg = wrap_deg_360(std::atan2(y, x) * kDegPerRad);
-  m.ground_speed = dist / dt;
-  m.vertical_speed = (b.alt_m - a.alt_m) / dt;
+  // Samples under ~1e-300 s apart (only near the epoch: an ACMI ReferenceTime of
+  // 1970-01-01 with frames #0 and #1e-320) overflow the speeds to inf, which made the
+  // velocity (inf * sin 0) and the bank (atan(inf * 0)) NaN: keep them finite.
+  constexpr double kMaxSpeed = std::numeric_limits<double>::max();
+  m.ground_speed = std::min(dist / dt, kMaxSpeed);
+  m.vertical_speed = std::clamp((b.alt_m - a.alt_m) / dt, -kMaxSpeed, kMaxSpeed);
   return m;
 }
 

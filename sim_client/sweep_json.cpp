@@ -13,6 +13,21 @@ namespace {
 using nlohmann::json;
 using sweep_detail::WeatherRegistry;
 
+// Deepest nesting a sweep file may have: a sweep (top level, poses, pose, inline weather,
+// layers, layer, wind) needs 7; error messages and inline weather are serialised with
+// json::dump, which recurses once per level, so a file of 300,000 nested '[' overflowed the
+// stack before this bound.
+constexpr int kMaxNesting = 32;
+
+// True when j nests deeper than `limit` levels; the recursion itself stops at the limit.
+bool nests_deeper_than(const json& j, int limit) {
+  if (!j.is_structured()) return false;
+  if (limit == 0) return true;
+  for (const auto& child : j)
+    if (nests_deeper_than(child, limit - 1)) return true;
+  return false;
+}
+
 class JsonSweepParser {
  public:
   JsonSweepParser(const std::string& source, const std::filesystem::path& base_dir)
@@ -28,6 +43,8 @@ class JsonSweepParser {
       if (bracket != std::string::npos) what = what.substr(bracket + 2);
       throw UsageError(source_ + ": " + what);
     }
+    if (nests_deeper_than(root, kMaxNesting))
+      fail("(top level)", "nested more than " + std::to_string(kMaxNesting) + " levels deep");
     if (!root.is_object()) fail("(top level)", "expected an object with \"poses\" or \"grid\"");
     check_keys(root, {"poses", "grid", "time", "weather", "description"}, "");
     if (root.contains("poses") == root.contains("grid"))

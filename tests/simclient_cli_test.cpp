@@ -183,6 +183,11 @@ TEST(SweepJson, ErrorsNameTheFileAndTheField) {
             "s.json: grid.lat[2]: count must be a whole number in [1, 100000], got 0");
   EXPECT_EQ(err(R"({"grid": {"lat": [1, 2], "lon": 0, "alt": 0}})"),
             "s.json: grid.lat: expected a number or [first, last, count]");
+  // 300,000 nested arrays as a latitude: used to overflow the stack while the error
+  // message serialised the value (json::dump recurses per level).
+  const std::string deep = std::string(300000, '[') + std::string(300000, ']');
+  EXPECT_EQ(err(R"({"poses": [{"lat": )" + deep + R"(, "lon": 2, "alt": 3}]})"),
+            "s.json: (top level): nested more than 32 levels deep");
   EXPECT_EQ(err(R"({"grid": {"lat": [0, 1, 1000], "lon": [0, 1, 1000], "alt": 0}})"),
             "s.json: grid: has 1000000 combinations, at most 100000");
   EXPECT_EQ(err(R"({"time": "yesterday", "poses": [{"lat": 1, "lon": 2, "alt": 3}]})"),

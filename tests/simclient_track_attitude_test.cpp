@@ -131,9 +131,10 @@ TEST(TrackAttitude, ClampsBankAndPitch) {
   EXPECT_DOUBLE_EQ(steep[2].attitude.pitch_deg, 45.0);
 }
 
-// Found by fuzz/simclient_acmi_fuzz.cpp's track check: an ACMI file with ReferenceTime
-// 1970-01-01T00:00:00Z and frames #0 and #1e-320 gives samples 1e-320 s apart; the chord
-// speed overflowed to inf, so velocity (inf * sin 0) and bank (atan(inf * 0)) were NaN.
+// Found with the track check of fuzz/simclient_acmi_fuzz.cpp, on a constructed input: an
+// ACMI file with ReferenceTime 1970-01-01T00:00:00Z and frames #0 and #1e-320 gives samples
+// 1e-320 s apart; the chord speed overflowed to inf, so velocity (inf * sin 0) and bank
+// (atan(inf * 0)) were NaN.
 // Whatever the spacing, the derived values stay finite (replay then refuses the absurd
 // speed with a message instead of sending NaN).
 TEST(TrackAttitude, SamplesCloserThanAnySpeedStayFinite) {

@@ -44,6 +44,15 @@ protocol::WeatherMapTile coverage_tile(double valid_at, float value) {
   return t;
 }
 
+// A 60 deg view of w x h pixels into `sinks` (file sinks into `file_dir`).
+protocol::SetView view_of(std::uint32_t w, std::uint32_t h, std::uint8_t sinks, const std::string& file_dir = "") {
+  protocol::SetView v;
+  v.width = w, v.height = h, v.hfov_deg = 60;
+  v.sinks = sinks;
+  v.file_dir = file_dir;
+  return v;
+}
+
 protocol::Pose pose_at_utc(double utc_s) {
   protocol::Pose p = test_pose(47.45);
   p.utc_unix_s = utc_s;
@@ -88,11 +97,7 @@ TEST(ServiceReliability, ClientsWriteFilesOnlyBelowOutDir) {
   handshake(c);
   std::uint64_t seq = 2;
   auto set_dir = [&](const std::string& dir) {
-    protocol::SetView v;
-    v.width = 64, v.height = 36, v.hfov_deg = 60;
-    v.sinks = protocol::sink::kFile;
-    v.file_dir = dir;
-    c.send(v, seq++);
+    c.send(view_of(64, 36, protocol::sink::kFile, dir), seq++);
     c.send(protocol::StatsRequest{}, seq++);  // answered after the SetView's Error, if any
     std::vector<protocol::Message> seen;
     EXPECT_TRUE(wait_for<protocol::Stats>(c, 10s, &seen));
@@ -125,11 +130,7 @@ TEST(ServiceReliability, WithoutOutDirNoClientChoosesADirectory) {
   ASSERT_TRUE(svc.running());
   RawClient c(svc.socket_path());
   handshake(c);
-  protocol::SetView v;
-  v.width = 64, v.height = 36, v.hfov_deg = 60;
-  v.sinks = protocol::sink::kFile;
-  v.file_dir = svc.dir().string();
-  c.send(v, 2);
+  c.send(view_of(64, 36, protocol::sink::kFile, svc.dir().string()), 2);
   const protocol::Error e = expect_error(c);
   EXPECT_EQ(e.code, protocol::ErrorCode::SinkUnavailable);
   EXPECT_NE(e.text.find("--out-dir"), std::string::npos) << e.text;
@@ -202,10 +203,7 @@ TEST(ServiceReliability, RenderRequestsBeyondTheBoundAreRefusedNotQueued) {
   ASSERT_TRUE(svc.running());
   RawClient c(svc.socket_path());
   handshake(c);
-  protocol::SetView v;
-  v.width = 256, v.height = 144, v.hfov_deg = 60;
-  v.sinks = protocol::sink::kShm;
-  c.send(v, 2);
+  c.send(view_of(256, 144, protocol::sink::kShm), 2);
   c.send(test_pose(47.45), 3);
   ASSERT_TRUE(wait_for<protocol::FrameReady>(c, 60s));
   std::vector<std::uint8_t> burst;
@@ -268,9 +266,7 @@ TEST(ServiceReliability, OversizedViewsAreRefused) {
   ASSERT_TRUE(svc.running());
   RawClient c(svc.socket_path());
   handshake(c);
-  protocol::SetView v;
-  v.width = 8192, v.height = 8192, v.hfov_deg = 60;
-  v.sinks = protocol::sink::kShm;
+  protocol::SetView v = view_of(8192, 8192, protocol::sink::kShm);
   c.send(v, 2);
   protocol::Error e = expect_error(c);
   EXPECT_EQ(e.code, protocol::ErrorCode::InvalidField);
@@ -322,9 +318,7 @@ TEST(ServiceReliability, SigtermDuringALongFrameExitsWithinTwoSeconds) {
   handshake(c);
   c.send(test_pose(47.45), 2);
   ASSERT_TRUE(wait_for<protocol::FrameReady>(c, 60s));  // shaders compiled
-  protocol::SetView v;
-  v.width = 1920, v.height = 1080, v.hfov_deg = 60;
-  v.sinks = protocol::sink::kShm;
+  protocol::SetView v = view_of(1920, 1080, protocol::sink::kShm);
   v.quality_preset = "ultra";
   c.send(v, 3);
   c.send(test_pose(47.46, 2.0), 4);

@@ -1,5 +1,5 @@
 // cloudbench: error vs cost of the ray-march knobs against the CPU reference (issue
-// "Accuracy", part 2; DESIGN.md §7). For each scene of tests/accuracy_scenes.h (the eight
+// "Accuracy", part 2; docs/ACCURACY.md). For each scene of tests/accuracy_scenes.h (the eight
 // "core" ones) it renders the CPU reference once (cached as EXR under OUT/ref/, keyed by
 // scene and size), then for each march configuration renders a warm-up frame
 // (frame_index 0, whose error is measured) and N timed frames (frame_index 1..N, median

@@ -1,5 +1,5 @@
 // WGS84 geodetic <-> ECEF conversions, local ENU frames, aircraft body axes and radii
-// of curvature. Everything in double (DESIGN.md §2). Angles in degrees, lengths in
+// of curvature. Everything in double. Angles in degrees, lengths in
 // metres. Conversions go through GeographicLib::Geocentric::WGS84() (Karney 2011,
 // accurate to a few nm); trigonometry of degree arguments uses Math::sincosd so that
 // multiples of 90 deg give exact 0/±1 (exact frames at the poles and meridians).

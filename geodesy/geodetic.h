@@ -1,5 +1,5 @@
 // Geodetic <-> Earth-centred conversions and local frames on the WGS84 ellipsoid.
-// All in double precision (DESIGN.md §2). Altitudes are metres above the WGS84
+// All in double precision. Altitudes are metres above the WGS84
 // ellipsoid; angles are degrees unless a name says _rad.
 #pragma once
 

@@ -1,7 +1,7 @@
 // Atmosphere look-up tables (Hillaire 2020). The transmittance, multiple-scattering and
 // sky-irradiance LUTs depend only on the (fixed) atmosphere and are computed once; the
 // sky-view LUT and the aerial-perspective volume depend on the camera and the sun and are
-// recomputed when those change (DESIGN.md §4). Needs a current GL 4.5 context.
+// recomputed when those change. Needs a current GL 4.5 context.
 #pragma once
 
 #include "renderer/gl/gl_objects.h"

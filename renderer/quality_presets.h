@@ -4,7 +4,7 @@
 // the same for every preset; only the numbers of render_types.h's RenderQuality change.
 //
 //   naive    uniform 64 primary steps (step_growth_ref_m = 0), 6 light steps, 3 octaves:
-//            the baseline speed-ups are quoted against (DESIGN.md §7)
+//            the baseline speed-ups are quoted against
 //   low, medium, high, ultra   points of the Pareto front, increasing cost (log steps)
 //   default  the recommended preset (= RenderQuality{}: 64 log steps, 6 light steps)
 //

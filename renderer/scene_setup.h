@@ -1,5 +1,5 @@
 // Per-frame constants for the GPU, computed on the CPU in double precision from the view
-// and the weather (DESIGN.md §2): camera frame, osculating shell radius, sun direction,
+// and the weather: camera frame, osculating shell radius, sun direction,
 // wrapped noise offsets. No GL here, so it is unit-testable.
 #pragma once
 

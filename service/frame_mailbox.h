@@ -1,5 +1,5 @@
 // Hand-off from the network thread (decoded, validated client messages) to the render
-// thread (DESIGN.md §1). Poses are latest-wins: a newer pose replaces an unrendered one
+// thread. Poses are latest-wins: a newer pose replaces an unrendered one
 // (counted as dropped), so a fast sender never builds a backlog. Everything else that
 // changes state (view, weather, tiles, time) is kept in arrival order: nothing accepted
 // is lost. What one client can queue is bounded, and a request over a bound is refused

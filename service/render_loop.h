@@ -1,5 +1,5 @@
-// The render thread of `cloudsvc serve`: owns the GL context and the renderer (DESIGN.md
-// §1), takes batches from the FrameMailbox, applies state changes in order, renders the
+// The render thread of `cloudsvc serve`: owns the GL context and the renderer, takes
+// batches from the FrameMailbox, applies state changes in order, renders the
 // newest pose, and hands each frame to the sinks (shared-memory ring, files, window)
 // before announcing it with FrameReady.
 #pragma once

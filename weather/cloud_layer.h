@@ -1,4 +1,4 @@
-// Cloud layers: the weather state the renderer draws (DESIGN.md §3).
+// Cloud layers: the weather state the renderer draws.
 // Altitudes are metres above the WGS84 ellipsoid (the geoid undulation, |N| < 110 m,
 // is ignored: MSL values are taken as ellipsoidal heights).
 #pragma once

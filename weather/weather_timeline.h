@@ -1,4 +1,4 @@
-// Streamed weather-map updates over time (DESIGN.md §3). The global map is a set of
+// Streamed weather-map updates over time. The global map is a set of
 // keyframes, each a full WeatherMap valid at a UTC time; the renderer blends the two
 // keyframes around the current time, so a new forecast fades in instead of popping.
 //

@@ -1,4 +1,4 @@
-// Error metrics between two frames on linear radiance (DESIGN.md §7), rgb channels only:
+// Error metrics between two frames on linear radiance, rgb channels only:
 //   RMSE      = sqrt(mean over pixels and channels of (test - ref)^2)   (W m^-2 sr^-1 nm^-1)
 //   relative  = RMSE / mean over pixels and channels of ref
 //   PSNR      = 10 log10(peak^2 / MSE) dB, peak = the reference's largest rgb value

@@ -9,7 +9,9 @@
 #include <vector>
 
 #include "geodesy/geodetic.h"
-#include "renderer/render_types.h"
+#include "renderer/api/frame_image.h"
+#include "renderer/api/render_quality.h"
+#include "renderer/api/view_request.h"
 
 namespace cloudsvc::bench {
 

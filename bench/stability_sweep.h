@@ -33,7 +33,7 @@
 #include "renderer/reference/image_metrics.h"
 #include "renderer/reference/reference_renderer.h"
 #include "renderer/reference/reference_scene.h"
-#include "renderer/scene_setup.h"
+#include "renderer/frame_uniforms_packing.h"
 #include "weather/presets.h"
 
 namespace cloudsvc::stab {
@@ -553,16 +553,16 @@ inline void noise_coordinate_error(const ViewRequest& view, const weather::Weath
                                    const UptimeLimits& lim, double* err_m, double* ratio) {
   *err_m = 0.0;
   *ratio = 0.0;
-  const FrameUniforms u = make_frame_uniforms(view, wx, {}, {}, &anchor);
+  const FrameUniforms u = pack_frame_uniforms(make_frame_context(view, wx, anchor), {}, {});
   const glm::dvec3 cam = geo::geodetic_to_ecef(view.position);
   const glm::dmat3 E = geo::enu_to_ecef(view.position.lat_deg, view.position.lon_deg);
-  const int n = std::min<int>(static_cast<int>(wx.layers.size()), kGpuMaxLayers);
+  const int n = std::min<int>(static_cast<int>(wx.layers.size()), gpu::kMaxLayers);
   for (int l = 0; l < n; ++l) {
     const weather::CloudLayer& layer = wx.layers[static_cast<size_t>(l)];
     const weather::CloudTypeTraits& tr = weather::cloud_type_traits(layer.type);
     const CloudLayerGpu& g = u.layers[l];
     const glm::dmat3 rot = reference::field_rotation(layer.wind, anchor, view.unix_time_s);
-    // Noise space as make_frame_uniforms defines it (altitude stretched by k at the camera);
+    // Noise space as make_frame_context defines it (altitude stretched by k at the camera);
     // probes are taken as already stretched (p_stretched = p), which both sides share.
     const glm::dvec3 cam_field = rot * (cam + (tr.noise_vertical_scale - 1.0) * view.position.alt_m * E[2]);
     const glm::mat3 m = glm::mat3(g.noise_rotation);
@@ -575,8 +575,8 @@ inline void noise_coordinate_error(const ViewRequest& view, const weather::Weath
           const glm::dvec3 field = cam_field + rot * (E * p);
           for (int which = 0; which < 2; ++which) {
             const double period = which == 0 ? tr.noise_scale_m : tr.noise_scale_m / 8.0;
-            const float inv = which == 0 ? g.optics2.y : g.optics2.z;
-            const glm::vec3 off = which == 0 ? glm::vec3(g.base_offset) : glm::vec3(g.detail_offset);
+            const float inv = which == 0 ? g.base_noise_frequency : g.detail_noise_frequency;
+            const glm::vec3 off = which == 0 ? g.base_noise_offset : g.detail_noise_offset;
             const glm::vec3 coord = pf * inv + off;
             glm::dvec3 d = glm::dvec3(coord) - field / period;
             for (int c = 0; c < 3; ++c) d[c] -= std::round(d[c]);

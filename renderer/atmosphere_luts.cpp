@@ -3,14 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include <cmath>
+#include "renderer/gl/compute_dispatch.h"
 
 namespace cloudsvc {
-
-void dispatch_2d(int w, int h, int d) {
-  glDispatchCompute(static_cast<GLuint>((w + 7) / 8), static_cast<GLuint>((h + 7) / 8), static_cast<GLuint>(d));
-  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-}
 
 AtmosphereLuts::AtmosphereLuts()
     : sky_view_prog_(gl::ShaderProgram::compute("sky_view_lut.comp")),
@@ -25,94 +20,92 @@ AtmosphereLuts::AtmosphereLuts()
   {
     auto prog = gl::ShaderProgram::compute("transmittance_lut.comp");
     prog.use();
-    glBindImageTexture(0, transmittance_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    dispatch_2d(kTransmittanceW, kTransmittanceH);
+    glBindImageTexture(gpu::img::LUT_OUT, transmittance_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    gl::dispatch_2d(kTransmittanceW, kTransmittanceH);
   }
   {
     auto prog = gl::ShaderProgram::compute("multiscatter_lut.comp");
     prog.use();
-    glBindTextureUnit(0, transmittance_.id());
-    glBindImageTexture(0, multiscatter_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    dispatch_2d(kMultiscatterSize, kMultiscatterSize);
+    glBindTextureUnit(gpu::tex::TRANSMITTANCE_LUT, transmittance_.id());
+    glBindImageTexture(gpu::img::LUT_OUT, multiscatter_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    gl::dispatch_2d(kMultiscatterSize, kMultiscatterSize);
   }
   {
     auto prog = gl::ShaderProgram::compute("sky_irradiance_lut.comp");
     prog.use();
-    glBindTextureUnit(0, transmittance_.id());
-    glBindTextureUnit(1, multiscatter_.id());
-    glBindImageTexture(0, irradiance_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    dispatch_2d(kIrradianceSize, kIrradianceSize);
+    glBindTextureUnit(gpu::tex::TRANSMITTANCE_LUT, transmittance_.id());
+    glBindTextureUnit(gpu::tex::MULTISCATTER_LUT, multiscatter_.id());
+    glBindImageTexture(gpu::img::LUT_OUT, irradiance_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    gl::dispatch_2d(kIrradianceSize, kIrradianceSize);
   }
 }
 
 bool AtmosphereLuts::same_sky(const ViewKey& a, const ViewKey& b) {
-  const float zenith_a = std::acos(std::clamp(a.sun_dir.z, -1.0f, 1.0f));
-  const float zenith_b = std::acos(std::clamp(b.sun_dir.z, -1.0f, 1.0f));
-  return std::abs(a.planet.y - b.planet.y) < 1.0f && std::abs(zenith_a - zenith_b) < 1e-4f;
+  const double zenith_a = std::acos(std::clamp(a.sun_enu.z, -1.0, 1.0));
+  const double zenith_b = std::acos(std::clamp(b.sun_enu.z, -1.0, 1.0));
+  return std::abs(a.camera_altitude_m - b.camera_altitude_m) < 1.0 && std::abs(zenith_a - zenith_b) < 1e-4;
 }
 
-bool AtmosphereLuts::froxels_serve(const ViewKey& a, const FrameUniforms& u) {
-  const glm::vec3 sa(a.sun_dir), sb(u.sun_dir);
-  if (!(std::abs(a.planet.y - u.planet.y) < 1.0f && glm::length(sa - sb) < 1e-4f &&
-        std::abs(a.ap_params.x - u.ap_params.x) < 1.0f))
+bool AtmosphereLuts::froxels_serve(const ViewKey& a, const FrameContext& c) {
+  if (!(std::abs(a.camera_altitude_m - c.camera_altitude_m) < 1.0 && glm::length(a.sun_enu - c.sun_enu) < 1e-4 &&
+        std::abs(std::max(a.march_reach_m, 1000.0) - std::max(c.march_reach_m, 1000.0)) < 1.0))
     return false;
-  const float tx = u.view.x, ty = u.view.y;  // the camera's tan(half fov) per axis
+  const double tx = c.tan_half_fov_x, ty = c.tan_half_fov_y;
+  const ApFrustum& v = a.frustum;
   // not much coarser than a volume built for this camera would be
-  if (a.ap_right.w > (1.0f + 2.0f * kApMargin) * tx || a.ap_up.w > (1.0f + 2.0f * kApMargin) * ty) return false;
+  if (v.tan_half_width > (1.0 + 2.0 * kApMargin) * tx || v.tan_half_height > (1.0 + 2.0 * kApMargin) * ty) return false;
   // the camera's frustum (a convex cone spanned by its four corner rays) inside the volume's
-  const glm::vec3 f(u.camera_forward), r(u.camera_right), up(u.camera_up);
-  const glm::vec3 af(a.ap_forward), ar(a.ap_right), au(a.ap_up);
-  for (const float sx : {-1.0f, 1.0f})
-    for (const float sy : {-1.0f, 1.0f}) {
-      const glm::vec3 d = f + sx * tx * r + sy * ty * up;
-      const float z = glm::dot(d, af);
-      if (!(z > 0.0f) || std::abs(glm::dot(d, ar)) > a.ap_right.w * z || std::abs(glm::dot(d, au)) > a.ap_up.w * z)
+  for (const double sx : {-1.0, 1.0})
+    for (const double sy : {-1.0, 1.0}) {
+      const glm::dvec3 d = c.axes.forward + sx * tx * c.axes.right + sy * ty * c.axes.up;
+      const double z = glm::dot(d, v.forward);
+      if (!(z > 0.0) || std::abs(glm::dot(d, v.right)) > v.tan_half_width * z ||
+          std::abs(glm::dot(d, v.up)) > v.tan_half_height * z)
         return false;
     }
   return true;
 }
 
-AtmosphereLuts::ViewLutUpdate AtmosphereLuts::plan_view_dependent(FrameUniforms& u) {
+AtmosphereLuts::ViewLutUpdate AtmosphereLuts::plan_view_dependent(FrameContext& c) {
   ViewLutUpdate plan;
-  const ViewKey camera{u.camera_forward,
-                       glm::vec4(glm::vec3(u.camera_right), u.view.x * (1.0f + kApMargin)),
-                       glm::vec4(glm::vec3(u.camera_up), u.view.y * (1.0f + kApMargin)),
-                       u.planet, u.sun_dir, u.ap_params};
+  // a volume built now: the camera's frustum kApMargin wider per axis
+  const ViewKey camera{ApFrustum{c.axes.forward, c.axes.right, c.axes.up, c.tan_half_fov_x * (1.0 + kApMargin),
+                                 c.tan_half_fov_y * (1.0 + kApMargin)},
+                       c.camera_altitude_m, c.march_reach_m, c.sun_enu};
   plan.sky_view = !(last_sky_ && same_sky(*last_sky_, camera));
   if (plan.sky_view) last_sky_ = camera;
-  plan.aerial_perspective = !(last_froxels_ && froxels_serve(*last_froxels_, u));
+  plan.aerial_perspective = !(last_froxels_ && froxels_serve(*last_froxels_, c));
   if (plan.aerial_perspective) last_froxels_ = camera;
-  u.ap_forward = last_froxels_->ap_forward;
-  u.ap_right = last_froxels_->ap_right;
-  u.ap_up = last_froxels_->ap_up;
+  c.ap = last_froxels_->frustum;
   return plan;
 }
 
-void AtmosphereLuts::recompute(const ViewLutUpdate& plan) {
+void AtmosphereLuts::recompute(const ViewLutUpdate& plan, const FrameBuffers& frame) {
   if (!plan.sky_view && !plan.aerial_perspective) return;
-  glBindTextureUnit(0, transmittance_.id());
-  glBindTextureUnit(1, multiscatter_.id());
-  glBindTextureUnit(2, irradiance_.id());
+  frame.bind();
+  glBindTextureUnit(gpu::tex::TRANSMITTANCE_LUT, transmittance_.id());
+  glBindTextureUnit(gpu::tex::MULTISCATTER_LUT, multiscatter_.id());
+  glBindTextureUnit(gpu::tex::SKY_IRRADIANCE_LUT, irradiance_.id());
   if (plan.sky_view) {
     sky_view_prog_.use();
-    glBindImageTexture(0, sky_view_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    dispatch_2d(kSkyViewW, kSkyViewH);
+    glBindImageTexture(gpu::img::LUT_OUT, sky_view_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    gl::dispatch_2d(kSkyViewW, kSkyViewH);
   }
   if (plan.aerial_perspective) {
     ap_prog_.use();
-    glBindImageTexture(0, ap_inscatter_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    glBindImageTexture(1, ap_transmittance_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    dispatch_2d(kApSize, kApSize);
+    glBindImageTexture(gpu::img::AP_INSCATTER_OUT, ap_inscatter_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glBindImageTexture(gpu::img::AP_TRANSMITTANCE_OUT, ap_transmittance_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    gl::dispatch_2d(kApSize, kApSize);
   }
 }
 
-void AtmosphereLuts::bind_for_scene() const {
-  glBindTextureUnit(0, transmittance_.id());
-  glBindTextureUnit(1, multiscatter_.id());
-  glBindTextureUnit(2, irradiance_.id());
-  glBindTextureUnit(6, sky_view_.id());
-  glBindTextureUnit(7, ap_inscatter_.id());
-  glBindTextureUnit(8, ap_transmittance_.id());
+void AtmosphereLuts::bind_lookups() const {
+  glBindTextureUnit(gpu::tex::TRANSMITTANCE_LUT, transmittance_.id());
+  glBindTextureUnit(gpu::tex::MULTISCATTER_LUT, multiscatter_.id());
+  glBindTextureUnit(gpu::tex::SKY_IRRADIANCE_LUT, irradiance_.id());
+  glBindTextureUnit(gpu::tex::SKY_VIEW_LUT, sky_view_.id());
+  glBindTextureUnit(gpu::tex::AP_INSCATTER, ap_inscatter_.id());
+  glBindTextureUnit(gpu::tex::AP_TRANSMITTANCE, ap_transmittance_.id());
 }
 
 }  // namespace cloudsvc

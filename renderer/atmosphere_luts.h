@@ -6,7 +6,9 @@
 
 #include "renderer/gl/gl_objects.h"
 #include "renderer/gl/shader_program.h"
-#include "renderer/frame_uniforms.h"
+#include "renderer/gpu_interface.h"
+#include "renderer/frame_buffers.h"
+#include "renderer/frame_context.h"
 
 #include <cstddef>
 #include <optional>
@@ -35,9 +37,8 @@ class AtmosphereLuts {
     bool aerial_perspective = false;  // aerial-perspective volume
   };
 
-  // Decides which camera-dependent LUTs the frame u needs recomputed and writes the
-  // aerial-perspective volume's frustum into u (ap_forward, ap_right, ap_up); call before
-  // uploading u. The sky-view LUT is parameterised relative to the local vertical and the
+  // Decides which camera-dependent LUTs the frame needs recomputed and sets the
+  // aerial-perspective volume's frustum (frame.ap) it is built or kept for. The sky-view LUT is parameterised relative to the local vertical and the
   // sun's azimuth (Hillaire 2020 §5.3), so it depends only on the camera altitude (kept
   // within 1 m) and the sun's zenith angle (within 1e-4 rad, at least ~1.4 s of sun motion;
   // longer near solar noon, when the elevation hardly changes): turning the camera or
@@ -46,31 +47,32 @@ class AtmosphereLuts {
   // frustum stays inside it and is not much narrower (kApMargin again), and the altitude
   // (1 m), reach (1 m) and sun direction (1e-4 rad) hold. A camera turning at 3 deg/s
   // keeps it for about a second.
-  ViewLutUpdate plan_view_dependent(FrameUniforms& u);
-  // Recomputes what plan_view_dependent decided (the frame uniforms it wrote must be
-  // uploaded and bound at 0).
-  void recompute(const ViewLutUpdate& plan);
+  ViewLutUpdate plan_view_dependent(FrameContext& frame);
+  // Recomputes what plan_view_dependent decided, from the frame uniforms packed from its
+  // frame (bound here with the static LUTs it reads).
+  void recompute(const ViewLutUpdate& plan, const FrameBuffers& frame);
 
-  static constexpr float kApMargin = 0.1f;
+  static constexpr double kApMargin = 0.1f;
 
-  // Binds the LUTs to the texture units the scene shader expects (0, 1, 2, 6, 7, 8).
-  void bind_for_scene() const;
+  // Binds every LUT at its texture unit (gpu::tex: the atmosphere, sky-view and
+  // aerial-perspective units) for the passes that read them.
+  void bind_lookups() const;
 
  private:
   // The inputs the view-dependent LUTs were last computed for: for the froxels, the
-  // volume's frustum (ap_*), not the camera's.
+  // volume's frustum, not the camera's.
   struct ViewKey {
-    glm::vec4 ap_forward, ap_right, ap_up, planet, sun_dir, ap_params;
+    ApFrustum frustum;
+    double camera_altitude_m = 0.0, march_reach_m = 0.0;
+    glm::dvec3 sun_enu{0.0};
   };
   static bool same_sky(const ViewKey& a, const ViewKey& b);
-  // The volume of key a still serves frame u (camera frustum inside, inputs unchanged).
-  static bool froxels_serve(const ViewKey& a, const FrameUniforms& u);
+  // The volume of key a still serves the frame (camera frustum inside, inputs unchanged).
+  static bool froxels_serve(const ViewKey& a, const FrameContext& frame);
   std::optional<ViewKey> last_sky_, last_froxels_;
   gl::ShaderProgram sky_view_prog_, ap_prog_;
   gl::Texture transmittance_, multiscatter_, irradiance_, sky_view_, ap_inscatter_, ap_transmittance_;
 };
 
-// Dispatches a compute program over w x h (x d) invocations in 8x8 groups.
-void dispatch_2d(int w, int h, int d = 1);
 
 }  // namespace cloudsvc

@@ -1,49 +1,81 @@
-// CPU mirror of shaders/frame_uniforms.glsl (std140: only vec4/mat4 members, so the C++
-// layout matches without padding rules). Keep the two in sync.
+// The per-frame uniform block (binding gpu::ubo::FRAME), the C++ side of
+// shaders/frame_uniforms.glsl: every member has the same name, type and std140 offset on
+// both sides (tests/gpu_interface_test.cpp compares each offset GL reports with offsetof).
+// std140 rules kept by hand: a vec3 starts a 16-byte slot and the float after it fills the
+// slot (hence alignas(16) on every vec3 here); scalars pack 4 bytes apart; arrays of
+// structs and mat4 start on 16 bytes.
+// Frame: "local" = East-North-Up axes at the camera, origin at the camera, metres.
+// Written by pack_frame_uniforms (renderer/frame_uniforms_packing.h) only; no CPU code reads
+// it back.
 #pragma once
 
 #include <glm/glm.hpp>
 
+#include "renderer/gpu_interface.h"
+
 namespace cloudsvc {
 
 struct CloudLayerGpu {
-  glm::vec4 altitude;       // base m, top m, coverage, density scale
-  glm::vec4 optics;         // sigma_t max 1/m, g_HG, g_D, alpha
-  glm::vec4 optics2;        // w_D, 1/base period, 1/detail period, detail erosion
-  glm::vec4 profile;        // bottom ramp, top ramp, top weight, noise vertical scale
-  glm::vec4 base_offset;    // base noise offset (tile units), w = stratiform flag
-  glm::vec4 detail_offset;  // detail noise offset (tile units)
-  glm::mat4 noise_rotation;  // local ENU -> ECEF axes of the wind-rotated cloud field
+  float base_m, top_m;         // layer base and top altitude (m)
+  float coverage;              // [0, 1]; 0 = not marched (clear, or culled for this frame)
+  float density_scale;         // multiplies the extinction
+  float extinction_max;        // sigma_t of the densest cloud (1/m)
+  float g_hg, g_d, draine_alpha, w_d;  // Jendersie & d'Eon 2023 phase fit (droplet size)
+  float base_noise_frequency;    // 1 / base-noise period (1/m)
+  float detail_noise_frequency;  // 1 / detail-noise period (1/m)
+  float detail_erosion;          // how deep the detail noise erodes the base shape
+  float bottom_ramp, top_ramp, top_weight;  // vertical profile (weather::CloudTypeTraits)
+  float noise_vertical_scale;    // k: altitude scaled by k in noise space
+  alignas(16) glm::vec3 base_noise_offset;  // camera's field position, base-noise periods, wrapped
+  int stratiform;                            // 1: sheet not driven by the map's type channel
+  alignas(16) glm::vec3 detail_noise_offset;  // ... in detail-noise periods, wrapped
+  float unused_pad;
+  glm::mat4 noise_rotation;  // upper 3x3: local ENU -> ECEF axes of the wind-rotated field
 };
 
-constexpr int kGpuMaxLayers = 4;
-
 struct FrameUniforms {
-  glm::mat4 enu_to_ecef;
-  glm::vec4 camera_forward;
-  glm::vec4 camera_right;
-  glm::vec4 camera_up;
-  glm::vec4 view;
-  glm::vec4 planet;
-  glm::vec4 sun_dir;
-  glm::vec4 sun_irradiance;
-  glm::vec4 ground_albedo;
-  glm::vec4 quality;
-  glm::vec4 ms_params;
-  glm::vec4 ap_params;
-  glm::vec4 march;   // long-step factor, LOD on, pixel angle (rad), mean detail-noise value
-  glm::vec4 skips;   // coverage pyramid on (1/0), light-march optical-depth cut-off (1e30 = none), unused x2
+  glm::mat4 enu_to_ecef;  // rotation (upper 3x3): local ENU axes -> ECEF axes
+  alignas(16) glm::vec3 camera_forward;  // unit, local ENU
+  float tan_half_fov_x;
+  alignas(16) glm::vec3 camera_right;
+  float tan_half_fov_y;
+  alignas(16) glm::vec3 camera_up;
+  float pixel_angle_rad;  // angle one cloud pixel subtends at the image centre
+  alignas(16) glm::vec3 sun_direction;  // unit vector to the sun, local ENU
+  float weather_blend;                  // weight of the next weather keyframe [0, 1]
   // frustum of the aerial-perspective volume (AtmosphereLuts::plan_view_dependent): its
-  // forward, right (w: tan of half its width) and up (w: tan of half its height) axes
-  glm::vec4 ap_forward, ap_right, ap_up;
-  glm::ivec4 counts;
-  glm::vec4 noise_quantiles[4];  // base-noise quantiles at p = i / 15, i = 0..15
-  glm::vec4 weather_pole_south;  // weather map value at the south pole (row mean)
-  glm::vec4 weather_pole_north;  // ... and at the north pole
-  CloudLayerGpu layers[kGpuMaxLayers];
+  // forward, right and up axes and the tangents of its half width and height
+  alignas(16) glm::vec3 ap_forward;
+  float ap_max_distance_m;  // depth of the aerial-perspective volume
+  alignas(16) glm::vec3 ap_right;
+  float ap_tan_half_width;
+  alignas(16) glm::vec3 ap_up;
+  float ap_tan_half_height;
+  glm::vec2 image_size_px;  // frame width, height
+  float shell_radius_m;     // R of the cloud shell and ground sphere (osculating at the camera)
+  float camera_altitude_m;  // h; the sphere centre is at (0, 0, -(R + h))
+  float ground_altitude_m;
+  float march_reach_m;        // farthest cloud a ray can see over the horizon
+  float weather_map_height;   // texels
+  float step_growth_ref_m;    // t_ref of the primary-step distribution (0 = uniform steps)
+  int primary_steps, light_steps, ms_octaves, ground_shadow_steps;
+  float ms_extinction_scale, ms_energy_scale, ms_eccentricity_scale;  // Wrenninge octaves a, b, c
+  float light_march_cutoff_tau;  // light marches stop past this optical depth (1e30 = never)
+  float long_step_factor;        // probe steps in empty air are this many times longer (1 = off)
+  float detail_noise_mean;       // mean value of the detail noise (level of detail)
+  int level_of_detail;           // 1: detail noise and light steps follow the pixel footprint
+  int coverage_pyramid;          // 1: the coverage max-pyramid is bound and queried
+  int layer_count;
+  int frame_index;                // mod 65536: jitter sequences
+  int count_density_evaluations;  // 1: add them to the frame counters
+  int footprint_jitter;           // 1: rays through a per-frame point of the pixel
+  glm::vec4 noise_quantiles[4];   // base-noise value below which a fraction i/15 lies, i = 0..15
+  glm::vec4 weather_pole_south;   // weather map value at the south pole (row mean)
+  glm::vec4 weather_pole_north;   // ... at the north pole
+  CloudLayerGpu layers[gpu::kMaxLayers];
 };
 
 static_assert(sizeof(CloudLayerGpu) == 10 * 16, "std140 layout");
-static_assert(sizeof(FrameUniforms) == 64 + 23 * 16 + kGpuMaxLayers * 10 * 16, "std140 layout");
+static_assert(sizeof(FrameUniforms) == 64 + 19 * 16 + gpu::kMaxLayers * 10 * 16, "std140 layout");
 
 }  // namespace cloudsvc

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <string>
 
-#include "renderer/atmosphere_luts.h"
+#include "renderer/gl/compute_dispatch.h"
 #include "renderer/temporal_reprojection.h"
 
 namespace cloudsvc {
@@ -33,7 +33,7 @@ std::string shadow_map_stale_reason(const ShadowMapKey& key, const ViewRequest& 
   // drift of each layer's field under the camera since the build
   const Reprojection r = make_reprojection(key.anchor, view, weather, wind_anchor);
   const glm::dvec3 under_camera(0.0, 0.0, -view.position.alt_m);
-  for (std::size_t i = 0; i < std::min<std::size_t>(weather.layers.size(), 4); ++i) {
+  for (std::size_t i = 0; i < std::min<std::size_t>(weather.layers.size(), gpu::kMaxLayers); ++i) {
     const glm::dvec3 with_wind = glm::dvec3(r.transform[i] * glm::dvec4(under_camera, 1.0));
     const glm::dvec3 without = glm::dvec3(r.transform[kGroundTransform] * glm::dvec4(under_camera, 1.0));
     if (glm::length(with_wind - without) > kReachFraction * key.warp_m) return "wind drift";
@@ -56,61 +56,69 @@ GroundShadowMap::GroundShadowMap()
     glTextureParameteri(id, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
     return gl::Texture(id);
   };
-  map_ = make(GL_TEXTURE_2D_ARRAY, kSize, kSize, 4);
-  volume_ = make(GL_TEXTURE_3D, kVolumeSize, kVolumeSize, kVolumeLevels * 4);
+  map_ = make(GL_TEXTURE_2D_ARRAY, kSize, kSize, gpu::kMaxLayers);
+  volume_ = make(GL_TEXTURE_3D, kVolumeSize, kVolumeSize, kVolumeLevels * gpu::kMaxLayers);
 }
 
-bool GroundShadowMap::update(const ViewRequest& view, const FrameUniforms& u, const weather::Weather& weather,
-                             const WindAnchor& wind_anchor, std::uint64_t weather_generation, bool per_pixel,
-                             bool light_volume, bool needed) {
+bool GroundShadowMap::update(const FrameContext& frame, const CloudPassInputs& inputs,
+                             const weather::Weather& weather, const WindAnchor& wind_anchor, std::uint64_t weather_generation, int light_steps,
+                             bool per_pixel, bool light_volume, bool needed) {
+  const ViewRequest& view = frame.view;
   ShadowMapUniforms su{};
   for (auto& m : su.to_anchor) m = glm::mat4(1.0f);
-  if (!needed) {  // params and volume zero: no map, no per-pixel shadows, no volume this frame
-    glNamedBufferSubData(uniforms_.id(), 0, sizeof(ShadowMapUniforms), &su);
-    glBindBufferBase(GL_UNIFORM_BUFFER, 2, uniforms_.id());
+  const auto upload = [&] { glNamedBufferSubData(uniforms_.id(), 0, sizeof(ShadowMapUniforms), &su); };
+  if (!needed) {  // everything off: no map, no per-pixel shadows, no volume this frame
+    upload();
     return false;
   }
-  const glm::dmat3 enu = geo::enu_to_ecef(view.position.lat_deg, view.position.lon_deg);
-  const glm::dvec3 sun_ecef = glm::normalize(enu * glm::dvec3(u.sun_dir.x, u.sun_dir.y, u.sun_dir.z));
-  const bool night = u.sun_dir.z < std::sin(kNightDeg * M_PI / 180.0);
+  const bool night = frame.sun_enu.z < std::sin(kNightDeg * M_PI / 180.0);
   bool rebuilt = false;
   if (night || weather.layers.empty()) {
     key_.reset();
   } else if (per_pixel) {
-    su.params = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+    su.march_per_pixel = 1;
   } else {
-    const int light_steps = static_cast<int>(u.quality.y);
     const bool volume_missing = light_volume && key_ && (!key_->light_volume || key_->light_steps != light_steps);
     if (!key_ || volume_missing ||
-        !shadow_map_stale_reason(*key_, view, sun_ecef, weather_generation, weather, wind_anchor).empty()) {
-      key_ = ShadowMapKey{view, sun_ecef, weather_generation, shadow_map_warp(view.position.alt_m), light_volume,
+        !shadow_map_stale_reason(*key_, view, frame.sun_ecef, weather_generation, weather, wind_anchor).empty()) {
+      key_ = ShadowMapKey{view, frame.sun_ecef, weather_generation, shadow_map_warp(view.position.alt_m), light_volume,
                           light_steps};
-      su.params = glm::vec4(static_cast<float>(key_->warp_m), static_cast<float>(kSize), 1.0f, 0.0f);
-      su.volume = glm::vec4(static_cast<float>(kVolumeLevels), static_cast<float>(kVolumeSize), 0.0f, 0.0f);
-      glNamedBufferSubData(uniforms_.id(), 0, sizeof(ShadowMapUniforms), &su);
-      glBindBufferBase(GL_UNIFORM_BUFFER, 2, uniforms_.id());
-      const int layers = static_cast<int>(std::min<std::size_t>(weather.layers.size(), 4));
-      build_prog_.use();
-      glBindImageTexture(0, map_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
-      dispatch_2d(kSize, kSize, layers);
+      su.warp_m = static_cast<float>(key_->warp_m);
+      su.map_texels = kSize;
+      su.map_valid = 1;
+      su.volume_levels = kVolumeLevels;
+      su.volume_texels = kVolumeSize;
+      upload();
+      inputs.bind();
+      glBindBufferBase(GL_UNIFORM_BUFFER, gpu::ubo::SHADOW_MAP, uniforms_.id());
+      const int layers = static_cast<int>(std::min<std::size_t>(weather.layers.size(), gpu::kMaxLayers));
+      build_prog_.use();  // (the light volume pass does not read the map it is built with)
+      glBindImageTexture(gpu::img::SHADOW_MAP_OUT, map_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
+      gl::dispatch_2d(kSize, kSize, layers);
       if (light_volume) {
         volume_prog_.use();
-        glBindImageTexture(0, volume_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
-        dispatch_2d(kVolumeSize, kVolumeSize, layers * kVolumeLevels);
+        glBindImageTexture(gpu::img::LIGHT_VOLUME_OUT, volume_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
+        gl::dispatch_2d(kVolumeSize, kVolumeSize, layers * kVolumeLevels);
       }
       rebuilt = true;
     }
     const Reprojection r = make_reprojection(key_->anchor, view, weather, wind_anchor);
-    for (int i = 0; i < 4; ++i) su.to_anchor[i] = glm::mat4(r.transform[i]);
-    su.params = glm::vec4(static_cast<float>(key_->warp_m), static_cast<float>(kSize), 1.0f, 0.0f);
-    su.volume = glm::vec4(static_cast<float>(kVolumeLevels), static_cast<float>(kVolumeSize), light_volume ? 1.0f : 0.0f,
-                          0.0f);
+    for (int i = 0; i < gpu::kMaxLayers; ++i) su.to_anchor[i] = glm::mat4(r.transform[i]);
+    su.warp_m = static_cast<float>(key_->warp_m);
+    su.map_texels = kSize;
+    su.map_valid = 1;
+    su.volume_levels = kVolumeLevels;
+    su.volume_texels = kVolumeSize;
+    su.volume_valid = light_volume ? 1 : 0;
   }
-  glNamedBufferSubData(uniforms_.id(), 0, sizeof(ShadowMapUniforms), &su);
-  glBindBufferBase(GL_UNIFORM_BUFFER, 2, uniforms_.id());
-  glBindTextureUnit(14, map_.id());
-  glBindTextureUnit(15, volume_.id());
+  upload();
   return rebuilt;
+}
+
+void GroundShadowMap::bind_lookups() const {
+  glBindBufferBase(GL_UNIFORM_BUFFER, gpu::ubo::SHADOW_MAP, uniforms_.id());
+  glBindTextureUnit(gpu::tex::GROUND_SHADOW_MAP, map_.id());
+  glBindTextureUnit(gpu::tex::LIGHT_VOLUME, volume_.id());
 }
 
 }  // namespace cloudsvc

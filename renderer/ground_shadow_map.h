@@ -14,7 +14,8 @@
 // (shaders/light_volume.glsl, RenderQuality::light_volume): each layer's optical depth
 // towards the sun from points inside it, on the map's warped grid (kVolumeSize per side)
 // times kVolumeLevels altitude levels, which the cloud march then looks up instead of
-// marching towards the sun from every sample (a Beer-law shadow volume, seed 000).
+// marching towards the sun from every sample (a Beer-law shadow volume: optical depth interpolated, Beer's law applied after the
+// lookup; docs/RENDERING.md).
 #pragma once
 
 #include <cstdint>
@@ -25,18 +26,16 @@
 #include "renderer/frame_uniforms.h"
 #include "renderer/gl/gl_objects.h"
 #include "renderer/gl/shader_program.h"
-#include "renderer/render_types.h"
-#include "renderer/wind_drift.h"
+#include "renderer/cloud_pass_inputs.h"
+#include "renderer/frame_context.h"
+#include "renderer/shadow_map_uniforms.h"
+#include "renderer/api/frame_image.h"
+#include "renderer/api/render_quality.h"
+#include "renderer/api/view_request.h"
+#include "weather/wind_drift.h"
 #include "weather/cloud_layer.h"
 
 namespace cloudsvc {
-
-struct ShadowMapUniforms {
-  glm::mat4 to_anchor[4];  // current local -> anchor local (m), per layer (wind drift included)
-  glm::vec4 params;        // K (m), N (texels), map valid (1/0), march per pixel instead (1/0)
-  glm::vec4 volume;        // light volume: levels per layer, texels per side, valid (1/0), unused
-};
-static_assert(sizeof(ShadowMapUniforms) == 4 * 64 + 32, "std140 layout");
 
 // What the map was built for.
 struct ShadowMapKey {
@@ -67,24 +66,28 @@ class GroundShadowMap {
 
   GroundShadowMap();
 
-  // Rebuilds the map if stale (the frame uniforms of `view` must be bound at 0 and the
-  // noise/weather/LUT textures at their units), then uploads the lookup uniforms for this
-  // view at binding 2 and binds the map at texture unit 14. Returns true if it rebuilt.
+  // Rebuilds the map if stale (from `inputs`, which hold the frame uniforms packed from
+  // `frame`), then uploads the lookup uniforms for this view. Returns true if it rebuilt.
   // per_pixel: no map; the composite marches the shadows of every ground pixel.
-  // light_volume: also build (with the map) and bind the light volume at unit 15 (not
-  // with per_pixel). needed = false (no ground in view and no march that reads the volume):
-  // nothing is built or marched, the lookups are switched off for this frame, and the map
-  // kept for a later frame that needs it.
-  bool update(const ViewRequest& view, const FrameUniforms& u, const weather::Weather& weather,
-              const WindAnchor& wind_anchor, std::uint64_t weather_generation, bool per_pixel, bool light_volume,
+  // light_volume: also build the light volume (with the map, light_steps light steps;
+  // not with per_pixel). needed = false (no ground in
+  // view and no march that reads the volume): nothing is built or marched, the lookups
+  // are switched off for this frame, and the map kept for a later frame that needs it.
+  bool update(const FrameContext& frame, const CloudPassInputs& inputs, const weather::Weather& weather,
+              const WindAnchor& wind_anchor,
+              std::uint64_t weather_generation, int light_steps, bool per_pixel, bool light_volume,
               bool needed = true);
+
+  // Binds the lookup uniforms (gpu::ubo::SHADOW_MAP), the map (gpu::tex::GROUND_SHADOW_MAP)
+  // and the light volume (gpu::tex::LIGHT_VOLUME) for the passes that read them.
+  void bind_lookups() const;
 
   void invalidate() { key_.reset(); }
   static constexpr int kVolumeSize = 128;   // texels per side (2K/128 under the anchor: 125 m at K = 8 km)
   static constexpr int kVolumeLevels = 16;  // altitude levels per layer
   static constexpr std::size_t gpu_bytes() {
-    return static_cast<std::size_t>(kSize) * kSize * 4 * 4 +
-           static_cast<std::size_t>(kVolumeSize) * kVolumeSize * kVolumeLevels * 4 * 4;
+    return static_cast<std::size_t>(kSize) * kSize * gpu::kMaxLayers * sizeof(float) +
+           static_cast<std::size_t>(kVolumeSize) * kVolumeSize * kVolumeLevels * gpu::kMaxLayers * sizeof(float);
   }
 
  private:

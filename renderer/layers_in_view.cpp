@@ -51,21 +51,20 @@ MuRange frustum_mu_range(const glm::dvec3& f, const glm::dvec3& r, const glm::dv
   return range;
 }
 
-FrameRays classify_frame_rays(const FrameUniforms& uf) {
-  const glm::dvec3 f(uf.camera_forward), r(uf.camera_right), u(uf.camera_up);
-  const MuRange mu = frustum_mu_range(f, r, u, uf.view.x, uf.view.y);
-  // float axes: the range is widened by a margin far above their rounding (1e-6), far below
-  // a pixel (1e-4 rad)
+FrameRays classify_frame_rays(const FrameContext& c) {
+  const MuRange mu = frustum_mu_range(c.axes.forward, c.axes.right, c.axes.up, c.tan_half_fov_x, c.tan_half_fov_y);
+  // the GPU's axes are these rounded to float: the range is widened by a margin far above
+  // their rounding (1e-6), far below a pixel (1e-4 rad)
   const double margin = 1e-5;
-  const double R = uf.planet.x, h = uf.planet.y, ground = uf.planet.z;
+  const double R = c.shell_radius_m, h = c.camera_altitude_m, ground = c.ground_altitude_m;
   // zenith cosine of the rays tangent to the ground sphere from the camera (rays below hit it)
   const double mu_ground = h > ground ? -std::sqrt(std::max(0.0, one_minus_ratio_sq(R, h, ground))) : 0.0;
   FrameRays out;
   out.sees_ground = mu.min < mu_ground + margin;
-  for (int i = 0; i < std::min(uf.counts.x, kGpuMaxLayers) && !out.meets_a_layer; ++i) {
-    const CloudLayerGpu& L = uf.layers[i];
-    if (L.altitude.z <= 0.0f) continue;  // culled or clear: not marched
-    const double base = L.altitude.x, top = L.altitude.y;
+  for (int i = 0; i < c.layer_count && !out.meets_a_layer; ++i) {
+    const LayerFrame& L = c.layers[static_cast<size_t>(i)];
+    if (L.drawn_coverage() <= 0.0) continue;  // culled or clear: not marched
+    const double base = L.layer.base_m, top = L.layer.top_m;
     if (h >= top)  // rays below the top sphere's tangent meet it
       out.meets_a_layer = mu.min < -std::sqrt(std::max(0.0, one_minus_ratio_sq(R, h, top))) + margin;
     else if (h >= base)  // inside the layer

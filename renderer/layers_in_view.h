@@ -13,7 +13,7 @@
 
 #include <glm/glm.hpp>
 
-#include "renderer/frame_uniforms.h"
+#include "renderer/frame_context.h"
 
 namespace cloudsvc {
 
@@ -26,15 +26,15 @@ struct MuRange {
 // the half fields of view).
 MuRange frustum_mu_range(const glm::dvec3& f, const glm::dvec3& r, const glm::dvec3& u, double tx, double ty);
 
-// What the rays of the frame described by u reach.
+// What the rays of the frame reach.
 struct FrameRays {
-  // some ray meets a layer with coverage > 0 (culled layers, coverage 0, do not count: the
-  // march skips them anyway)
+  // some ray meets a layer with coverage > 0 (culled layers do not count: the march skips
+  // them anyway)
   bool meets_a_layer = false;
   // some ray hits the ground sphere (whose pixels need the ground shadow map); false, for
   // example, for a camera looking up
   bool sees_ground = false;
 };
-FrameRays classify_frame_rays(const FrameUniforms& u);
+FrameRays classify_frame_rays(const FrameContext& frame);
 
 }  // namespace cloudsvc

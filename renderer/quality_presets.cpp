@@ -39,7 +39,7 @@ RenderQuality reuse(RenderQuality q, int stride) {
   if (stride == 4) q.fast_motion_px = 1.0;
   // each frame's sample through another point of the pixel: the accumulated history is the
   // pixel's footprint average (antialiasing), the quantity cloudbench's reference is
-  // (docs/STABILITY.md, "Footprint jitter")
+  // (docs/STABILITY.md, "2. Smoothness")
   q.footprint_jitter = true;
   return q;
 }

@@ -20,7 +20,7 @@ glm::dvec2 tan_half_fov(const ViewRequest& v) {
 
 bool same_march(const RenderQuality& a, const RenderQuality& b) {
   return a.primary_steps == b.primary_steps && a.light_steps == b.light_steps && a.ms_octaves == b.ms_octaves &&
-         a.ground_shadow_steps == b.ground_shadow_steps && a.ms_a == b.ms_a && a.ms_b == b.ms_b && a.ms_c == b.ms_c &&
+         a.ground_shadow_steps == b.ground_shadow_steps && a.ms_extinction_scale == b.ms_extinction_scale && a.ms_energy_scale == b.ms_energy_scale && a.ms_eccentricity_scale == b.ms_eccentricity_scale &&
          a.step_growth_ref_m == b.step_growth_ref_m && a.temporal_stride == b.temporal_stride &&
          a.cloud_resolution_divisor == b.cloud_resolution_divisor && a.long_step_factor == b.long_step_factor &&
          a.level_of_detail == b.level_of_detail && a.temporal_reuse == b.temporal_reuse &&
@@ -117,28 +117,39 @@ bool fast_cloud_motion(const Reprojection& r, const RenderQuality& quality) {
   return quality.fast_motion_px > 0.0 && r.cloud_motion_px > quality.fast_motion_px;
 }
 
-TemporalUniforms make_temporal_uniforms(const ViewRequest& cur, const RenderQuality& quality, bool history,
-                                        const Reprojection* reprojection, const ViewRequest* prev,
-                                        bool fast_motion) {
+TemporalPlan plan_temporal_frame(const ViewRequest& cur, const RenderQuality& quality, bool history,
+                                 const ViewRequest* prev, bool fast_motion) {
+  TemporalPlan p;
+  p.divisor = std::max(1, quality.cloud_resolution_divisor);
+  p.buffer_size = cloud_buffer_size(cur.width, cur.height, p.divisor);
+  p.history = history;
+  p.stride = history ? std::max(1, quality.temporal_stride) : 1;
+  if (history && fast_motion) p.stride = std::min(p.stride, 2);
+  p.offset = fresh_pixel_offset(p.stride, cur.frame_index);
+  p.camera_still = history && prev && camera_still(*prev, cur);
+  return p;
+}
+
+TemporalUniforms pack_temporal_uniforms(const TemporalPlan& p, const RenderQuality& quality,
+                                        const Reprojection* reprojection, const ViewRequest* prev) {
   TemporalUniforms u{};
-  const int divisor = std::max(1, quality.cloud_resolution_divisor);
-  const glm::ivec2 size = cloud_buffer_size(cur.width, cur.height, divisor);
-  // Without history every cloud pixel is marched.
-  int stride = history ? std::max(1, quality.temporal_stride) : 1;
-  if (history && fast_motion) stride = std::min(stride, 2);
-  const glm::ivec2 offset = fresh_pixel_offset(stride, cur.frame_index);
-  u.grid = glm::ivec4(stride, offset.x, offset.y, history ? 1 : 0);
-  u.buffer_size = glm::ivec4(size.x, size.y, divisor, quality.neighbourhood_clamp ? 1 : 0);
-  u.blend = glm::vec4(static_cast<float>(quality.history_blend_min), 0.0f, 0.0f, 0.0f);
-  if (history && prev) u.blend.y = camera_still(*prev, cur) ? 1.0f : 0.0f;
+  u.fresh_stride = p.stride;
+  u.fresh_offset = p.offset;
+  u.history_valid = p.history ? 1 : 0;
+  u.cloud_buffer_size = p.buffer_size;
+  u.cloud_divisor = p.divisor;
+  u.neighbourhood_clamp = quality.neighbourhood_clamp ? 1 : 0;
+  u.history_blend_min = static_cast<float>(quality.history_blend_min);
+  u.camera_still = p.camera_still ? 1 : 0;
   for (auto& m : u.reproject) m = glm::mat4(1.0f);
-  if (history && reprojection && prev) {
-    for (int i = 0; i < 5; ++i) u.reproject[i] = glm::mat4(reprojection->transform[i]);
-    u.prev_forward = glm::vec4(glm::vec3(reprojection->prev_axes.forward), 0.0f);
-    u.prev_right = glm::vec4(glm::vec3(reprojection->prev_axes.right), 0.0f);
-    u.prev_up = glm::vec4(glm::vec3(reprojection->prev_axes.up), 0.0f);
+  if (p.history && reprojection && prev) {
+    for (int i = 0; i <= gpu::kMaxLayers; ++i) u.reproject[i] = glm::mat4(reprojection->transform[i]);
+    u.prev_forward = glm::vec3(reprojection->prev_axes.forward);
+    u.prev_right = glm::vec3(reprojection->prev_axes.right);
+    u.prev_up = glm::vec3(reprojection->prev_axes.up);
     const glm::dvec2 t = tan_half_fov(*prev);
-    u.prev_view = glm::vec4(static_cast<float>(t.x), static_cast<float>(t.y), 0.0f, 0.0f);
+    u.prev_tan_half_fov_x = static_cast<float>(t.x);
+    u.prev_tan_half_fov_y = static_cast<float>(t.y);
   }
   return u;
 }

@@ -8,9 +8,11 @@
 
 #include <glm/glm.hpp>
 
-#include "renderer/render_types.h"
+#include "renderer/api/frame_image.h"
+#include "renderer/api/render_quality.h"
+#include "renderer/api/view_request.h"
 #include "renderer/temporal_uniforms.h"
-#include "renderer/wind_drift.h"
+#include "weather/wind_drift.h"
 #include "weather/cloud_layer.h"
 
 namespace cloudsvc {
@@ -45,7 +47,7 @@ bool camera_still(const ViewRequest& prev, const ViewRequest& cur);
 // wind between the two times), and for the ground at index kGroundTransform. Layers
 // beyond the weather's get the ground transform.
 struct Reprojection {
-  glm::dmat4 transform[5];
+  glm::dmat4 transform[gpu::kMaxLayers + 1];
   geo::BodyAxes prev_axes;  // previous camera axes in its own local frame
   double cloud_motion_px = 0.0;  // cloud_motion_px() of the two frames
 };
@@ -76,12 +78,26 @@ struct FastMotionHold {
   }
 };
 
-// The uniform block for one frame. history: whether the previous buffer is usable (then
-// reprojection must be given). The stride is quality.temporal_stride, or at most 2 (1/4
-// of the pixels) with fast_motion (FastMotionHold).
-TemporalUniforms make_temporal_uniforms(const ViewRequest& cur, const RenderQuality& quality, bool history,
-                                        const Reprojection* reprojection, const ViewRequest* prev,
-                                        bool fast_motion = false);
+// Which cloud pixels a frame marches and what it reuses (CPU side; packed into the
+// TemporalUniforms by pack_temporal_uniforms). history: whether the previous buffer is
+// usable. The stride is quality.temporal_stride, or at most 2 (1/4 of the pixels) with
+// fast_motion (FastMotionHold); without history every pixel is marched.
+struct TemporalPlan {
+  bool history = false;          // the previous frame's buffer is reprojected
+  int stride = 1;                // one cloud pixel in stride x stride is marched
+  glm::ivec2 offset{0};          // ... at this offset within its cell (fresh_pixel_offset)
+  glm::ivec2 buffer_size{0};     // cloud buffer, cloud pixels
+  int divisor = 1;               // frame pixels per cloud pixel, per axis
+  bool camera_still = false;     // history && camera_still(prev, cur)
+
+  double marched_fraction() const { return 1.0 / (static_cast<double>(stride) * stride); }
+};
+TemporalPlan plan_temporal_frame(const ViewRequest& cur, const RenderQuality& quality, bool history,
+                                 const ViewRequest* prev, bool fast_motion = false);
+
+// The uniform block of a plan (reprojection and prev: given when plan.history).
+TemporalUniforms pack_temporal_uniforms(const TemporalPlan& plan, const RenderQuality& quality,
+                                        const Reprojection* reprojection, const ViewRequest* prev);
 
 // Cloud-buffer size for a frame of w x h frame pixels.
 glm::ivec2 cloud_buffer_size(int w, int h, int divisor);

@@ -1,5 +1,5 @@
-// The documented demo scene set rendered by `cloudsvc demo` (README command 1) and
-// listed in docs/DEMO.md.
+// The documented demo scene set rendered by `cloudsvc demo` (README command 1), listed in
+// the README ("Demo scenes") and defined in demo_scenes.cpp.
 #pragma once
 
 #include <string>

@@ -5,7 +5,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "renderer/render_types.h"
+#include "renderer/api/frame_image.h"
+#include "renderer/api/render_quality.h"
+#include "renderer/api/view_request.h"
 
 namespace cloudsvc {
 

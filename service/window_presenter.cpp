@@ -7,6 +7,7 @@
 
 #include "renderer/gl/gl_objects.h"
 #include "renderer/gl/shader_program.h"
+#include "renderer/gpu_interface.h"
 #include "renderer/image_output.h"
 
 namespace cloudsvc {
@@ -28,7 +29,7 @@ struct WindowPresenter::Impl {
     glClear(GL_COLOR_BUFFER_BIT);
     if (has_frame) {
       present.use();
-      glBindTextureUnit(0, shown.id());
+      glBindTextureUnit(gpu::tex::PRESENT_FRAME, shown.id());
       glBindVertexArray(vao);
       glDrawArrays(GL_TRIANGLES, 0, 3);
     }

@@ -6,7 +6,9 @@
 #include <memory>
 #include <string>
 
-#include "renderer/render_types.h"
+#include "renderer/api/frame_image.h"
+#include "renderer/api/render_quality.h"
+#include "renderer/api/view_request.h"
 
 struct GLFWwindow;
 

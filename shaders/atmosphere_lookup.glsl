@@ -1,6 +1,6 @@
 // Lookups into the atmosphere LUTs; needs atmosphere_model.glsl.
-layout(binding = 0) uniform sampler2D transmittance_lut;   // 256x64, rgb transmittance to the top
-layout(binding = 1) uniform sampler2D multiscatter_lut;    // 32x32, rgb Psi_ms (Hillaire 2020 eq. 10)
+layout(binding = TEX_TRANSMITTANCE_LUT) uniform sampler2D transmittance_lut;   // 256x64, rgb transmittance to the top
+layout(binding = TEX_MULTISCATTER_LUT) uniform sampler2D multiscatter_lut;    // 32x32, rgb Psi_ms (Hillaire 2020 eq. 10)
 
 // Transmittance from altitude alt along zenith cosine mu to space; 0 if the planet blocks it.
 vec3 transmittance_to_space(float alt, float mu) {
@@ -62,7 +62,7 @@ float atmosphere_path_length(float r, float mu) {
   return ray_hits_ground(r, mu) ? distance_to_bottom(r, mu) : distance_to_top(r, mu);
 }
 
-layout(binding = 2) uniform sampler2D sky_irradiance_lut;  // 32x32, rgb E_sky for unit sun
+layout(binding = TEX_SKY_IRRADIANCE_LUT) uniform sampler2D sky_irradiance_lut;  // 32x32, rgb E_sky for unit sun
 
 // Sky irradiance on an upward-facing surface at altitude alt, unit sun irradiance.
 vec3 sky_irradiance(float alt, float mu_sun) {

@@ -1,21 +1,9 @@
 // Earth atmosphere in the style of Hillaire 2020, "A Scalable and Production Ready Sky
-// and Atmosphere Rendering Technique" (EGSR), constants from DESIGN.md §4 (Bruneton 2017
-// uses the same Rayleigh/Mie values). Lengths in metres, coefficients in 1/m. The
-// atmosphere is spherically symmetric: only the altitude and the zenith cosine of a ray
-// matter, so it uses its own radius (6360 km) regardless of the cloud-shell radius.
-
-const float ATMO_BOTTOM = 6360.0e3;            // m
-const float ATMO_TOP = 6460.0e3;               // m (100 km thick)
-const vec3 RAYLEIGH_SCATTERING = vec3(5.802e-6, 13.558e-6, 33.1e-6);  // 1/m at 680, 550, 440 nm
-const float RAYLEIGH_SCALE_HEIGHT = 8000.0;    // m
-const float MIE_SCATTERING = 3.996e-6;         // 1/m
-const float MIE_EXTINCTION = 4.44e-6;          // 1/m
-const float MIE_SCALE_HEIGHT = 1200.0;         // m
-const float MIE_G = 0.8;
-const vec3 OZONE_ABSORPTION = vec3(0.650e-6, 1.881e-6, 0.085e-6);     // 1/m at the tent peak
-// Ground albedo seen by the multiple-scattering LUT: the same values as kGroundAlbedo in
-// renderer/scene_setup.h (680/550/440 nm).
-const vec3 GROUND_ALBEDO_ATMO = vec3(0.14, 0.12, 0.08);
+// and Atmosphere Rendering Technique" (EGSR). Its constants (ATMO_BOTTOM, ATMO_TOP,
+// RAYLEIGH_*, MIE_*, OZONE_ABSORPTION) come from renderer/model/atmosphere_constants.h
+// through the preamble of renderer/gpu_interface.cpp. Lengths in metres, coefficients in
+// 1/m. The atmosphere is spherically symmetric: only the altitude and the zenith cosine of
+// a ray matter, so it uses its own radius (6360 km) regardless of the cloud-shell radius.
 
 struct AtmoMedium {
   vec3 rayleigh;   // scattering, 1/m

@@ -1,17 +1,17 @@
-// Cloud density field (Schneider 2015 / Nubis, seeds 002-004): coverage from the layer
-// and the global weather map, a vertical profile by cloud type, Perlin-Worley base shape
-// and Worley detail erosion. Returns the extinction coefficient sigma_t in 1/m.
+// Cloud density field (Schneider 2015, "The real-time volumetric cloudscapes of Horizon
+// Zero Dawn"; Ford 2024 §3.1, §4.2): coverage from the layer and the global weather map, a
+// vertical profile by cloud type, Perlin-Worley base shape and Worley detail erosion. Returns the extinction coefficient sigma_t in 1/m.
 // Needs frame_uniforms.glsl and common.glsl.
 
-layout(binding = 3) uniform sampler3D base_noise;    // 128^3, tiles (REPEAT)
-layout(binding = 4) uniform sampler3D detail_noise;  // 32^3, tiles (REPEAT)
-layout(binding = 5) uniform sampler2D weather_map;       // equirectangular lat/lon, REPEAT in lon
-layout(binding = 9) uniform sampler2D weather_map_next;  // the next keyframe, blended by U.ap_params.z
+layout(binding = TEX_BASE_NOISE) uniform sampler3D base_noise;      // tiles (REPEAT)
+layout(binding = TEX_DETAIL_NOISE) uniform sampler3D detail_noise;  // tiles (REPEAT)
+layout(binding = TEX_WEATHER_MAP) uniform sampler2D weather_map;       // equirectangular lat/lon, REPEAT in lon
+layout(binding = TEX_WEATHER_MAP_NEXT) uniform sampler2D weather_map_next;  // the next keyframe, blended by frame.weather_blend
 
 uint g_density_evals = 0u;  // per-invocation count of density evaluations
 
 // A point p of the local frame as seen from the shell centre, in ECEF axes (m).
-vec3 from_shell_centre(vec3 p) { return mat3(U.enu_to_ecef) * (p + vec3(0.0, 0.0, U.planet.x + U.planet.y)); }
+vec3 from_shell_centre(vec3 p) { return mat3(frame.enu_to_ecef) * (p + vec3(0.0, 0.0, frame.shell_radius_m + frame.camera_altitude_m)); }
 
 // Latitude and longitude (rad) of the direction q from the shell centre, as the weather map
 // is indexed. atan2 for latitude keeps full precision near the poles (asin would lose ~km
@@ -25,20 +25,20 @@ vec4 weather_at(vec3 p) {
   vec2 uv = vec2(ll.y * (0.5 / PI) + 0.5, ll.x / PI + 0.5);
   // the next keyframe only while one is fading in (a uniform branch: no divergence)
   vec4 w = textureLod(weather_map, uv, 0.0);
-  if (U.ap_params.z > 0.0) w = mix(w, textureLod(weather_map_next, uv, 0.0), U.ap_params.z);
+  if (frame.weather_blend > 0.0) w = mix(w, textureLod(weather_map_next, uv, 0.0), frame.weather_blend);
   // Within half a texel row of a pole, blend to the pole's value (as WeatherMap::sample
   // does): every longitude meets at the same value, no pinwheel at the pole.
-  float y = uv.y * U.ap_params.y - 0.5;
-  if (y < 0.0) w = mix(w, U.weather_pole_south, min(1.0, -2.0 * y));
-  else if (y > U.ap_params.y - 1.0) w = mix(w, U.weather_pole_north, min(1.0, 2.0 * (y - U.ap_params.y + 1.0)));
+  float y = uv.y * frame.weather_map_height - 0.5;
+  if (y < 0.0) w = mix(w, frame.weather_pole_south, min(1.0, -2.0 * y));
+  else if (y > frame.weather_map_height - 1.0) w = mix(w, frame.weather_pole_north, min(1.0, 2.0 * (y - frame.weather_map_height + 1.0)));
   return w;
 }
 
 // Vertical profile over the height fraction f of the layer (0 base, 1 top).
-float height_profile(vec4 prof, float f) {
-  float bottom = smoothstep(0.0, max(prof.x, 1e-3), f);
-  float top = 1.0 - smoothstep(1.0 - max(prof.y, 1e-3), 1.0, f);
-  return bottom * top * mix(1.0, f, prof.z);
+float height_profile(CloudLayerGpu L, float f) {
+  float bottom = smoothstep(0.0, max(L.bottom_ramp, 1e-3), f);
+  float top = 1.0 - smoothstep(1.0 - max(L.top_ramp, 1e-3), 1.0, f);
+  return bottom * top * mix(1.0, f, L.top_weight);
 }
 
 // Base-noise value below which a fraction p of the volume lies (piecewise linear in the
@@ -46,8 +46,8 @@ float height_profile(vec4 prof, float f) {
 float noise_quantile(float p) {
   float x = saturate(p) * 15.0;
   int i = min(int(x), 14);
-  float a = U.noise_quantiles[i / 4][i % 4];
-  float b = U.noise_quantiles[(i + 1) / 4][(i + 1) % 4];
+  float a = frame.noise_quantiles[i / 4][i % 4];
+  float b = frame.noise_quantiles[(i + 1) / 4][(i + 1) % 4];
   return mix(a, b, x - float(i));
 }
 
@@ -57,7 +57,7 @@ const float COVERAGE_EDGE = 0.12;
 // Local coverage of layer li at p: the layer's coverage modulated by the weather map
 // (weather/weather_map.h, local_coverage()).
 float local_coverage(CloudLayerGpu L, vec4 w) {
-  float c = L.altitude.z;
+  float c = L.coverage;
   return clamp(c + 1.2 * min(c, 1.0 - c) * (w.r - 0.5) * 2.0, 0.0, 1.0);
 }
 
@@ -71,13 +71,13 @@ const int DETAIL_MEAN = 2;
 
 // sigma_t (1/m) of layer li at local point p with altitude alt, where the weather map
 // reads w (weather_at; the light march passes its sample's value: the map's texels are
-// ~40 km, a light march spans at most LIGHT_MAX_DIST = 4 km); also returns the local
+// ~40 km, a light march spans at most LIGHT_MARCH_REACH_M, 4 km); also returns the local
 // coverage (0 outside the layer).
 float cloud_extinction_in(int li, vec3 p, float alt, int detail, vec4 w, out float coverage) {
   coverage = 0.0;
-  CloudLayerGpu L = U.layers[li];
-  float thickness = L.altitude.y - L.altitude.x;
-  float f = (alt - L.altitude.x) / thickness;
+  CloudLayerGpu L = frame.layers[li];
+  float thickness = L.top_m - L.base_m;
+  float f = (alt - L.base_m) / thickness;
   if (f <= 0.0 || f >= 1.0) return 0.0;
   g_density_evals += 1u;
   coverage = local_coverage(L, w);
@@ -85,31 +85,31 @@ float cloud_extinction_in(int li, vec3 p, float alt, int detail, vec4 w, out flo
   // cloud-type channel t = w.g (the protocol's vertical development): 0.5 = full layer
   // depth, less = lower tops; stratiform sheets (base_offset.w = 1) are not driven by it
   // (weather::type_depth_fraction / type_height_profile, weather/cloud_layer.h)
-  float depth_fraction = L.base_offset.w > 0.5 ? 1.0 : clamp(0.5 + w.g, 0.3, 1.0);
-  float profile = height_profile(L.profile, f / depth_fraction) * step(f, depth_fraction);
+  float depth_fraction = L.stratiform != 0 ? 1.0 : clamp(0.5 + w.g, 0.3, 1.0);
+  float profile = height_profile(L, f / depth_fraction) * step(f, depth_fraction);
   if (profile <= 0.0) return 0.0;
   // Noise space f(X) = X + (k - 1) a(X) n(X): altitude a scaled by k along the local up
   // n, a fixed map of the world; camera-relative: f(X) - f(X_cam) = p + (k - 1)(a n - h n_cam).
-  vec3 p_stretched = p + (L.profile.w - 1.0) * (alt * up_at(p, U.planet.x, U.planet.y) - vec3(0.0, 0.0, U.planet.y));
+  vec3 p_stretched = p + (L.noise_vertical_scale - 1.0) * (alt * up_at(p, frame.shell_radius_m, frame.camera_altitude_m) - vec3(0.0, 0.0, frame.camera_altitude_m));
   vec3 p_field = mat3(L.noise_rotation) * p_stretched;  // in the wind-rotated field's axes
-  float shape = textureLod(base_noise, p_field * L.optics2.y + L.base_offset.xyz, 0.0).r;
+  float shape = textureLod(base_noise, p_field * L.base_noise_frequency + L.base_noise_offset, 0.0).r;
   // Coverage threshold: the shape exceeds Q(1 - c) over a fraction c of the area (at
   // mid-profile), with a soft edge; full cover (c = 1) keeps nearly all of the shape.
   float d = saturate((shape * profile - noise_quantile(1.0 - coverage)) / COVERAGE_EDGE);
   if (d <= 0.0) return 0.0;
   if (detail != DETAIL_NONE && d < 1.0) {
-    float dn = detail == DETAIL_SAMPLED ? textureLod(detail_noise, p_field * L.optics2.z + L.detail_offset.xyz, 0.0).r
-                                        : U.march.w;
-    d = saturate(remap(d, dn * L.optics2.w, 1.0, 0.0, 1.0));
+    float dn = detail == DETAIL_SAMPLED ? textureLod(detail_noise, p_field * L.detail_noise_frequency + L.detail_noise_offset, 0.0).r
+                                        : frame.detail_noise_mean;
+    d = saturate(remap(d, dn * L.detail_erosion, 1.0, 0.0, 1.0));
   }
   float density_mod = exp2(2.0 * (w.b - 0.5));
-  return d * L.altitude.w * density_mod * L.optics.x;
+  return d * L.density_scale * density_mod * L.extinction_max;
 }
 
 // The same where the weather is read at p itself.
 float cloud_extinction(int li, vec3 p, float alt, int detail, out float coverage) {
-  CloudLayerGpu L = U.layers[li];
-  float f = (alt - L.altitude.x) / (L.altitude.y - L.altitude.x);
+  CloudLayerGpu L = frame.layers[li];
+  float f = (alt - L.base_m) / (L.top_m - L.base_m);
   coverage = 0.0;
   if (f <= 0.0 || f >= 1.0) return 0.0;
   return cloud_extinction_in(li, p, alt, detail, weather_at(p), coverage);

@@ -13,9 +13,9 @@ float march_distance(float u, float t_ref) { return t_ref > 0.0 ? t_ref * (exp(u
 // The part of the ray inside layer li, as up to two intervals [entry, exit] clipped to
 // [0, t_limit]: inside the top sphere and outside the base sphere.
 int layer_intervals(int li, float mu, float t_limit, out Interval a, out Interval b) {
-  float R = U.planet.x, h = U.planet.y;
-  vec2 top = intersect_shell(R, h, U.layers[li].altitude.y, mu);
-  vec2 base = intersect_shell(R, h, U.layers[li].altitude.x, mu);
+  float R = frame.shell_radius_m, h = frame.camera_altitude_m;
+  vec2 top = intersect_shell(R, h, frame.layers[li].top_m, mu);
+  vec2 base = intersect_shell(R, h, frame.layers[li].base_m, mu);
   int n = 0;
   if (top.y < 0.0) return 0;
   float A0 = max(top.x, 0.0), A1 = min(top.y, t_limit);
@@ -38,7 +38,7 @@ int layer_intervals(int li, float mu, float t_limit, out Interval a, out Interva
 int ray_intervals(float mu, float t_limit, float t_ref, out Interval iv[MAX_INTERVALS], out float total_len) {
   int n_iv = 0;
   total_len = 0.0;
-  for (int li = 0; li < U.counts.x; ++li) {
+  for (int li = 0; li < frame.layer_count; ++li) {
     Interval a, b;
     int n = layer_intervals(li, mu, t_limit, a, b);
     if (n >= 1) total_len += march_coordinate(a.t1, t_ref) - march_coordinate(a.t0, t_ref);
@@ -46,7 +46,7 @@ int ray_intervals(float mu, float t_limit, float t_ref, out Interval iv[MAX_INTE
     // coverage 0: no cloud anywhere (a clear layer, or none within reach of this frame,
     // renderer/coverage_cull.h): nothing to march; its length stays in the step budget, so
     // the other layers are marched with exactly the steps they get without the cull
-    if (U.layers[li].altitude.z <= 0.0) continue;
+    if (frame.layers[li].coverage <= 0.0) continue;
     if (n >= 1) iv[n_iv++] = a;
     if (n == 2) iv[n_iv++] = b;
   }

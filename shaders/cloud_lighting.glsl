@@ -3,16 +3,14 @@
 // optical depth of a layer above a ground point (cloud shadows, ground_shadow_map.comp). Needs common.glsl,
 // frame_uniforms.glsl, atmosphere_model.glsl, atmosphere_lookup.glsl, cloud_density.glsl.
 
-const float LIGHT_MAX_DIST = 4000.0;  // m, longest light march
-const float MEAN_COSINE = 0.86;       // droplet phase mean cosine used for diffuse transfer
 // delta-scaling (Joseph, Wiscombe & Weinman 1976): the forward peak, a fraction g^2 of the
 // scattering, is counted as unscattered light in the two-stream fluxes
-const float DELTA_F = MEAN_COSINE * MEAN_COSINE;
+const float DELTA_F = TWO_STREAM_MEAN_COSINE * TWO_STREAM_MEAN_COSINE;
 
 // Diffuse transmittance of a conservative slab of optical depth tau lit by diffuse light
 // (two-stream, Bohren 1987 "Multiple scattering of light and some of its observable
 // consequences"); delta-scaling leaves (1 - g) tau unchanged.
-float slab_diffuse_transmittance(float tau) { return 1.0 / (1.0 + 0.75 * (1.0 - MEAN_COSINE) * tau); }
+float slab_diffuse_transmittance(float tau) { return 1.0 / (1.0 + 0.75 * (1.0 - TWO_STREAM_MEAN_COSINE) * tau); }
 
 // Total (direct + diffuse) transmittance of a conservative slab of optical depth tau for
 // a collimated beam at zenith cosine mu0 > 0: the delta-Eddington solution
@@ -21,7 +19,7 @@ float slab_diffuse_transmittance(float tau) { return 1.0 / (1.0 + 0.75 * (1.0 - 
 // mu0 = 2/3, and 1 at tau = 0.
 float slab_beam_transmittance(float tau, float mu0) {
   float direct = exp(-(1.0 - DELTA_F) * tau / mu0);
-  return ((0.5 + 0.75 * mu0) + (0.5 - 0.75 * mu0) * direct) / (1.0 + 0.75 * (1.0 - MEAN_COSINE) * tau);
+  return ((0.5 + 0.75 * mu0) + (0.5 - 0.75 * mu0) * direct) / (1.0 + 0.75 * (1.0 - TWO_STREAM_MEAN_COSINE) * tau);
 }
 
 // Optical depth from point p (altitude alt) towards the sun inside layer li, in n steps
@@ -30,19 +28,19 @@ float slab_beam_transmittance(float tau, float mu0) {
 // spans at most 4 km; one map read instead of n). Stops once tau exceeds tau_cut (the
 // sun's beam is spent there; 1e30: never).
 float light_optical_depth(int li, vec3 p, float alt, vec3 sun, float mu_s, int n, vec4 w, float tau_cut) {
-  if (U.layers[li].altitude.z <= 0.0) return 0.0;  // coverage 0 (renderer/coverage_cull.h): no cloud
-  float R = U.planet.x;
-  vec2 exit_top = intersect_shell(R, alt, U.layers[li].altitude.y, mu_s);
-  vec2 hit_base = intersect_shell(R, alt, U.layers[li].altitude.x, mu_s);
+  if (frame.layers[li].coverage <= 0.0) return 0.0;  // coverage 0 (renderer/coverage_cull.h): no cloud
+  float R = frame.shell_radius_m;
+  vec2 exit_top = intersect_shell(R, alt, frame.layers[li].top_m, mu_s);
+  vec2 hit_base = intersect_shell(R, alt, frame.layers[li].base_m, mu_s);
   float len = exit_top.y > 0.0 ? exit_top.y : 0.0;
   if (hit_base.x > 0.0) len = min(len, hit_base.x);
-  len = min(len, LIGHT_MAX_DIST);
+  len = min(len, LIGHT_MARCH_REACH_M);
   float tau = 0.0, s_prev = 0.0;
   for (int j = 0; j < n; ++j) {
     float f = float(j + 1) / float(n);
     float s = len * f * f;
     vec3 x = p + sun * (0.5 * (s + s_prev));
-    float ax = altitude_of(x, R, U.planet.y);
+    float ax = altitude_of(x, R, frame.camera_altitude_m);
     float coverage;
     tau += cloud_extinction_in(li, x, ax, DETAIL_NONE, w, coverage) * (s - s_prev);
     s_prev = s;
@@ -54,17 +52,17 @@ float light_optical_depth(int li, vec3 p, float alt, vec3 sun, float mu_s, int n
 // Optical depth of layer li from a ground point p towards the sun (cloud shadows), in
 // n equal steps through the layer (base shape only).
 float layer_shadow_optical_depth(int li, vec3 p, float ground_alt, vec3 sun, float mu_s, int n) {
-  if (U.layers[li].altitude.z <= 0.0) return 0.0;  // coverage 0 (renderer/coverage_cull.h): no cloud
-  float R = U.planet.x;
-  float t_base = intersect_shell(R, ground_alt, U.layers[li].altitude.x, mu_s).y;
-  float t_top = intersect_shell(R, ground_alt, U.layers[li].altitude.y, mu_s).y;
+  if (frame.layers[li].coverage <= 0.0) return 0.0;  // coverage 0 (renderer/coverage_cull.h): no cloud
+  float R = frame.shell_radius_m;
+  float t_base = intersect_shell(R, ground_alt, frame.layers[li].base_m, mu_s).y;
+  float t_top = intersect_shell(R, ground_alt, frame.layers[li].top_m, mu_s).y;
   if (t_top <= 0.0) return 0.0;
   t_base = max(t_base, 0.0);
   float dt = (t_top - t_base) / float(n);
   float tau = 0.0;
   for (int j = 0; j < n; ++j) {
     vec3 x = p + sun * (t_base + (float(j) + 0.5) * dt);
-    tau += cloud_extinction(li, x, altitude_of(x, R, U.planet.y), DETAIL_NONE) * dt;
+    tau += cloud_extinction(li, x, altitude_of(x, R, frame.camera_altitude_m), DETAIL_NONE) * dt;
   }
   return tau;
 }
@@ -89,9 +87,9 @@ float layer_shadow_optical_depth(int li, vec3 p, float ground_alt, vec3 sun, flo
 // below a sample moves by 1.6e-4 rad per km).
 vec3 diffuse_inscatter(CloudLayerGpu L, float alt, float mu_s, vec3 T_atm, float coverage, vec3 E_sun,
                        vec3 E_ground, float w_up) {
-  float sigma_nominal = L.optics.x * L.altitude.w * coverage;
-  float tau_a = sigma_nominal * max(L.altitude.y - alt, 0.0);
-  float tau_b = sigma_nominal * max(alt - L.altitude.x, 0.0);
+  float sigma_nominal = L.extinction_max * L.density_scale * coverage;
+  float tau_a = sigma_nominal * max(L.top_m - alt, 0.0);
+  float tau_b = sigma_nominal * max(alt - L.base_m, 0.0);
   float Ta = slab_diffuse_transmittance(tau_a), Tb = slab_diffuse_transmittance(tau_b);
   float mu_pos = max(mu_s, 0.0);
   vec3 F_sun = E_sun * T_atm * mu_pos;
@@ -101,7 +99,7 @@ vec3 diffuse_inscatter(CloudLayerGpu L, float alt, float mu_s, vec3 T_atm, float
   float T_beam = mu_pos > 0.0 ? slab_beam_transmittance(tau_a, mu0) : 0.0;
   vec3 F_down = F_sun * max(T_beam - direct_a, 0.0) + E_sky * Ta;
   vec3 F_up = (F_sun * T_beam + E_sky * Ta) * (1.0 - Tb) + E_ground * Tb;
-  vec3 J = (2.0 * (F_down + F_up) + 3.0 * MEAN_COSINE * (F_up - F_down) * w_up) / (4.0 * PI);
+  vec3 J = (2.0 * (F_down + F_up) + 3.0 * TWO_STREAM_MEAN_COSINE * (F_up - F_down) * w_up) / (4.0 * PI);
   return max(J, vec3(0.0));
 }
 
@@ -109,6 +107,6 @@ vec3 diffuse_inscatter(CloudLayerGpu L, float alt, float mu_s, vec3 T_atm, float
 // (through the atmosphere, no cloud) plus sky light, at ground altitude ground_alt for a sun
 // at zenith cosine mu_s. The upward boundary flux of diffuse_inscatter.
 vec3 ground_irradiance(float ground_alt, float mu_s, vec3 E_sun) {
-  return U.ground_albedo.rgb * E_sun *
+  return GROUND_ALBEDO * E_sun *
          (transmittance_to_space(ground_alt, mu_s) * max(mu_s, 0.0) + sky_irradiance(ground_alt, mu_s));
 }

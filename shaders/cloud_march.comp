@@ -1,12 +1,13 @@
 #version 450 core
 // The cloud march: for this frame's fresh cloud pixels (every stride-th, see
 // temporal_uniforms.glsl), the clouds along the ray through the layer intervals. Output
-// (fresh_a) rgb: radiance the clouds send to the camera, in-scattered in the clouds and
+// (fresh_radiance) rgb: radiance the clouds send to the camera, in-scattered in the clouds and
 // seen through the aerial perspective in front of them (W m^-2 sr^-1 nm^-1, 680/550/440
-// nm), a: cloud transmittance; (fresh_b) x: depth (m; the
+// nm), a: cloud transmittance; (fresh_depth) x: depth (m; the
 // transmittance-weighted cloud distance, or where the ray enters the first layer when it
 // meets no cloud), y: 0 (unused), z: layer of that depth (-1 none), w: 1.
 #include "common.glsl"
+#include "frame_counters.glsl"
 #include "frame_uniforms.glsl"
 #include "temporal_uniforms.glsl"
 #include "atmosphere_model.glsl"
@@ -21,13 +22,8 @@
 #include "aerial_perspective_lookup.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(rgba32f, binding = 0) uniform writeonly image2D fresh_a;
-layout(rgba32f, binding = 1) uniform writeonly image2D fresh_b;
-layout(std430, binding = 0) buffer FrameCounters {
-  uint density_evals;
-  uint nonfinite_pixels;
-  uint cloud_pixels;
-} counters;
+layout(rgba32f, binding = IMG_FRESH_RADIANCE_OUT) uniform writeonly image2D fresh_radiance;
+layout(rgba32f, binding = IMG_FRESH_DEPTH_OUT) uniform writeonly image2D fresh_depth;
 
 const float CLOUD_T_EPS = 1e-3;  // early exit below this cloud transmittance
 // Primary steps per coverage-pyramid query (coverage_pyramid.glsl): a run this long whose
@@ -48,63 +44,63 @@ bool segment_may_have_cloud(int li, vec3 dir, float ta, float tb) {
   float a = half_len / max(length(q) - half_len, 1.0) + 1e-5;
   vec2 ll = map_lat_lon(q);
   float m = pyramid_max_in_cap(ll.x, ll.y, a);
-  return local_coverage(U.layers[li], vec4(m)) > 0.0;
+  return local_coverage(frame.layers[li], vec4(m)) > 0.0;
 }
 
 // Light steps at distance t: the full count while the pixel footprint is finer than a
 // base-noise texel, falling in proportion beyond (no finer lighting than the pixel can
-// show), to a third at most (seed 002, LOD by the ray's cone footprint).
+// show), to a third at most (level of detail by the ray's cone footprint).
 int light_steps_at(float t, CloudLayerGpu L) {
-  int n = int(U.quality.y);
-  if (U.march.y == 0.0) return n;
-  float texel = 1.0 / (L.optics2.y * 128.0);  // base-noise texel, m
-  float k = clamp(texel / max(t * U.march.z, 1e-3), 1.0 / 3.0, 1.0);
+  int n = frame.light_steps;
+  if (frame.level_of_detail == 0) return n;
+  float texel = 1.0 / (L.base_noise_frequency * float(textureSize(base_noise, 0).x));  // base-noise texel, m
+  float k = clamp(texel / max(t * frame.pixel_angle_rad, 1e-3), 1.0 / 3.0, 1.0);
   return max(2, int(ceil(float(n) * k)));
 }
 
 // Detail noise at distance t: sampled while a pixel spans less than two detail texels,
 // else replaced by its mean.
 int detail_mode_at(float t, CloudLayerGpu L) {
-  if (U.march.y == 0.0) return DETAIL_SAMPLED;
-  float texel = 1.0 / (L.optics2.z * 32.0);
-  return t * U.march.z < 2.0 * texel ? DETAIL_SAMPLED : DETAIL_MEAN;
+  if (frame.level_of_detail == 0) return DETAIL_SAMPLED;
+  float texel = 1.0 / (L.detail_noise_frequency * float(textureSize(detail_noise, 0).x));
+  return t * frame.pixel_angle_rad < 2.0 * texel ? DETAIL_SAMPLED : DETAIL_MEAN;
 }
 
 void main() {
   ivec2 cell = ivec2(gl_GlobalInvocationID.xy);
-  ivec2 q = cell * TU.grid.x + TU.grid.yz;  // the cloud pixel this invocation marches
-  if (any(greaterThanEqual(q, TU.buffer_size.xy))) return;
+  ivec2 q = cell * temporal.fresh_stride + temporal.fresh_offset;  // the cloud pixel this invocation marches
+  if (any(greaterThanEqual(q, temporal.cloud_buffer_size))) return;
   // the ray through the pixel centre, or (footprint jitter) through the point of this
   // frame's sequence: offsets fract(r_q + k alpha) - 1/2 in cloud pixels, k the frame
   // index, alpha the R2 sequence's (Roberts 2018: 1/g, 1/g^2, g^3 = g + 1), r_q a
   // per-pixel rotation so that neighbours do not move in step
   vec2 sub_pixel = vec2(0.0);
-  if (U.counts.w != 0) {
+  if (frame.footprint_jitter != 0) {
     vec2 r_q = vec2(hash12(uvec2(q) * 3u + 11u), hash12(uvec2(q) * 5u + 17u));
-    sub_pixel = fract(r_q + float(U.counts.y) * vec2(0.7548776662, 0.5698402910)) - 0.5;
+    sub_pixel = fract(r_q + float(frame.frame_index) * vec2(0.7548776662, 0.5698402910)) - 0.5;
   }
   vec2 ndc_ray = cloud_pixel_ndc(vec2(q) + sub_pixel);
   vec3 dir = view_ray(ndc_ray);
-  float R = U.planet.x, h = U.planet.y, ground_alt = U.planet.z;
-  vec3 sun = U.sun_dir.xyz;
-  vec3 E_sun = U.sun_irradiance.rgb;
+  float R = frame.shell_radius_m, h = frame.camera_altitude_m, ground_alt = frame.ground_altitude_m;
+  vec3 sun = frame.sun_direction;
+  vec3 E_sun = SOLAR_IRRADIANCE;
   float mu = dir.z;
   float cos_view_sun = dot(dir, sun);
 
   vec2 g = intersect_shell(R, h, ground_alt, mu);
   bool hits_ground = g.x >= 0.0;
   float t_ground = hits_ground ? g.x : 1e30;
-  float t_limit = min(t_ground, U.planet.w);
+  float t_limit = min(t_ground, frame.march_reach_m);
 
   // Steps are uniform in u = ln(1 + t / t_ref) (t_ref = ms_params.w > 0) or in t (0: the
   // naive march). In empty air the march probes with steps long_step times longer (base
   // shape only); on finding cloud it steps back and re-marches that span at the normal
   // step, and returns to long steps after long_step empty samples (Schneider 2015).
-  float t_ref = U.ms_params.w;
+  float t_ref = frame.step_growth_ref_m;
   Interval iv[MAX_INTERVALS];
   float total_len;
   int n_iv = ray_intervals(mu, t_limit, t_ref, iv, total_len);
-  int long_step = max(1, int(U.march.x));
+  int long_step = max(1, int(frame.long_step_factor));
 
   vec3 C = vec3(0.0);  // in-scattered radiance from clouds
   float T = 1.0;       // cloud transmittance
@@ -118,21 +114,21 @@ void main() {
   vec3 E_ground = vec3(0.0);
   float t_ground_irradiance = -1e30;
   if (n_iv > 0) {
-    float jitter = hash12(uvec2(q) + uvec2(U.counts.y * 7919, U.counts.y * 104729));
-    float nominal_du = total_len / U.quality.x;
+    float jitter = hash12(uvec2(q) + uvec2(frame.frame_index * 7919, frame.frame_index * 104729));
+    float nominal_du = total_len / float(frame.primary_steps);
     for (int k = 0; k < n_iv && T > CLOUD_T_EPS; ++k) {
       int li = iv[k].layer;
-      CloudLayerGpu L = U.layers[li];
+      CloudLayerGpu L = frame.layers[li];
       float u0 = march_coordinate(iv[k].t0, t_ref), u1 = march_coordinate(iv[k].t1, t_ref);
       int steps = max(1, int(ceil((u1 - u0) / max(nominal_du, 1e-6))));
       float du = (u1 - u0) / float(steps);
       // st: step index; in probing mode the probe at st covers (st - long_step, st]
       int st = 0, last_fine = -1, empty_run = 0;
       bool probing = long_step > 1;
-      // coverage pyramid (U.skips.x): only for a layer the map can clear at all (a layer
+      // coverage pyramid (frame.coverage_pyramid): only for a layer the map can clear at all (a layer
       // above 6/11 coverage never clears: no queries); next_query: the first step not yet
       // covered by a query
-      bool pyramid = U.skips.x != 0.0 && local_coverage(L, vec4(0.0)) <= 0.0;
+      bool pyramid = frame.coverage_pyramid != 0 && local_coverage(L, vec4(0.0)) <= 0.0;
       int next_query = 0;
       for (int guard = 0; st < steps && T > CLOUD_T_EPS && guard < 3 * steps + 4; ++guard) {
         if (pyramid && st >= next_query) {
@@ -188,12 +184,12 @@ void main() {
         // light-march optical depth
         vec3 L_sun = vec3(0.0);
         if (max(T_atm.r, max(T_atm.g, T_atm.b)) > 0.0) {
-          float tau = SM.volume.z != 0.0 ? light_volume_optical_depth(li, p, alt)
-                                         : light_optical_depth(li, p, alt, sun, mu_s, light_steps_at(t, L), w, U.skips.y);
+          float tau = shadow.volume_valid != 0 ? light_volume_optical_depth(li, p, alt)
+                                         : light_optical_depth(li, p, alt, sun, mu_s, light_steps_at(t, L), w, frame.light_march_cutoff_tau);
           float s_sum = 0.0, a = 1.0, b = 1.0, c = 1.0;
-          for (int o = 0; o < int(U.quality.z); ++o) {
-            s_sum += b * cloud_phase(cos_view_sun, L.optics.y, L.optics.z, L.optics.w, L.optics2.x, c) * exp(-a * tau);
-            a *= U.ms_params.x; b *= U.ms_params.y; c *= U.ms_params.z;
+          for (int o = 0; o < frame.ms_octaves; ++o) {
+            s_sum += b * cloud_phase(cos_view_sun, L.g_hg, L.g_d, L.draine_alpha, L.w_d, c) * exp(-a * tau);
+            a *= frame.ms_extinction_scale; b *= frame.ms_energy_scale; c *= frame.ms_eccentricity_scale;
           }
           L_sun = E_sun * T_atm * s_sum;
         }
@@ -221,7 +217,7 @@ void main() {
     C = C * ap_T + opacity * E_sun * ap_in;
   }
 
-  if (U.counts.z != 0) atomicAdd(counters.density_evals, g_density_evals);
-  imageStore(fresh_a, cell, vec4(C, T));
-  imageStore(fresh_b, cell, vec4(depth, 0.0, float(depth_layer), 1.0));
+  if (frame.count_density_evaluations != 0) atomicAdd(counters.density_evals, g_density_evals);
+  imageStore(fresh_radiance, cell, vec4(C, T));
+  imageStore(fresh_depth, cell, vec4(depth, 0.0, float(depth_layer), 1.0));
 }

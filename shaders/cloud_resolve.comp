@@ -10,29 +10,29 @@
 //    something else is uncovered);
 //  - no usable history (first frame, a teleport, off-screen last frame): the fresh
 //    samples around it, interpolated bilinearly.
-// Koblizek 2024 (seed 002/004) ch. 5: 1/16-pixel reprojection; Schneider 2015.
+// Koblížek 2020 §3.2: 1/16-pixel reprojection in 4 x 4 blocks; Schneider 2015.
 #include "common.glsl"
 #include "frame_uniforms.glsl"
 #include "temporal_uniforms.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(binding = 10) uniform sampler2D fresh_a;
-layout(binding = 11) uniform sampler2D fresh_b;
-layout(binding = 12) uniform sampler2D history_a;  // previous resolved buffer, linear filter
-layout(binding = 13) uniform sampler2D history_b;
-layout(rgba32f, binding = 0) uniform writeonly image2D next_a;
-layout(rgba32f, binding = 1) uniform writeonly image2D next_b;
+layout(binding = TEX_FRESH_RADIANCE) uniform sampler2D fresh_radiance;
+layout(binding = TEX_FRESH_DEPTH) uniform sampler2D fresh_depth;
+layout(binding = TEX_HISTORY_RADIANCE) uniform sampler2D history_radiance;  // previous resolved buffer, linear filter
+layout(binding = TEX_HISTORY_DEPTH) uniform sampler2D history_depth;
+layout(rgba32f, binding = IMG_CLOUD_RADIANCE_OUT) uniform writeonly image2D next_radiance;
+layout(rgba32f, binding = IMG_CLOUD_DEPTH_OUT) uniform writeonly image2D next_depth;
 
 // Cloud-buffer texture coordinates in the previous frame of the current-local point p
 // seen through the field (or ground) transform m; false when behind the previous camera.
 bool reproject(vec3 p, int m, out vec2 uv) {
-  vec3 pp = (TU.reproject[m] * vec4(p, 1.0)).xyz;
-  float z = dot(pp, TU.prev_forward.xyz);
+  vec3 pp = (temporal.reproject[m] * vec4(p, 1.0)).xyz;
+  float z = dot(pp, temporal.prev_forward);
   uv = vec2(-1.0);
   if (z <= 1e-3 * length(pp)) return false;
-  vec2 ndc = vec2(dot(pp, TU.prev_right.xyz) / (z * TU.prev_view.x), dot(pp, TU.prev_up.xyz) / (z * TU.prev_view.y));
-  vec2 full = vec2(ndc.x * 0.5 + 0.5, 0.5 - ndc.y * 0.5) * U.view.zw;  // frame pixels, row 0 at the top
-  uv = full / float(TU.buffer_size.z) / vec2(TU.buffer_size.xy);
+  vec2 ndc = vec2(dot(pp, temporal.prev_right) / (z * temporal.prev_tan_half_fov_x), dot(pp, temporal.prev_up) / (z * temporal.prev_tan_half_fov_y));
+  vec2 full = vec2(ndc.x * 0.5 + 0.5, 0.5 - ndc.y * 0.5) * frame.image_size_px;  // frame pixels, row 0 at the top
+  uv = full / float(temporal.cloud_divisor) / vec2(temporal.cloud_buffer_size);
   return all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0)));
 }
 
@@ -40,7 +40,7 @@ bool reproject(vec3 p, int m, out vec2 uv) {
 // history every frame, and a bilinear filter would blur it a little more each time.
 // Limited to the range of the 2x2 nearest texels (no ringing, no negative values).
 vec4 history_cubic(vec2 uv) {
-  vec2 pos = uv * vec2(TU.buffer_size.xy) - 0.5;
+  vec2 pos = uv * vec2(temporal.cloud_buffer_size) - 0.5;
   vec2 base = floor(pos);
   vec2 f = pos - base;
   vec2 w0 = f * (-0.5 + f * (1.0 - 0.5 * f));
@@ -49,20 +49,20 @@ vec4 history_cubic(vec2 uv) {
   vec2 w3 = f * f * (-0.5 + 0.5 * f);
   vec2 wx[4] = vec2[4](w0, w1, w2, w3);
   ivec2 b = ivec2(base) - 1;
-  ivec2 hi_px = TU.buffer_size.xy - 1;
+  ivec2 hi_px = temporal.cloud_buffer_size - 1;
   vec4 sum = vec4(0.0), lo = vec4(1e30), hi = vec4(-1e30);
   for (int j = 0; j < 4; ++j)
     for (int i = 0; i < 4; ++i) {
-      vec4 v = texelFetch(history_a, clamp(b + ivec2(i, j), ivec2(0), hi_px), 0);
+      vec4 v = texelFetch(history_radiance, clamp(b + ivec2(i, j), ivec2(0), hi_px), 0);
       sum += wx[i].x * wx[j].y * v;
       if ((i == 1 || i == 2) && (j == 1 || j == 2)) { lo = min(lo, v); hi = max(hi, v); }
     }
   return clamp(sum, lo, hi);
 }
 
-int transform_of(float layer) { return layer >= 0.0 ? int(layer) : 4; }
+int transform_of(float layer) { return layer >= 0.0 ? int(layer) : MAX_LAYERS; }  // MAX_LAYERS: the ground
 
-ivec2 texel_of(vec2 uv) { return clamp(ivec2(uv * vec2(TU.buffer_size.xy)), ivec2(0), TU.buffer_size.xy - 1); }
+ivec2 texel_of(vec2 uv) { return clamp(ivec2(uv * vec2(temporal.cloud_buffer_size)), ivec2(0), temporal.cloud_buffer_size - 1); }
 
 // Change detection thresholds: cloud transmittance, and relative radiance (the jitter
 // noise of one sample is well below both away from cloud edges).
@@ -81,7 +81,7 @@ void fresh_neighbourhood(ivec2 cs[4], float ws[4], out vec4 fresh[4], out vec4 u
   hi = vec4(-1e30);
   nearest = 0;
   for (int i = 0; i < 4; ++i) {
-    fresh[i] = texelFetch(fresh_a, cs[i], 0);
+    fresh[i] = texelFetch(fresh_radiance, cs[i], 0);
     up += ws[i] * fresh[i];
     lo = min(lo, fresh[i]);
     hi = max(hi, fresh[i]);
@@ -91,10 +91,10 @@ void fresh_neighbourhood(ivec2 cs[4], float ws[4], out vec4 fresh[4], out vec4 u
 
 void main() {
   ivec2 q = ivec2(gl_GlobalInvocationID.xy);
-  if (any(greaterThanEqual(q, TU.buffer_size.xy))) return;
-  int s = TU.grid.x;
-  ivec2 rel = q - TU.grid.yz;
-  ivec2 fsize = max((TU.buffer_size.xy - TU.grid.yz + s - 1) / s, ivec2(1));  // fresh samples per axis
+  if (any(greaterThanEqual(q, temporal.cloud_buffer_size))) return;
+  int s = temporal.fresh_stride;
+  ivec2 rel = q - temporal.fresh_offset;
+  ivec2 fsize = max((temporal.cloud_buffer_size - temporal.fresh_offset + s - 1) / s, ivec2(1));  // fresh samples per axis
   bool is_fresh = all(greaterThanEqual(rel, ivec2(0))) && rel.x % s == 0 && rel.y % s == 0;
 
   // The fresh samples around q: bilinear weights; their interpolation and range are read
@@ -107,32 +107,32 @@ void main() {
   vec2 f = clamp(cf - vec2(c0), 0.0, 1.0);
   ivec2 cs[4] = ivec2[4](c0, ivec2(c1.x, c0.y), ivec2(c0.x, c1.y), c1);
   float ws[4] = float[4]((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y, f.x * f.y);
-  vec4 fresh_own_a = is_fresh ? texelFetch(fresh_a, rel / s, 0) : vec4(0.0);
-  vec4 fresh_own_b = is_fresh ? texelFetch(fresh_b, rel / s, 0) : vec4(0.0);
+  vec4 fresh_own_a = is_fresh ? texelFetch(fresh_radiance, rel / s, 0) : vec4(0.0);
+  vec4 fresh_own_b = is_fresh ? texelFetch(fresh_depth, rel / s, 0) : vec4(0.0);
 
   // The neighbourhood is needed without history (the interpolated fresh samples stand in)
   // and for a moving view (change detection, clamp); a still view with history skips it.
-  bool moving = TU.blend.y == 0.0;
+  bool moving = temporal.camera_still == 0;
   vec4 fresh_at[4], up_a, lo, hi;
   int nearest;
 
   vec4 out_a = vec4(0.0), out_b = vec4(0.0);
   bool from_history = false;
-  if (TU.grid.w != 0) {
+  if (temporal.history_valid != 0) {
     vec3 dir = view_ray(cloud_pixel_ndc(vec2(q)));
     // clouds: the point at the depth stored where this ray pointed last frame, twice (the
     // second read is skipped where it would read the same texel again)
-    vec4 hb = texelFetch(history_b, q, 0);
+    vec4 hb = texelFetch(history_depth, q, 0);
     vec2 uv;
     bool ok = reproject(hb.x * dir, transform_of(hb.z), uv);
     if (ok && texel_of(uv) != q) {
-      hb = texelFetch(history_b, texel_of(uv), 0);
+      hb = texelFetch(history_depth, texel_of(uv), 0);
       ok = reproject(hb.x * dir, transform_of(hb.z), uv);
     }
-    vec2 motion = uv * vec2(TU.buffer_size.xy) - (vec2(q) + 0.5);  // cloud pixels
+    vec2 motion = uv * vec2(temporal.cloud_buffer_size) - (vec2(q) + 0.5);  // cloud pixels
     float moved = length(motion);
     // A history that did not move (a still camera, no wind) is read as it is: no filter.
-    vec4 ha = moved < 1e-3 ? texelFetch(history_a, q, 0) : history_cubic(uv);
+    vec4 ha = moved < 1e-3 ? texelFetch(history_radiance, q, 0) : history_cubic(uv);
     ok = ok && finite4(ha) && finite4(hb);
     if (ok) {
       from_history = true;
@@ -143,21 +143,21 @@ void main() {
       // still camera sees the same scene (its drift is in the reprojection), differences
       // there are the jitter noise that accumulation removes.
       int n_changed = 0;
-      if (moving || (TU.buffer_size.w != 0 && moved > 0.5))
+      if (moving || (temporal.neighbourhood_clamp != 0 && moved > 0.5))
         fresh_neighbourhood(cs, ws, fresh_at, up_a, lo, hi, nearest);
       for (int i = 0; i < 4 && moving; ++i) {
-        vec2 pos_i = vec2(cs[i] * s + TU.grid.yz) + 0.5 + motion;
-        vec4 h_i = textureLod(history_a, pos_i / vec2(TU.buffer_size.xy), 0.0);
+        vec2 pos_i = vec2(cs[i] * s + temporal.fresh_offset) + 0.5 + motion;
+        vec4 h_i = textureLod(history_radiance, pos_i / vec2(temporal.cloud_buffer_size), 0.0);
         float y_f = dot(fresh_at[i].rgb, vec3(1.0)), y_h = dot(h_i.rgb, vec3(1.0));
         n_changed += (abs(fresh_at[i].a - h_i.a) > CHANGE_T || abs(y_f - y_h) > CHANGE_REL * (y_f + y_h) + 1e-9) ? 1 : 0;
       }
       bool changed = moving && n_changed >= CHANGE_MIN_NEIGHBOURS;
-      if (TU.buffer_size.w != 0 && changed) ha = up_a;  // stale: the fresh samples around it
-      else if (TU.buffer_size.w != 0 && moved > 0.5) ha = clamp(ha, lo, hi);
+      if (temporal.neighbourhood_clamp != 0 && changed) ha = up_a;  // stale: the fresh samples around it
+      else if (temporal.neighbourhood_clamp != 0 && moved > 0.5) ha = clamp(ha, lo, hi);
       if (is_fresh) {
         // a moved or changed history is resampled or stale: a fresh sample replaces it; a
         // still one is averaged with it
-        float w = (moving || moved > 0.1 || changed) ? 1.0 : max(1.0 / (n + 1.0), TU.blend.x);
+        float w = (moving || moved > 0.1 || changed) ? 1.0 : max(1.0 / (n + 1.0), temporal.history_blend_min);
         out_a = mix(ha, fresh_own_a, w);
         out_b = vec4(mix(hb.x, fresh_own_b.x, w), 0.0, fresh_own_b.z, min(n + 1.0, 255.0));
       } else {
@@ -173,10 +173,10 @@ void main() {
     } else {
       // the fresh samples around q, interpolated; the depth of the nearest one
       fresh_neighbourhood(cs, ws, fresh_at, out_a, lo, hi, nearest);
-      vec4 near_b = texelFetch(fresh_b, cs[nearest], 0);
+      vec4 near_b = texelFetch(fresh_depth, cs[nearest], 0);
       out_b = vec4(near_b.x, 0.0, near_b.z, 0.0);
     }
   }
-  imageStore(next_a, q, out_a);
-  imageStore(next_b, q, out_b);
+  imageStore(next_radiance, q, out_a);
+  imageStore(next_depth, q, out_b);
 }

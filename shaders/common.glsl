@@ -11,8 +11,8 @@ float one_minus_exp_neg(float x) {
   return x < 1e-3 ? x * (1.0 - 0.5 * x + x * x / 6.0) : 1.0 - exp(-x);
 }
 
-// Ray / sphere-shell intersection in the cancellation-free form of DESIGN.md §2 and
-// geodesy/shell_intersection.h (Haines et al., Ray Tracing Gems ch. 7). The ray starts
+// Ray / sphere-shell intersection in the cancellation-free form of Haines et al. 2019
+// (Ray Tracing Gems ch. 7) and geodesy/shell_intersection.h. The ray starts
 // at altitude h above a sphere of radius R with mu = cos(angle to local up); the shell is
 // at altitude H. Returns (t_near, t_far); t < 0 marks "no hit" for that root. A start
 // inside the shell gives (-1, t_exit).

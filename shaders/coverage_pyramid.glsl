@@ -4,7 +4,7 @@
 // antimeridian). Mirrors pyramid_max_in_cap of renderer/coverage_pyramid.cpp (held to
 // it by tests/gpu_coverage_pyramid_test.cpp). Needs common.glsl.
 
-layout(std430, binding = 1) readonly buffer CoveragePyramid {
+layout(std430, binding = SSBO_COVERAGE_PYRAMID) readonly buffer CoveragePyramid {
   ivec4 cp_level[16];  // kGpuPyramidLevels (renderer/coverage_pyramid.h); per level: x width, y height (cells), z offset of its first cell; cp_level[0].w = levels
   float cp_cell[];     // row-major per level, rows from the south
 } CP;

@@ -1,39 +1,57 @@
-// Per-frame constants, std140. Mirrors renderer/frame_uniforms.h (keep in sync).
-// Frame: "local" = East-North-Up axes at the camera, origin at the camera, metres.
-// The cloud shell and ground are spheres of radius planet.x (the osculating sphere of
-// the WGS84 ellipsoid at the camera, DESIGN.md §2) centred at (0, 0, -(R + h)).
+// Per-frame constants, std140: the GLSL side of renderer/frame_uniforms.h (member
+// comments, units and frames there; tests/gpu_interface_test.cpp checks that both sides
+// agree). Frame: "local" = East-North-Up axes at the camera, origin at the camera,
+// metres. The cloud shell and ground are spheres of radius shell_radius_m (the osculating
+// sphere of the WGS84 ellipsoid at the camera) centred at (0, 0, -(R + h)).
 
 struct CloudLayerGpu {
-  vec4 altitude;       // x base (m), y top (m), z coverage [0,1], w density scale
-  vec4 optics;         // x sigma_t max (1/m), y g_HG, z g_D, w Draine alpha
-  vec4 optics2;        // x w_D, y 1/base noise period (1/m), z 1/detail period (1/m), w detail erosion
-  vec4 profile;        // x bottom ramp, y top ramp, z top weight, w noise vertical scale k
-  vec4 base_offset;    // xyz offset of the base noise in tile units (ECEF axes), wrapped; w stratiform (1/0)
-  vec4 detail_offset;  // xyz offset of the detail noise in tile units, wrapped
-  mat4 noise_rotation; // upper 3x3: local ENU -> ECEF axes of the wind-rotated field (renderer/wind_drift.h)
+  float base_m, top_m, coverage, density_scale;
+  float extinction_max, g_hg, g_d, draine_alpha;
+  float w_d, base_noise_frequency, detail_noise_frequency, detail_erosion;
+  float bottom_ramp, top_ramp, top_weight, noise_vertical_scale;
+  vec3 base_noise_offset;
+  int stratiform;
+  vec3 detail_noise_offset;
+  float unused_pad;
+  mat4 noise_rotation;
 };
 
-layout(std140, binding = 0) uniform FrameUniforms {
-  mat4 enu_to_ecef;        // rotation (upper 3x3): local ENU axes -> ECEF axes
-  vec4 camera_forward;     // xyz, local ENU
-  vec4 camera_right;       // xyz, local ENU
-  vec4 camera_up;          // xyz, local ENU
-  vec4 view;               // x tan(hfov/2), y tan(vfov/2), z width px, w height px
-  vec4 planet;             // x shell radius R (m), y camera altitude h (m), z ground altitude (m), w max cloud march distance (m)
-  vec4 sun_dir;            // xyz unit vector to the sun, local ENU; w cos(solar angular radius)
-  vec4 sun_irradiance;     // rgb solar spectral irradiance at the top of the atmosphere (W m^-2 nm^-1)
-  vec4 ground_albedo;      // rgb diffuse albedo of the ground; w night-sky radiance (W m^-2 sr^-1 nm^-1)
-  vec4 quality;            // x primary steps, y light steps, z multiple-scattering octaves, w ground-shadow steps per layer
-  vec4 ms_params;          // x a (extinction scale per octave), y b (energy per octave), z c (eccentricity per octave), w t_ref of the step distribution (m; 0 = uniform)
-  vec4 ap_params;          // x aerial-perspective max distance (m), y weather map height (texels), z weight of the next weather keyframe, w unused
-  vec4 march;              // x long-step factor in empty air (1 = off), y LOD on (0/1), z pixel angle (rad), w mean detail-noise value
-  vec4 skips;              // x coverage pyramid on (1/0), y light-march optical-depth cut-off (1e30 = none), zw unused
-  vec4 ap_forward;         // frustum of the aerial-perspective volume (local ENU): xyz forward,
-  vec4 ap_right;           //   xyz right, w tan(half its width),
-  vec4 ap_up;              //   xyz up, w tan(half its height)
-  ivec4 counts;            // x layer count, y frame index, z count density evaluations (0/1), w footprint jitter (0/1)
-  vec4 noise_quantiles[4]; // base shape noise value below which a fraction i/15 of texels lie, i = 0..15
-  vec4 weather_pole_south; // weather map value at the south pole (mean of the southernmost row)
-  vec4 weather_pole_north; // ... at the north pole
-  CloudLayerGpu layers[4];
-} U;
+layout(std140, binding = UBO_FRAME) uniform FrameUniforms {
+  mat4 enu_to_ecef;
+  vec3 camera_forward;
+  float tan_half_fov_x;
+  vec3 camera_right;
+  float tan_half_fov_y;
+  vec3 camera_up;
+  float pixel_angle_rad;
+  vec3 sun_direction;
+  float weather_blend;
+  vec3 ap_forward;
+  float ap_max_distance_m;
+  vec3 ap_right;
+  float ap_tan_half_width;
+  vec3 ap_up;
+  float ap_tan_half_height;
+  vec2 image_size_px;
+  float shell_radius_m;
+  float camera_altitude_m;
+  float ground_altitude_m;
+  float march_reach_m;
+  float weather_map_height;
+  float step_growth_ref_m;
+  int primary_steps, light_steps, ms_octaves, ground_shadow_steps;
+  float ms_extinction_scale, ms_energy_scale, ms_eccentricity_scale;
+  float light_march_cutoff_tau;
+  float long_step_factor;
+  float detail_noise_mean;
+  int level_of_detail;
+  int coverage_pyramid;
+  int layer_count;
+  int frame_index;
+  int count_density_evaluations;
+  int footprint_jitter;
+  vec4 noise_quantiles[4];
+  vec4 weather_pole_south;
+  vec4 weather_pole_north;
+  CloudLayerGpu layers[MAX_LAYERS];
+} frame;

@@ -3,6 +3,7 @@
 // anchor: texel (x, y) of array layer li holds layer li's optical depth towards the sun
 // above the ground point at the texel's offset (0 where the sun is down).
 #include "common.glsl"
+#include "frame_counters.glsl"
 #include "frame_uniforms.glsl"
 #include "ground_shadow_map.glsl"
 #include "atmosphere_model.glsl"
@@ -12,29 +13,24 @@
 #include "cloud_lighting.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(r32f, binding = 0) uniform writeonly image2DArray shadow_map;
-layout(std430, binding = 0) buffer FrameCounters {
-  uint density_evals;
-  uint nonfinite_pixels;
-  uint cloud_pixels;
-} counters;
+layout(r32f, binding = IMG_SHADOW_MAP_OUT) uniform writeonly image2DArray shadow_map;
 
 void main() {
   ivec3 id = ivec3(gl_GlobalInvocationID);
-  int n = int(SM.params.y);
-  if (id.x >= n || id.y >= n || id.z >= U.counts.x) return;
+  int n = shadow.map_texels;
+  if (id.x >= n || id.y >= n || id.z >= frame.layer_count) return;
   vec2 d = shadow_map_offset((vec2(id.xy) + 0.5) / float(n));
   // ground point under offset d: on the sphere of radius R + g around (0, 0, -(R + h)),
   // z = sqrt((R+g)^2 - |d|^2) - (R+h) written without cancellation
-  float R = U.planet.x, h = U.planet.y, g = U.planet.z;
+  float R = frame.shell_radius_m, h = frame.camera_altitude_m, g = frame.ground_altitude_m;
   float d2 = dot(d, d);
   float tau = 0.0;
   if (d2 < (R + g) * (R + g)) {
     float z = ((g - h) * (2.0 * R + g + h) - d2) / (sqrt((R + g) * (R + g) - d2) + R + h);
     vec3 p = vec3(d, z);
-    float mu_s = dot(up_at(p, R, h), U.sun_dir.xyz);
-    if (mu_s > 0.0) tau = layer_shadow_optical_depth(id.z, p, g, U.sun_dir.xyz, mu_s, int(U.quality.w));
+    float mu_s = dot(up_at(p, R, h), frame.sun_direction);
+    if (mu_s > 0.0) tau = layer_shadow_optical_depth(id.z, p, g, frame.sun_direction, mu_s, frame.ground_shadow_steps);
   }
-  if (U.counts.z != 0) atomicAdd(counters.density_evals, g_density_evals);
+  if (frame.count_density_evaluations != 0) atomicAdd(counters.density_evals, g_density_evals);
   imageStore(shadow_map, id, vec4(tau));
 }

@@ -6,17 +6,24 @@
 // horizon in one map. The layers' fields drift with their wind after the build; a lookup
 // first carries the ground point back along its layer's drift.
 
-layout(std140, binding = 2) uniform ShadowMapUniforms {
-  mat4 to_anchor[4];  // current local frame -> the anchor's local frame at build time (m), per layer
-  vec4 params;        // x warp scale K (m), y texels per side N, z map valid (1/0), w march per pixel instead (1/0)
-  vec4 volume;        // light volume (light_volume.glsl): x levels per layer, y texels per side, z valid (1/0)
-} SM;
+// std140: the GLSL side of renderer/shadow_map_uniforms.h (member comments there).
+layout(std140, binding = UBO_SHADOW_MAP) uniform ShadowMapUniforms {
+  mat4 to_anchor[MAX_LAYERS];
+  float warp_m;
+  int map_texels;
+  int map_valid;
+  int march_per_pixel;
+  int volume_levels;
+  int volume_texels;
+  int volume_valid;
+  int unused_pad;
+} shadow;
 
 // Map coordinates [0,1]^2 of a point given in the anchor's local frame.
 vec2 shadow_map_uv(vec3 q) {
   vec2 d = q.xy;
   float len = length(d);
-  vec2 u = d / (len + SM.params.x);
+  vec2 u = d / (len + shadow.warp_m);
   return u * 0.5 + 0.5;
 }
 
@@ -24,5 +31,5 @@ vec2 shadow_map_uv(vec3 q) {
 vec2 shadow_map_offset(vec2 uv) {
   vec2 u = uv * 2.0 - 1.0;
   float r = length(u);
-  return u * SM.params.x / max(1.0 - r, 1e-6);
+  return u * shadow.warp_m / max(1.0 - r, 1e-6);
 }

@@ -2,8 +2,9 @@
 // Builds the light volume (light_volume.glsl) at the ground shadow map's anchor: texel
 // (x, y, li * levels + k) holds layer li's optical depth towards the sun from the point at
 // the texel's warped horizontal offset and level k's altitude, by the light march of
-// cloud_lighting.glsl with quality.y light steps (base shape only, as in the march).
+// cloud_lighting.glsl with frame.light_steps light steps (base shape only, as in the march).
 #include "common.glsl"
+#include "frame_counters.glsl"
 #include "frame_uniforms.glsl"
 #include "ground_shadow_map.glsl"
 #include "light_volume.glsl"
@@ -14,31 +15,26 @@
 #include "cloud_lighting.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(r32f, binding = 0) uniform writeonly image3D volume_out;
-layout(std430, binding = 0) buffer FrameCounters {
-  uint density_evals;
-  uint nonfinite_pixels;
-  uint cloud_pixels;
-} counters;
+layout(r32f, binding = IMG_LIGHT_VOLUME_OUT) uniform writeonly image3D volume_out;
 
 void main() {
   ivec3 id = ivec3(gl_GlobalInvocationID);
-  int n = int(SM.volume.y), levels = int(SM.volume.x);
+  int n = shadow.volume_texels, levels = shadow.volume_levels;
   int li = id.z / levels;
-  if (id.x >= n || id.y >= n || li >= U.counts.x) return;
+  if (id.x >= n || id.y >= n || li >= frame.layer_count) return;
   float alt = light_volume_altitude(li, float(id.z - li * levels));
   vec2 d = shadow_map_offset((vec2(id.xy) + 0.5) / float(n));
   // the point at offset d and altitude alt, on the sphere of radius R + alt around
   // (0, 0, -(R + h)), without cancellation (as in ground_shadow_map.comp)
-  float R = U.planet.x, h = U.planet.y;
+  float R = frame.shell_radius_m, h = frame.camera_altitude_m;
   float d2 = dot(d, d);
   float tau = 0.0;
   if (d2 < (R + alt) * (R + alt)) {
     float z = ((alt - h) * (2.0 * R + alt + h) - d2) / (sqrt((R + alt) * (R + alt) - d2) + R + h);
     vec3 p = vec3(d, z);
-    float mu_s = dot(up_at(p, R, h), U.sun_dir.xyz);
-    tau = light_optical_depth(li, p, alt, U.sun_dir.xyz, mu_s, int(U.quality.y), weather_at(p), 1e30);  // no cut-off: the volume is interpolated
+    float mu_s = dot(up_at(p, R, h), frame.sun_direction);
+    tau = light_optical_depth(li, p, alt, frame.sun_direction, mu_s, frame.light_steps, weather_at(p), 1e30);  // no cut-off: the volume is interpolated
   }
-  if (U.counts.z != 0) atomicAdd(counters.density_evals, g_density_evals);
+  if (frame.count_density_evaluations != 0) atomicAdd(counters.density_evals, g_density_evals);
   imageStore(volume_out, id, vec4(tau));
 }

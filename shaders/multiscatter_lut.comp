@@ -4,10 +4,10 @@
 // Psi_ms = L_2nd / (1 - f_ms). Unit sun irradiance.
 #include "common.glsl"
 #include "atmosphere_model.glsl"
-layout(binding = 0) uniform sampler2D transmittance_lut;
+layout(binding = TEX_TRANSMITTANCE_LUT) uniform sampler2D transmittance_lut;
 
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(rgba32f, binding = 0) uniform writeonly image2D out_lut;
+layout(rgba32f, binding = IMG_LUT_OUT) uniform writeonly image2D out_lut;
 
 const int DIRS = 64;
 const int STEPS = 20;
@@ -61,7 +61,7 @@ void main() {
     if (ground) {
       vec3 x = vec3(0.0, 0.0, r) + len * d;
       float mu_g = dot(normalize(x), sun);
-      L += T * sun_transmittance(ATMO_BOTTOM, mu_g) * max(mu_g, 0.0) * GROUND_ALBEDO_ATMO / PI;
+      L += T * sun_transmittance(ATMO_BOTTOM, mu_g) * max(mu_g, 0.0) * GROUND_ALBEDO / PI;
     }
     L2 += L;             // L' (already includes p_u for the sun scatter)
     fms += F * INV_4PI;  // L_f p_u

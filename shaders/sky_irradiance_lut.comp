@@ -8,7 +8,7 @@
 #include "atmosphere_lookup.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(rgba32f, binding = 0) uniform writeonly image2D out_lut;
+layout(rgba32f, binding = IMG_LUT_OUT) uniform writeonly image2D out_lut;
 
 const int DIRS = 64;
 const int STEPS = 16;

@@ -9,7 +9,7 @@
 #include "sky_view_mapping.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(rgba32f, binding = 0) uniform writeonly image2D out_lut;
+layout(rgba32f, binding = IMG_LUT_OUT) uniform writeonly image2D out_lut;
 
 const int STEPS = 30;
 
@@ -17,8 +17,8 @@ void main() {
   ivec2 px = ivec2(gl_GlobalInvocationID.xy);
   ivec2 size = imageSize(out_lut);
   if (any(greaterThanEqual(px, size))) return;
-  float r = atmo_radius(U.planet.y);
-  float mu_sun = U.sun_dir.z;
+  float r = atmo_radius(frame.camera_altitude_m);
+  float mu_sun = frame.sun_direction.z;
   vec3 sun = vec3(sqrt(max(0.0, 1.0 - mu_sun * mu_sun)), 0.0, mu_sun);
   vec3 d = sky_view_direction(vec2(px) / vec2(size - 1), r);
   float len = atmosphere_path_length(r, d.z);

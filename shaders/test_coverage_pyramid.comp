@@ -7,8 +7,8 @@
 #include "coverage_pyramid.glsl"
 
 layout(local_size_x = 64) in;
-layout(std430, binding = 2) readonly buffer Caps { vec4 in_cap[]; };
-layout(std430, binding = 3) writeonly buffer Result { float out_max[]; };
+layout(std430, binding = SSBO_TEST_INPUT_A) readonly buffer Caps { vec4 in_cap[]; };
+layout(std430, binding = SSBO_TEST_OUTPUT) writeonly buffer Result { float out_max[]; };
 uniform uint u_count;
 
 void main() {

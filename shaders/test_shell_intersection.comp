@@ -9,9 +9,9 @@
 #include "common.glsl"
 
 layout(local_size_x = 64) in;
-layout(std430, binding = 0) readonly buffer Geom { vec4 in_geom[]; };
-layout(std430, binding = 1) readonly buffer Point { vec4 in_point[]; };
-layout(std430, binding = 2) writeonly buffer Result { vec4 out_result[]; };
+layout(std430, binding = SSBO_TEST_INPUT_A) readonly buffer Geom { vec4 in_geom[]; };
+layout(std430, binding = SSBO_TEST_INPUT_B) readonly buffer Point { vec4 in_point[]; };
+layout(std430, binding = SSBO_TEST_OUTPUT) writeonly buffer Result { vec4 out_result[]; };
 uniform uint u_count;
 
 void main() {

@@ -19,7 +19,7 @@
 #include "renderer/reference/reference_atmosphere.h"
 #include "renderer/reference/reference_renderer.h"
 #include "renderer/reference/reference_scene.h"
-#include "renderer/scene_setup.h"
+#include "renderer/model/scene_constants.h"
 
 namespace cloudsvc::test {
 namespace {
@@ -96,7 +96,7 @@ TEST(AccuracyAtmosphereMc, ClearSkyNoonAndSunsetAgainstMonteCarlo) {
       const FrameImage ref = reference::render_reference(v, clear);
       Sample s;
       for (int c = 0; c < 3; ++c) {
-        s.gpu[c] = (gpu.pixel(1, 1)[c] - kNightSkyRadiance) / kSolarIrradiance[c];
+        s.gpu[c] = (gpu.pixel(1, 1)[c] - model::kNightSkyRadiance) / model::kSolarIrradiance[c];
         s.ref[c] = (ref.pixel(1, 1)[c] - reference::kNightSkyRadiance) / reference::kSolarIrradiance[c];
         reference::mc::McSettings cs = mcs;
         cs.seed = 1000 + 10 * di + c;

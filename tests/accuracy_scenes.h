@@ -11,7 +11,9 @@
 #include <vector>
 
 #include "geodesy/utc_time.h"
-#include "renderer/render_types.h"
+#include "renderer/api/frame_image.h"
+#include "renderer/api/render_quality.h"
+#include "renderer/api/view_request.h"
 
 namespace cloudsvc::accuracy {
 

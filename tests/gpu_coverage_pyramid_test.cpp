@@ -14,6 +14,7 @@
 #include "renderer/gl/egl_context.h"
 #include "renderer/gl/gl_objects.h"
 #include "renderer/gl/shader_program.h"
+#include "renderer/gpu_interface.h"
 #include "weather/weather_map.h"
 
 namespace cloudsvc::test {
@@ -51,9 +52,9 @@ TEST(GpuCoveragePyramid, ShaderBoundMatchesTheCpuBound) {
   gl::Buffer out = gl::make_buffer(static_cast<GLsizeiptr>(n * 4), nullptr, GL_DYNAMIC_READ);
   prog.use();
   glUniform1ui(prog.uniform("u_count"), static_cast<GLuint>(n));
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, pyramid.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, in.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, out.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::ssbo::COVERAGE_PYRAMID, pyramid.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::ssbo::TEST_INPUT_A, in.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::ssbo::TEST_OUTPUT, out.id());
   glDispatchCompute(static_cast<GLuint>((n + 63) / 64), 1, 1);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   std::vector<float> gpu(n);

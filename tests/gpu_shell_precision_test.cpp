@@ -18,6 +18,7 @@
 #include "renderer/gl/egl_context.h"
 #include "renderer/gl/gl_objects.h"
 #include "renderer/gl/shader_program.h"
+#include "renderer/gpu_interface.h"
 
 namespace cloudsvc {
 namespace {
@@ -48,9 +49,9 @@ std::vector<GpuOut> run_gpu(const std::vector<Case>& cases) {
   gl::Buffer bo = gl::make_buffer(bytes, nullptr, GL_DYNAMIC_READ);
   prog.use();
   glUniform1ui(prog.uniform("u_count"), static_cast<GLuint>(cases.size()));
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, bg.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, bp.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, bo.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::ssbo::TEST_INPUT_A, bg.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::ssbo::TEST_INPUT_B, bp.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::ssbo::TEST_OUTPUT, bo.id());
   glDispatchCompute(static_cast<GLuint>((cases.size() + 63) / 64), 1, 1);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   std::vector<GpuOut> out(cases.size());

@@ -371,7 +371,7 @@ TEST(SlabMc, Seed001TransmittanceBand) {
 }
 
 // ---------------------------------------------------------------------------------
-// Renderer model (a transcription of scene.comp)
+// Renderer model (a transcription of cloud_march.comp)
 
 // With one octave (pure single scattering with the true phase), no diffuse term, no
 // light-march cap and converged steps, the shader's march integrates the single-
@@ -400,8 +400,8 @@ TEST(SlabRendererModel, OneOctaveWithoutDiffuseIsSingleScattering) {
   }
 }
 
-// Light march (scene.comp:60-78): optical depth to the top along the sun, capped at
-// 4 km of path; and the diffuse in-scatter (scene.comp:110-125) at the slab's faces.
+// Light march (cloud_lighting.glsl light_optical_depth): optical depth to the top along the sun, capped at
+// 4 km of path; and the diffuse in-scatter (diffuse_inscatter) at the slab's faces.
 TEST(SlabRendererModel, LightMarchAndDiffuseTermAsInTheShader) {
   const SlabSpec slab = slab_from_optical_depth(100.0, 80.0, kDropletUm);  // H = 1083 m
   SlabRendererModelOptions o;

@@ -225,7 +225,7 @@ TEST(RenderImage, ViewLutsAreReusedOnlyWhileTheyServeTheView) {
   EXPECT_TRUE(r.render(climbed).stats.sky_view_recomputed);
 }
 
-// The sun disk is box-filtered over the pixel (scene.comp, sun_disk): at 64x36 (pixels of
+// The sun disk is box-filtered over the pixel (composite.comp, sun_disk): at 64x36 (pixels of
 // 0.94 deg, the disk 0.53 deg across) a camera panning across the sun in 0.01 deg steps sees
 // no pixel jump (each step changes any pixel by < 5 % of the brightest one; a point-sampled
 // disk jumps by 100 % when its edge crosses a pixel centre), and the disk's energy in the
@@ -262,7 +262,7 @@ TEST(RenderImage, SunDiskIsBoxFilteredOverThePixel) {
   EXPECT_LT(e_max / e_min, 1.02);
 }
 
-// The horizon is box-filtered over the pixel (scene.comp: the fraction of the pixel's
+// The horizon is box-filtered over the pixel (composite.comp split_at_horizon: the fraction of the pixel's
 // footprint below the horizon, from the ray elevations at its edges): (1) a clear view
 // panned in pitch by 0.02 pixel per frame (rolled 20 deg, so the horizon crosses pixels
 // diagonally) changes no pixel by more than 5 % of the ground/sky contrast in one step (a

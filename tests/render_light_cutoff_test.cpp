@@ -22,7 +22,7 @@ TEST_P(LightCutoff, StopsSpentLightMarchesWithoutChangingTheImage) {
   const accuracy::AccuracyScene& s = accuracy::accuracy_scenes()[static_cast<size_t>(GetParam())];
   const ViewRequest v = accuracy::accuracy_view(s, 96, 54);
   // one octave (every preset), and three: the cut-off then applies to the slowest-decaying
-  // octave, e^(-a^2 tau) with a = ms_a = 0.4, i.e. at tau = 12 / 0.16 = 75
+  // octave, e^(-a^2 tau) with a = ms_extinction_scale = 0.4, i.e. at tau = 12 / 0.16 = 75
   for (int octaves : {1, 3}) {
     RenderQuality every;
     every.ms_octaves = octaves;

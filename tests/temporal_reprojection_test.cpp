@@ -7,7 +7,7 @@
 
 #include "geodesy/geodetic.h"
 #include "renderer/temporal_reprojection.h"
-#include "renderer/wind_drift.h"
+#include "weather/wind_drift.h"
 
 namespace cloudsvc {
 namespace {
@@ -160,11 +160,11 @@ TEST(TemporalReprojection, FastCloseMotionMarchesMorePixels) {
   const WindAnchor anchor{a.position, a.unix_time_s};
   const Reprojection fast = make_reprojection(a, flown, w, anchor);
   EXPECT_TRUE(fast_cloud_motion(fast, q));
-  EXPECT_EQ(make_temporal_uniforms(flown, q, true, &fast, &a, true).grid.x, 2);
+  EXPECT_EQ(plan_temporal_frame(flown, q, true, &a, true).stride, 2);
   const Reprojection slow = make_reprojection(high_a, high_b, w, anchor);
   EXPECT_FALSE(fast_cloud_motion(slow, q));
-  EXPECT_EQ(make_temporal_uniforms(high_b, q, true, &slow, &high_a, false).grid.x, 4);
-  EXPECT_EQ(make_temporal_uniforms(flown, q, false, nullptr, nullptr, true).grid.x, 1);  // no history: all
+  EXPECT_EQ(plan_temporal_frame(high_b, q, true, &high_a, false).stride, 4);
+  EXPECT_EQ(plan_temporal_frame(flown, q, false, nullptr, true).stride, 1);  // no history: all
   q.fast_motion_px = 0.0;  // off
   EXPECT_FALSE(fast_cloud_motion(fast, q));
 }

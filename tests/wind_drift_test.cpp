@@ -1,9 +1,9 @@
-// Wind advection as a solid-body rotation of the cloud field (renderer/wind_drift.h).
+// Wind advection as a solid-body rotation of the cloud field (weather/wind_drift.h).
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "renderer/wind_drift.h"
+#include "weather/wind_drift.h"
 
 namespace cloudsvc {
 namespace {

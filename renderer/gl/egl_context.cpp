@@ -31,7 +31,8 @@ bool has_extension(const char* list, const char* name) {
 }
 
 // libepoxy aborts on eglGetPlatformDisplay before a display exists: fetch the EXT entry
-// point directly (TOOLCHAIN notes).
+// point directly (libepoxy 1.5.10 aborts with "No provider of eglGetPlatformDisplay found";
+// docs/ARCHITECTURE.md, "Threads and contexts").
 GetPlatformDisplayFn platform_display_fn() {
   return reinterpret_cast<GetPlatformDisplayFn>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
 }

@@ -1,7 +1,7 @@
 // Headless OpenGL 4.5 core context through EGL (no window, no display server).
 // Tries the surfaceless platform (EGL_MESA_platform_surfaceless), then the device
 // platform (EGL_EXT_platform_device). On a machine without a GPU this is Mesa llvmpipe;
-// with a GPU, the vendor driver. See docs/ARCHITECTURE.md and TOOLCHAIN notes.
+// with a GPU, the vendor driver. See docs/ARCHITECTURE.md, "Threads and contexts".
 #pragma once
 
 #include <memory>

@@ -1,5 +1,7 @@
 #include "renderer/gl/shader_program.h"
 
+#include "renderer/gpu_interface.h"
+
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -79,6 +81,7 @@ std::string preprocess_shader(const std::string& name, const std::vector<std::st
   const auto eol = text.find('\n');
   std::string header = text.substr(0, eol + 1);
   if (header.rfind("#version", 0) != 0) throw std::runtime_error(name + ": first line must be #version");
+  header += gpu::glsl_interface_preamble();
   for (const auto& d : defines) header += "#define " + d + "\n";
   header += "#line 2\n";
   return header + text.substr(eol + 1);

@@ -13,7 +13,8 @@ namespace cloudsvc::gl {
 // Embedded source of a shader file by its file name (e.g. "common.glsl").
 std::string_view embedded_shader(const std::string& name);
 
-// Source text of `name` with its includes expanded and `defines` inserted after #version.
+// Source text of `name` with its includes expanded and, after #version, the CPU/GPU
+// interface (gpu::glsl_interface_preamble: binding points, model constants) and `defines`.
 std::string preprocess_shader(const std::string& name, const std::vector<std::string>& defines = {});
 
 class ShaderProgram {

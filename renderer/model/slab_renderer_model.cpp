@@ -1,5 +1,5 @@
-// The GPU cloud march of shaders/scene.comp, transcribed for a homogeneous flat slab
-// (see slab_renderer_model.h). Line numbers refer to shaders/scene.comp unless noted.
+// The GPU cloud march of shaders/cloud_march.comp, transcribed for a homogeneous flat slab
+// (see slab_renderer_model.h). Function names refer to shaders/cloud_march.comp and cloud_lighting.glsl.
 #include "renderer/model/slab_renderer_model.h"
 
 #include <algorithm>
@@ -30,7 +30,7 @@ double slab_extinction(const SlabSpec& slab, double z) {
 // GLSL has no expm1).
 double one_minus_exp_neg(double x) { return -std::expm1(-x); }
 
-// Two-stream diffuse transmittance (scene.comp:32).
+// Two-stream diffuse transmittance (cloud_lighting.glsl slab_diffuse_transmittance).
 double slab_diffuse_transmittance(double tau, double mean_cosine) {
   return 1.0 / (1.0 + 0.75 * (1.0 - mean_cosine) * tau);
 }
@@ -49,11 +49,11 @@ double cos_sun(const SlabSpec& slab) { return std::cos(slab.sun_zenith_deg * kPi
 SlabRendererModelOptions converged_renderer_model_options() {
   SlabRendererModelOptions o;
   o.primary_steps = 4096;
-  o.min_step_m = 0.0;  // the 1 m floor of scene.comp:179 would cap thin slabs at H / 1 m steps
+  o.min_step_m = 0.0;  // the 1 m step floor of the march would cap thin slabs at H / 1 m steps
   return o;
 }
 
-// light_optical_depth (scene.comp:60-78) in the flat slab, sun above the horizon.
+// light_optical_depth (cloud_lighting.glsl) in the flat slab, sun above the horizon.
 double slab_light_optical_depth(const SlabSpec& slab, double z, const SlabRendererModelOptions& o) {
   const double mu_s = cos_sun(slab);
   if (!(mu_s > 0.0)) return 0.0;
@@ -72,7 +72,7 @@ double slab_light_optical_depth(const SlabSpec& slab, double z, const SlabRender
   return tau;
 }
 
-// diffuse_inscatter (scene.comp:110-125) with T_atm = 1, coverage 1, density scale 1,
+// diffuse_inscatter (cloud_lighting.glsl) with T_atm = 1, coverage 1, density scale 1,
 // E_sun = 1, E_sky = 0 (sky_irradiance), ground albedo 0 (E_ground = 0).
 double slab_diffuse_inscatter(const SlabSpec& slab, double z, const SlabRendererModelOptions& o, double view_up_z) {
   const double sigma_nominal = slab.sigma_t_per_m * 1.0 * 1.0;           // :112
@@ -106,7 +106,7 @@ SlabRendererModelResult slab_renderer_model_radiance(const SlabSpec& slab, const
   if (!(slab.sigma_t_per_m > 0.0) || !(slab.thickness_m > 0.0) || o.primary_steps < 1 || o.light_steps < 1)
     throw std::invalid_argument("slab renderer model: bad slab or options");
   const JdDParams phase = jdd_params(slab.droplet_diameter_um);
-  // Camera ray: opposite to the light's travel direction (scene.comp:143-149).
+  // Camera ray: opposite to the light's travel direction (cloud_march.comp main).
   const glm::dvec3 dir = -view_travel_direction(v, top);
   const glm::dvec3 sun = sun_direction(slab.sun_zenith_deg);
   const double cos_view_sun = glm::dot(dir, sun);  // :149
@@ -135,9 +135,9 @@ SlabRendererModelResult slab_renderer_model_radiance(const SlabSpec& slab, const
       double s_sum = 0.0, a = 1.0, b = 1.0, c = 1.0;
       for (int oc = 0; oc < o.ms_octaves; ++oc) {  // :201-204
         s_sum += b * octave_phase(cos_view_sun, phase, c) * std::exp(-a * tau);
-        a *= o.ms_a;
-        b *= o.ms_b;
-        c *= o.ms_c;
+        a *= o.ms_extinction_scale;
+        b *= o.ms_energy_scale;
+        c *= o.ms_eccentricity_scale;
       }
       const double L_sun = 1.0 * 1.0 * s_sum;  // :205 E_sun T_atm s_sum
       const double L_diffuse = o.diffuse ? slab_diffuse_inscatter(slab, z, o, -dir.z) : 0.0;  // :207

@@ -1,4 +1,4 @@
-// A double-precision transcription of what the GPU cloud march (shaders/scene.comp)
+// A double-precision transcription of what the GPU cloud march (shaders/cloud_march.comp)
 // computes for a homogeneous plane-parallel slab: the "model of the model" that the
 // Monte Carlo slab (slab_monte_carlo.h) is compared against. It is deliberately literal:
 // every step cites the shader line it mirrors, and nothing here is tuned.
@@ -9,29 +9,32 @@
 // atmosphere transmittance T_atm = 1, sky irradiance E_sky = 0, ground albedo 0 (sun
 // only), no aerial perspective. A camera above the slab looking down sees the reflected
 // radiance; below looking up, the transmitted radiance. The result is the cloud term C
-// of scene.comp:209 (the background T · L_bg is excluded: it holds the direct sun, which
+// of cloud_march.comp main() (the background T · L_bg is excluded: it holds the direct sun, which
 // the Monte Carlo radiances exclude as well). Units: L / E_sun in sr^-1.
 #pragma once
 
 #include "renderer/model/slab_monte_carlo.h"
-#include "renderer/render_types.h"
+#include "renderer/model/scene_constants.h"
+#include "renderer/api/frame_image.h"
+#include "renderer/api/render_quality.h"
+#include "renderer/api/view_request.h"
 
 namespace cloudsvc::model {
 
 struct SlabRendererModelOptions {
-  // RenderQuality defaults (renderer/render_types.h), as the shader receives them in
-  // U.quality and U.ms_params (renderer/scene_setup.cpp:86-89).
-  int primary_steps = RenderQuality{}.primary_steps;  // U.quality.x
-  int light_steps = RenderQuality{}.light_steps;      // U.quality.y
-  int ms_octaves = RenderQuality{}.ms_octaves;        // U.quality.z
-  double ms_a = RenderQuality{}.ms_a;                 // U.ms_params.x, extinction per octave
-  double ms_b = RenderQuality{}.ms_b;                 // U.ms_params.y, energy per octave
-  double ms_c = RenderQuality{}.ms_c;                 // U.ms_params.z, eccentricity per octave
-  double min_step_m = 1.0;                            // scene.comp:179, max(total_len / N, 1 m)
-  bool cap_light_march = true;                        // scene.comp:66, len <= LIGHT_MAX_DIST
-  double light_max_dist_m = 4000.0;                   // scene.comp:27
-  bool diffuse = true;                                // scene.comp:207, diffuse_inscatter
-  double mean_cosine = 0.86;                          // scene.comp:28, MEAN_COSINE
+  // RenderQuality defaults (renderer/api/render_quality.h), as the shader receives them in
+  // the frame uniforms (renderer/frame_uniforms.h, same names).
+  int primary_steps = RenderQuality{}.primary_steps;
+  int light_steps = RenderQuality{}.light_steps;
+  int ms_octaves = RenderQuality{}.ms_octaves;
+  double ms_extinction_scale = RenderQuality{}.ms_extinction_scale;      // Wrenninge a
+  double ms_energy_scale = RenderQuality{}.ms_energy_scale;              // Wrenninge b
+  double ms_eccentricity_scale = RenderQuality{}.ms_eccentricity_scale;  // Wrenninge c
+  double min_step_m = 1.0;  // cloud_march.comp: steps of at least 1e-6 march units
+  bool cap_light_march = true;                        // light march over at most light_max_dist_m
+  double light_max_dist_m = kLightMarchReach_m;       // LIGHT_MARCH_REACH_M
+  bool diffuse = true;                                // cloud_lighting.glsl diffuse_inscatter
+  double mean_cosine = kTwoStreamMeanCosine;          // TWO_STREAM_MEAN_COSINE
   // The diffuse field's in-scatter in the P1 (diffusion) approximation,
   // (Phi + 3 g F_net . w) / (4 pi) (cloud_lighting.glsl); false: isotropic hemispheres (the
   // model before the Monte Carlo comparison).
@@ -43,12 +46,12 @@ struct SlabRendererModelOptions {
   // Delta-scaling (Joseph, Wiscombe, Weinman 1976): a fraction f of the
   // scattering (the forward peak) is counted as unscattered, so the beam that feeds the
   // diffuse field decays with (1 - f) tau; 0 = off.
-  double delta_f = 0.86 * 0.86;  // scene: DELTA_F = MEAN_COSINE^2
+  double delta_f = kTwoStreamMeanCosine * kTwoStreamMeanCosine;  // cloud_lighting.glsl DELTA_F
   // Experiment: the sun term's light-march optical depth scaled by this (1 = exact single
   // scattering, the shader; 1 - f = the delta-scaled beam).
   double sun_tau_scale = 1.0;
-  double cloud_t_eps = 1e-3;                          // scene.comp:26, early exit
-  // The shader jitters the sample within each step per pixel (scene.comp:178,187). The
+  double cloud_t_eps = 1e-3;  // cloud_march.comp CLOUD_T_EPS, early exit
+  // The shader jitters the sample within each step per pixel (cloud_march.comp main()). The
   // model averages over jitter_samples stratified jitters (j + 0.5) / n, i.e. the
   // expected pixel value; 1 = the step midpoint.
   int jitter_samples = 1;
@@ -71,8 +74,8 @@ SlabRendererModelResult slab_renderer_model_radiance(const SlabSpec& slab, const
                                                      const SlabRendererModelOptions& options = {});
 
 // Sun part pieces, exposed for tests: the light-march optical depth from height z (m) to
-// the slab top towards a sun with cosine mu_s (scene.comp:60-78), and the diffuse
-// in-scatter per unit scattering (scene.comp:110-125) in sr^-1.
+// the slab top towards a sun with cosine mu_s (cloud_lighting.glsl light_optical_depth), and the diffuse
+// in-scatter per unit scattering (cloud_lighting.glsl diffuse_inscatter) in sr^-1.
 double slab_light_optical_depth(const SlabSpec& slab, double z, const SlabRendererModelOptions& options);
 // view_up_z: z component of the direction the in-scattered light travels (towards the
 // camera); only the P1 variant depends on it.

@@ -8,17 +8,15 @@
 
 #include <glm/glm.hpp>
 
+#include "renderer/model/scene_constants.h"
 #include "renderer/reference/cloud_field.h"
 
 namespace cloudsvc::reference {
 
-// The model's cap on the light march (m): the sun's optical depth is accumulated from the
-// sample to the layer top (or base, when the sun is below the horizontal) but over at most
-// 4 km (shaders/scene.comp LIGHT_MAX_DIST). It is part of the model definition: a long
-// grazing path through a sheet stops there.
-constexpr double kLightMarchCap_m = 4000.0;
-// Droplet phase mean cosine used by the two-stream terms (scene.comp MEAN_COSINE).
-constexpr double kTwoStreamMeanCosine = 0.86;
+// The model's light-march reach and two-stream mean cosine (renderer/model/scene_constants.h,
+// shared with the shaders).
+using model::kTwoStreamMeanCosine;
+inline constexpr double kLightMarchCap_m = model::kLightMarchReach_m;
 
 // Step scale of a layer: cloud_step_m and light_step_m are for cumulus (8 km noise period,
 // peak extinction ~0.15 /m). A layer whose noise features are larger (period / 8 km,

@@ -8,7 +8,9 @@
 // plus the RMSE of the opacity channel (a).
 #pragma once
 
-#include "renderer/render_types.h"
+#include "renderer/api/frame_image.h"
+#include "renderer/api/render_quality.h"
+#include "renderer/api/view_request.h"
 
 namespace cloudsvc::reference {
 

@@ -48,7 +48,7 @@ PixelIntegrator::PixelIntegrator(const CloudField& field, const AtmosphereTables
       ground_albedo_(atmo::kGroundAlbedo),
       camera_atmo_radius_(atmo::radius_for_altitude(field.scene().shell.camera_alt_m)) {
   // The smallest octave extinction scale is a^(n-1); e^{-a^(n-1) tau} < cutoff beyond this.
-  const double a_min = std::pow(settings.ms_a, std::max(settings.ms_octaves - 1, 0));
+  const double a_min = std::pow(settings.ms_extinction_scale, std::max(settings.ms_octaves - 1, 0));
   tau_stop_ = std::log(1.0 / settings.light_cutoff) / std::max(a_min, 1e-12);
 }
 
@@ -77,8 +77,8 @@ glm::dvec3 PixelIntegrator::cloud_inscatter(int li, const glm::dvec3& p, double 
     const double step = settings_.light_step_m * layer_step_scale(L);
     const double tau = light_optical_depth(field_, li, p, alt, sun, mu_s, step, tau_stop_, evals);
     sun_light = e_sun_ * t_atm *
-                octave_phase_sum(L.phase, cos_view_sun, tau, settings_.ms_octaves, settings_.ms_a, settings_.ms_b,
-                                 settings_.ms_c);
+                octave_phase_sum(L.phase, cos_view_sun, tau, settings_.ms_octaves, settings_.ms_extinction_scale, settings_.ms_energy_scale,
+                                 settings_.ms_eccentricity_scale);
   }
   const double ground_alt = s.ground_alt_m;
   const glm::dvec3 diffuse =

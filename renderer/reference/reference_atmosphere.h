@@ -1,6 +1,7 @@
 // The clear-sky atmosphere of the model (docs/RENDERING.md "Atmosphere"; Hillaire 2020,
 // "A Scalable and Production Ready Sky and Atmosphere Rendering Technique", EGSR; constants
-// of DESIGN.md §4), evaluated by direct numerical integration in double precision, no LUTs.
+// in renderer/model/atmosphere_constants.h), evaluated by direct numerical integration in
+// double precision, no LUTs.
 //
 // Geometry: the atmosphere is spherically symmetric with its own radii (ground 6360 km,
 // top 6460 km), independent of the cloud-shell radius: a point is given by its radius r
@@ -15,24 +16,24 @@
 
 #include <glm/glm.hpp>
 
+#include "renderer/model/atmosphere_constants.h"
+#include "renderer/model/scene_constants.h"
+
 namespace cloudsvc::reference::atmo {
 
-constexpr double kBottomRadius = 6360.0e3;  // m
-constexpr double kTopRadius = 6460.0e3;     // m
+// The atmosphere's constants (renderer/model/atmosphere_constants.h, shared with the
+// shaders) and the ground albedo its multiple scattering sees.
+using model::atmosphere::kBottomRadius;
+using model::atmosphere::kMieExtinction;
+using model::atmosphere::kMieG;
+using model::atmosphere::kMieScaleHeight;
+using model::atmosphere::kMieScattering;
+using model::atmosphere::kOzoneAbsorption;
+using model::atmosphere::kRayleighScaleHeight;
+using model::atmosphere::kRayleighScattering;
+using model::atmosphere::kTopRadius;
 constexpr double kThickness = kTopRadius - kBottomRadius;
-// Rayleigh scattering at sea level (1/m), scale height 8 km (Bruneton 2017 / Hillaire 2020).
-constexpr glm::dvec3 kRayleighScattering{5.802e-6, 13.558e-6, 33.1e-6};
-constexpr double kRayleighScaleHeight = 8000.0;
-// Aerosols ("Mie"): scattering 3.996e-6 /m, extinction 4.44e-6 /m, scale height 1.2 km,
-// Cornette-Shanks phase with g = 0.8.
-constexpr double kMieScattering = 3.996e-6;
-constexpr double kMieExtinction = 4.44e-6;
-constexpr double kMieScaleHeight = 1200.0;
-constexpr double kMieG = 0.8;
-// Ozone absorption at the peak (1/m), density a tent 10-25-40 km.
-constexpr glm::dvec3 kOzoneAbsorption{0.650e-6, 1.881e-6, 0.085e-6};
-// Ground albedo the multiple-scattering term sees (= the ground's albedo, 680/550/440 nm).
-constexpr glm::dvec3 kGroundAlbedo{0.14, 0.12, 0.08};
+constexpr glm::dvec3 kGroundAlbedo{model::kGroundAlbedo[0], model::kGroundAlbedo[1], model::kGroundAlbedo[2]};
 
 // Medium at an altitude (clamped to >= 0: points below the atmosphere's ground, which the
 // cloud shell geometry can produce, get ground-level air).

@@ -22,8 +22,11 @@
 
 #include "renderer/reference/atmosphere_tables.h"
 #include "renderer/reference/reference_inputs.h"
-#include "renderer/render_types.h"
-#include "renderer/wind_drift.h"  // WindAnchor (plain struct)
+#include "renderer/model/scene_constants.h"
+#include "renderer/api/frame_image.h"
+#include "renderer/api/render_quality.h"
+#include "renderer/api/view_request.h"
+#include "weather/wind_drift.h"  // WindAnchor (plain struct)
 #include "weather/cloud_layer.h"
 
 namespace cloudsvc::reference {
@@ -39,7 +42,7 @@ struct ReferenceSettings {
                                      // to the unshadowed sun term of the sample)
   // Model parameters: RenderQuality's defaults (the GPU's model)
   int ms_octaves = 1;                // Wrenninge octaves (1: single scattering + the delta-Eddington diffuse term)
-  double ms_a = 0.4, ms_b = 0.5, ms_c = 0.6;
+  double ms_extinction_scale = 0.4, ms_energy_scale = 0.5, ms_eccentricity_scale = 0.6;
   // Atmosphere
   double atmosphere_step_m = 500.0;  // base step of the per-pixel atmosphere integrations (atmo::altitude_step):
                                      // sun transmittance, sky and aerial-perspective single scattering
@@ -56,14 +59,11 @@ struct ReferenceSettings {
   int threads = 2;
 };
 
-// Solar spectral irradiance at the top of the atmosphere at 680, 550, 440 nm
-// (W m^-2 nm^-1; the extraterrestrial spectrum of Bruneton's precomputed-scattering demo),
-// the sun's angular radius, the ground albedo and the night-sky radiance: the model
-// constants of docs/RENDERING.md, stated here for the reference (the accuracy test checks
-// them against the GPU path's renderer/scene_setup.h).
-inline constexpr double kSolarIrradiance[3] = {1.474, 1.8504, 1.91198};
-inline constexpr double kSunAngularRadiusDeg = 0.2667;
-inline constexpr double kNightSkyRadiance = 2.0e-9;  // W m^-2 sr^-1 nm^-1, airglow + starlight
+// The solar irradiance, the sun's angular radius and the night-sky radiance of the model
+// (renderer/model/scene_constants.h, shared with the shaders).
+using model::kNightSkyRadiance;
+using model::kSolarIrradiance;
+using model::kSunAngularRadiusDeg;
 
 // Renders the view (rgba float, rows from the top; rgb radiance in W m^-2 sr^-1 nm^-1 at
 // 680/550/440 nm, a = cloud opacity). Stats: render_ms (wall clock, including the first

@@ -18,8 +18,10 @@
 
 #include "geodesy/geodetic.h"
 #include "renderer/model/phase_function.h"
-#include "renderer/render_types.h"
-#include "renderer/wind_drift.h"  // WindAnchor (plain struct; wind_rotation() itself is not used)
+#include "renderer/api/frame_image.h"
+#include "renderer/api/render_quality.h"
+#include "renderer/api/view_request.h"
+#include "weather/wind_drift.h"  // WindAnchor (plain struct; wind_rotation() itself is not used)
 #include "weather/cloud_layer.h"
 
 namespace cloudsvc::reference {

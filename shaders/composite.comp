@@ -5,6 +5,7 @@
 // the ground shadow map, seen through the aerial perspective). Output: linear spectral radiance at 680/550/440 nm
 // (W m^-2 sr^-1 nm^-1) in rgb, cloud opacity (1 - cloud transmittance) in a.
 #include "common.glsl"
+#include "frame_counters.glsl"
 #include "frame_uniforms.glsl"
 #include "temporal_uniforms.glsl"
 #include "atmosphere_model.glsl"
@@ -18,15 +19,10 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 const float BACKGROUND_T_EPS = 1e-3;  // = CLOUD_T_EPS of cloud_march.comp
-layout(rgba32f, binding = 0) uniform writeonly image2D out_image;
-layout(binding = 6) uniform sampler2D sky_view_lut;
-layout(binding = 12) uniform sampler2D cloud_a;  // resolved cloud buffer (temporal_uniforms.glsl)
-layout(binding = 14) uniform sampler2DArray ground_shadow;  // ground_shadow_map.glsl
-layout(std430, binding = 0) buffer FrameCounters {
-  uint density_evals;
-  uint nonfinite_pixels;
-  uint cloud_pixels;
-} counters;
+layout(rgba32f, binding = IMG_FRAME_OUT) uniform writeonly image2D out_image;
+layout(binding = TEX_SKY_VIEW_LUT) uniform sampler2D sky_view_lut;
+layout(binding = TEX_CLOUD_RADIANCE) uniform sampler2D cloud_radiance;  // resolved cloud buffer (temporal_uniforms.glsl)
+layout(binding = TEX_GROUND_SHADOW_MAP) uniform sampler2DArray ground_shadow;  // ground_shadow_map.glsl
 
 
 // The cloud buffer at frame pixel px: radiance the clouds send to the camera (aerial
@@ -35,11 +31,11 @@ layout(std430, binding = 0) buffer FrameCounters {
 // background distance is to this pixel's (depth-aware upsampling: cloud over the horizon
 // does not bleed onto the ground).
 vec4 cloud_at(ivec2 px, float t_background) {
-  int r = TU.buffer_size.z;
-  if (r == 1) return texelFetch(cloud_a, px, 0);
+  int r = temporal.cloud_divisor;
+  if (r == 1) return texelFetch(cloud_radiance, px, 0);
   vec2 c = (vec2(px) + 0.5) / float(r) - 0.5;
-  ivec2 c0 = clamp(ivec2(floor(c)), ivec2(0), TU.buffer_size.xy - 1);
-  ivec2 c1 = min(c0 + 1, TU.buffer_size.xy - 1);
+  ivec2 c0 = clamp(ivec2(floor(c)), ivec2(0), temporal.cloud_buffer_size - 1);
+  ivec2 c1 = min(c0 + 1, temporal.cloud_buffer_size - 1);
   vec2 f = clamp(c - vec2(c0), 0.0, 1.0);
   ivec2 cs[4] = ivec2[4](c0, ivec2(c1.x, c0.y), ivec2(c0.x, c1.y), c1);
   float ws[4] = float[4]((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y, f.x * f.y);
@@ -47,12 +43,12 @@ vec4 cloud_at(ivec2 px, float t_background) {
   float wsum = 0.0;
   for (int i = 0; i < 4; ++i) {
     vec3 d = view_ray(cloud_pixel_ndc(vec2(cs[i])));
-    vec2 g = intersect_shell(U.planet.x, U.planet.y, U.planet.z, d.z);
+    vec2 g = intersect_shell(frame.shell_radius_m, frame.camera_altitude_m, frame.ground_altitude_m, d.z);
     float t_i = g.x >= 0.0 ? g.x : 1e30;
     float likeness = t_background >= 1e29 || t_i >= 1e29 ? (t_background == t_i ? 1.0 : 1e-3)
                                                           : 1.0 / (1.0 + 8.0 * abs(t_i - t_background) / t_background);
     float w = ws[i] * likeness + 1e-6;
-    a += w * texelFetch(cloud_a, cs[i], 0);
+    a += w * texelFetch(cloud_radiance, cs[i], 0);
     wsum += w;
   }
   return a / wsum;
@@ -61,8 +57,8 @@ vec4 cloud_at(ivec2 px, float t_background) {
 // Cloud transmittance of the cloud-buffer texel nearest to frame pixel px (clamped to the
 // frame): a cheap look at a neighbour, without cloud_at's depth-aware upsampling.
 float cloud_transmittance_nearest(ivec2 px, ivec2 size) {
-  ivec2 q = clamp(px, ivec2(0), size - 1) / TU.buffer_size.z;
-  return texelFetch(cloud_a, min(q, TU.buffer_size.xy - 1), 0).a;
+  ivec2 q = clamp(px, ivec2(0), size - 1) / temporal.cloud_divisor;
+  return texelFetch(cloud_radiance, min(q, temporal.cloud_buffer_size - 1), 0).a;
 }
 
 // Mean radiance of the sun disk over the pixel of view ray dir (W m^-2 sr^-1 nm^-1), from
@@ -74,44 +70,44 @@ float cloud_transmittance_nearest(ivec2 px, ivec2 size) {
 // than a pixel neither blinks nor jumps a pixel at a time), keeps the disk's irradiance
 // E_sun T over the image, and equals L inside a disk larger than the pixels.
 vec3 sun_disk(vec3 dir, float h) {
-  vec3 sun = U.sun_dir.xyz;
-  float omega = 2.0 * PI * (1.0 - U.sun_dir.w);
+  vec3 sun = frame.sun_direction;
+  float omega = 2.0 * PI * (1.0 - SUN_COS_ANGULAR_RADIUS);
   float side = sqrt(omega);
-  float axis = dot(dir, U.camera_forward.xyz);
-  float p = 2.0 * U.view.x / U.view.z * axis * axis;
+  float axis = dot(dir, frame.camera_forward);
+  float p = 2.0 * frame.tan_half_fov_x / frame.image_size_px.x * axis * axis;
   float c = dot(dir, sun);
   if (c < cos(0.7072 * (side + p))) return vec3(0.0);  // no overlap possible
   vec3 offset = sun - c * dir;  // tangent-plane offset of the disk centre (rad, small angles)
-  float ex = dot(offset, U.camera_right.xyz), ey = dot(offset, U.camera_up.xyz);
+  float ex = dot(offset, frame.camera_right), ey = dot(offset, frame.camera_up);
   float ox = max(0.0, min(ex + 0.5 * side, 0.5 * p) - max(ex - 0.5 * side, -0.5 * p));
   float oy = max(0.0, min(ey + 0.5 * side, 0.5 * p) - max(ey - 0.5 * side, -0.5 * p));
-  return U.sun_irradiance.rgb / omega * transmittance_to_space(h, sun.z) * (ox * oy / (p * p));
+  return SOLAR_IRRADIANCE / omega * transmittance_to_space(h, sun.z) * (ox * oy / (p * p));
 }
 
 // Radiance of the ground seen along dir, which hits it at distance t_ground (W m^-2 sr^-1
 // nm^-1): lit by the sun through the clouds' optical depth above the ground point (ground
 // shadow map, or marched per pixel) and by the sky, seen through the aerial perspective.
 vec3 ground_radiance(vec3 dir, float t_ground) {
-  float R = U.planet.x, h = U.planet.y, ground_alt = U.planet.z;
-  vec3 sun = U.sun_dir.xyz;
-  vec3 E_sun = U.sun_irradiance.rgb;
+  float R = frame.shell_radius_m, h = frame.camera_altitude_m, ground_alt = frame.ground_altitude_m;
+  vec3 sun = frame.sun_direction;
+  vec3 E_sun = SOLAR_IRRADIANCE;
   vec3 p = t_ground * dir;
   vec3 up = up_at(p, R, h);
   float mu_s = dot(up, sun);
   vec3 T_atm = transmittance_to_space(ground_alt, mu_s);
   float tau = 0.0;  // cloud optical depth above the ground point, towards the sun
-  if (SM.params.z != 0.0 && mu_s > 0.0)
-    for (int li = 0; li < U.counts.x; ++li)
-      tau += textureLod(ground_shadow, vec3(shadow_map_uv((SM.to_anchor[li] * vec4(p, 1.0)).xyz), float(li)), 0.0).r;
-  else if (SM.params.w != 0.0 && mu_s > 0.0)
-    for (int li = 0; li < U.counts.x; ++li)
-      tau += layer_shadow_optical_depth(li, p, ground_alt, sun, mu_s, int(U.quality.w));
+  if (shadow.map_valid != 0 && mu_s > 0.0)
+    for (int li = 0; li < frame.layer_count; ++li)
+      tau += textureLod(ground_shadow, vec3(shadow_map_uv((shadow.to_anchor[li] * vec4(p, 1.0)).xyz), float(li)), 0.0).r;
+  else if (shadow.march_per_pixel != 0 && mu_s > 0.0)
+    for (int li = 0; li < frame.layer_count; ++li)
+      tau += layer_shadow_optical_depth(li, p, ground_alt, sun, mu_s, frame.ground_shadow_steps);
   // sun through the clouds: the delta-Eddington beam transmittance of their vertical
   // optical depth (direct + forward-scattered + diffuse); sky light: the diffuse one
   float tau_v = tau * max(mu_s, 0.0);
   float sun_through = mu_s > 0.0 ? slab_beam_transmittance(tau_v, max(mu_s, 0.05)) : 0.0;
   vec3 E = E_sun * (T_atm * max(mu_s, 0.0) * sun_through + sky_irradiance(ground_alt, mu_s) * slab_diffuse_transmittance(tau_v));
-  vec3 L_ground = U.ground_albedo.rgb / PI * E;
+  vec3 L_ground = GROUND_ALBEDO / PI * E;
   vec3 ap_in, ap_T;
   aerial_perspective(dir, t_ground, ap_in, ap_T);
   return L_ground * ap_T + E_sun * ap_in;
@@ -119,15 +115,15 @@ vec3 ground_radiance(vec3 dir, float t_ground) {
 
 // Radiance of the sky along dir (sky-view LUT; the sun disk is added separately).
 vec3 sky_radiance(vec3 dir) {
-  vec3 sun = U.sun_dir.xyz;
-  float r = atmo_radius(U.planet.y);
+  vec3 sun = frame.sun_direction;
+  float r = atmo_radius(frame.camera_altitude_m);
   // direction relative to the sun's azimuth: x towards the sun's horizontal direction
   vec2 sun_h = sun.xy;
   float sl = length(sun_h);
   vec2 ax = sl > 1e-6 ? sun_h / sl : vec2(1.0, 0.0);
   vec3 d_rel = vec3(dot(dir.xy, ax), dot(dir.xy, vec2(-ax.y, ax.x)), dir.z);
-  return U.sun_irradiance.rgb * textureLod(sky_view_lut, sky_view_uv(d_rel, r, vec2(textureSize(sky_view_lut, 0))), 0.0).rgb +
-         vec3(U.ground_albedo.w);
+  return SOLAR_IRRADIANCE * textureLod(sky_view_lut, sky_view_uv(d_rel, r, vec2(textureSize(sky_view_lut, 0))), 0.0).rgb +
+         vec3(NIGHT_SKY_RADIANCE);
 }
 
 // Fraction of a pixel below the horizon. The elevation e over the pixel is taken as linear
@@ -172,10 +168,10 @@ struct HorizonSplit {
 // pixel's cloud transmittance.
 HorizonSplit split_at_horizon(ivec2 px, ivec2 size, vec2 ndc, vec3 dir, bool hits_ground, float t_ground, float T_own) {
   HorizonSplit hs = HorizonSplit(hits_ground ? 1.0 : 0.0, dir, t_ground, dir);
-  float R = U.planet.x, h = U.planet.y, ground_alt = U.planet.z;
+  float R = frame.shell_radius_m, h = frame.camera_altitude_m, ground_alt = frame.ground_altitude_m;
   float e_c = asin(clamp(dir.z, -1.0, 1.0));
   float e_h = -2.0 * asin(sqrt(max(h - ground_alt, 0.0) / (2.0 * (R + h))));
-  if (abs(e_c - e_h) >= 1.5 * U.view.x / U.view.z || abs(dir.z) >= 0.999) return hs;
+  if (abs(e_c - e_h) >= 1.5 * frame.tan_half_fov_x / frame.image_size_px.x || abs(dir.z) >= 0.999) return hs;
   vec2 half_px = vec2(1.0, -1.0) / vec2(size);
   // elevation change across the pixel, per +1 column and per +1 row
   float ex = ray_elevation(ndc + vec2(half_px.x, 0.0)) - ray_elevation(ndc - vec2(half_px.x, 0.0));
@@ -213,7 +209,7 @@ void main() {
   vec2 ndc = ((vec2(px) + 0.5) / vec2(size)) * 2.0 - 1.0;
   ndc.y = -ndc.y;  // row 0 is the top of the image
   vec3 dir = view_ray(ndc);
-  float R = U.planet.x, h = U.planet.y, ground_alt = U.planet.z;
+  float R = frame.shell_radius_m, h = frame.camera_altitude_m, ground_alt = frame.ground_altitude_m;
   float mu = dir.z;
 
   vec2 g = intersect_shell(R, h, ground_alt, mu);
@@ -245,6 +241,6 @@ void main() {
     opacity = 0.0;
   }
   if (opacity > 0.01) atomicAdd(counters.cloud_pixels, 1u);
-  if (U.counts.z != 0 && g_density_evals > 0u) atomicAdd(counters.density_evals, g_density_evals);
+  if (frame.count_density_evaluations != 0 && g_density_evals > 0u) atomicAdd(counters.density_evals, g_density_evals);
   imageStore(out_image, px, vec4(radiance, opacity));
 }

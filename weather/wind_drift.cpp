@@ -1,4 +1,4 @@
-#include "renderer/wind_drift.h"
+#include "weather/wind_drift.h"
 
 #include <cmath>
 

@@ -1,24 +1,8 @@
-// Plain data exchanged with the renderer: what to draw, how carefully, and the result.
+// How carefully to draw: the march settings a quality preset (renderer/quality_presets.h)
+// fills in. Plain data shared by the GPU renderer and the CPU reference (no GL).
 #pragma once
 
-#include <cstdint>
-#include <vector>
-
-#include "geodesy/geodetic.h"
-
 namespace cloudsvc {
-
-// One view: where the camera is, where it looks, when, and the image size.
-struct ViewRequest {
-  geo::Geodetic position;      // WGS84, altitude above the ellipsoid (m)
-  geo::Attitude attitude;      // heading/pitch/roll, degrees
-  double unix_time_s = 0.0;    // UTC, seconds since 1970-01-01
-  double fov_deg = 60.0;       // horizontal field of view
-  int width = 640;
-  int height = 360;
-  std::uint32_t frame_index = 0;  // varies the per-pixel jitter and the temporally marched pixels
-  bool reset_history = false;     // a teleport or sim reset: reuse nothing from earlier frames
-};
 
 // Quality knobs of the ray march. The march code is the same for every preset; presets
 // only change these numbers.
@@ -30,9 +14,9 @@ struct RenderQuality {
   // more octaves add energy the diffuse term already carries (docs/ACCURACY.md, Monte Carlo).
   int ms_octaves = 1;
   int ground_shadow_steps = 8;  // steps per layer of the ground-to-sun shadow march
-  double ms_a = 0.4;            // extinction scale per octave (a <= b for energy conservation)
-  double ms_b = 0.5;            // energy scale per octave
-  double ms_c = 0.6;            // phase eccentricity scale per octave
+  double ms_extinction_scale = 0.4;   // a: extinction scale per octave (a <= b for energy conservation)
+  double ms_energy_scale = 0.5;       // b: energy scale per octave
+  double ms_eccentricity_scale = 0.6; // c: phase eccentricity scale per octave
   // Primary steps are uniform in ln(1 + t / t_ref): step length grows with distance t
   // like the pixel footprint. 0 = uniform steps in t (the naive march).
   double step_growth_ref_m = 1000.0;
@@ -82,35 +66,6 @@ struct RenderQuality {
   double history_blend_min = 0.2;  // least weight of a fresh sample against its history
   bool neighbourhood_clamp = true;  // limit moved history to the range of fresh neighbours
   bool count_density_evaluations = true;
-};
-
-struct FrameStats {
-  double render_ms = 0.0;             // GPU passes + readback, wall clock
-  double sun_elevation_deg = 0.0;     // geometric elevation at the camera
-  double sun_azimuth_deg = 0.0;
-  std::int64_t cloud_pixels = 0;      // pixels with cloud opacity > 0.01
-  double density_evals_per_pixel = 0.0;
-  std::int64_t nonfinite_pixels = 0;  // pixels the shader had to clamp (must be 0)
-  bool view_luts_recomputed = true;   // sky-view LUT or aerial-perspective volume redone this frame
-  bool sky_view_recomputed = true;    // the sky-view LUT redone this frame (altitude or sun changed)
-  int layers_without_cloud_in_view = 0;  // layers not marched: no cloud within reach (renderer/coverage_cull.h)
-  bool history_used = false;          // the previous frame's cloud buffer was reprojected
-  bool shadow_map_rebuilt = false;    // the ground shadow map was rebuilt this frame
-  double marched_fraction = 1.0;      // cloud pixels marched this frame / all cloud pixels
-  std::int64_t gpu_memory_bytes = 0;  // textures and buffers the renderer holds
-  // GPU time per pass (GL_TIME_ELAPSED) and the CPU time of the read-back, ms.
-  double luts_ms = 0.0, march_ms = 0.0, resolve_ms = 0.0, composite_ms = 0.0, readback_ms = 0.0, shadow_map_ms = 0.0;
-};
-
-// A rendered frame: linear spectral radiance at 680/550/440 nm in W m^-2 sr^-1 nm^-1
-// (rgb) and cloud opacity (a), rows from the top of the image.
-struct FrameImage {
-  int width = 0;
-  int height = 0;
-  std::vector<float> rgba;
-  FrameStats stats;
-
-  const float* pixel(int x, int y) const { return &rgba[(static_cast<size_t>(y) * width + x) * 4]; }
 };
 
 }  // namespace cloudsvc

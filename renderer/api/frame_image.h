@@ -1,0 +1,40 @@
+// A rendered frame and its statistics. Plain data shared by the GPU renderer, the CPU
+// reference and the service's outputs (no GL).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace cloudsvc {
+
+struct FrameStats {
+  double render_ms = 0.0;             // GPU passes + readback, wall clock
+  double sun_elevation_deg = 0.0;     // geometric elevation at the camera
+  double sun_azimuth_deg = 0.0;
+  std::int64_t cloud_pixels = 0;      // pixels with cloud opacity > 0.01
+  double density_evals_per_pixel = 0.0;
+  std::int64_t nonfinite_pixels = 0;  // pixels the shader had to clamp (must be 0)
+  bool view_luts_recomputed = true;   // sky-view LUT or aerial-perspective volume redone this frame
+  bool sky_view_recomputed = true;    // the sky-view LUT redone this frame (altitude or sun changed)
+  int layers_without_cloud_in_view = 0;  // layers not marched: no cloud within reach (renderer/coverage_cull.h)
+  bool history_used = false;          // the previous frame's cloud buffer was reprojected
+  bool shadow_map_rebuilt = false;    // the ground shadow map was rebuilt this frame
+  double marched_fraction = 1.0;      // cloud pixels marched this frame / all cloud pixels
+  std::int64_t gpu_memory_bytes = 0;  // textures and buffers the renderer holds
+  // GPU time per pass (GL_TIME_ELAPSED) and the CPU time of the read-back, ms.
+  double luts_ms = 0.0, march_ms = 0.0, resolve_ms = 0.0, composite_ms = 0.0, readback_ms = 0.0, shadow_map_ms = 0.0;
+};
+
+// A rendered frame: linear spectral radiance at 680/550/440 nm in W m^-2 sr^-1 nm^-1
+// (rgb) and cloud opacity (a), rows from the top of the image.
+struct FrameImage {
+  int width = 0;
+  int height = 0;
+  std::vector<float> rgba;
+  FrameStats stats;
+
+  const float* pixel(int x, int y) const { return &rgba[(static_cast<size_t>(y) * width + x) * 4]; }
+};
+
+}  // namespace cloudsvc

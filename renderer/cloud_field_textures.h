@@ -1,0 +1,54 @@
+// The cloud field on the GPU: the base-shape and detail noise volumes, the two weather-map
+// keyframes around the frame time (weather/weather_timeline.h) and their coverage
+// max-pyramid (renderer/coverage_pyramid.h), with what the frame uniforms say about them
+// (GpuResourceSummary). Every pass that evaluates the cloud density binds them with bind().
+// Needs a current GL 4.5 context.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "renderer/frame_uniforms_packing.h"
+#include "renderer/gl/gl_objects.h"
+#include "weather/weather_timeline.h"
+
+namespace cloudsvc {
+
+struct RendererConfig {
+  int base_noise_size = 128;   // Perlin-Worley base shape volume edge
+  int detail_noise_size = 32;  // Worley detail volume edge
+  std::uint32_t noise_seed = 1;
+  int weather_map_width = 1024;  // global map, 0.35 deg per texel
+  int weather_map_height = 512;
+};
+
+class CloudFieldTextures {
+ public:
+  explicit CloudFieldTextures(const RendererConfig& config);
+
+  // Uploads the keyframes of blend that changed, their coverage pyramid, and the blended
+  // pole values. Returns true when the cloud field the GPU sees changed (a new keyframe,
+  // or the blend weight moved by 2 % since the last change).
+  bool update(const weather::WeatherTimeline::Blend& blend);
+
+  // Binds the noise volumes and keyframes at their texture units and the coverage pyramid
+  // at its storage-buffer binding (gpu::tex, gpu::ssbo).
+  void bind() const;
+
+  const GpuResourceSummary& summary() const { return summary_; }
+  std::size_t gpu_bytes() const;  // noise volumes, keyframes, pyramid
+
+ private:
+  void upload_coverage_pyramid(const weather::WeatherMap& from, const weather::WeatherMap* to);
+
+  RendererConfig config_;
+  GpuResourceSummary summary_{};
+  gl::Texture base_noise_, detail_noise_, weather_maps_[2];
+  std::uint64_t uploaded_version_[2] = {0, 0};  // keyframe versions in weather_maps_[0], [1]
+  float uploaded_blend_ = -1.0f;                // blend weight at the last counted change
+  gl::Buffer coverage_pyramid_;
+  std::size_t coverage_pyramid_bytes_ = 0;
+  std::size_t noise_bytes_ = 0;
+};
+
+}  // namespace cloudsvc

@@ -1,0 +1,25 @@
+// What every pass that evaluates the cloud density and its lighting reads: the frame
+// buffers (uniforms, counters), the cloud field (noise, weather keyframes, coverage
+// pyramid) and the atmosphere lookups. A pass calls bind() before its dispatch, so no pass
+// depends on what an earlier one left bound.
+#pragma once
+
+#include "renderer/atmosphere_luts.h"
+#include "renderer/cloud_field_textures.h"
+#include "renderer/frame_buffers.h"
+
+namespace cloudsvc {
+
+struct CloudPassInputs {
+  const FrameBuffers& frame;
+  const CloudFieldTextures& field;
+  const AtmosphereLuts& atmosphere;
+
+  void bind() const {
+    frame.bind();
+    field.bind();
+    atmosphere.bind_lookups();
+  }
+};
+
+}  // namespace cloudsvc

@@ -1,0 +1,35 @@
+// Packs a frame's state (renderer/frame_context.h, double precision) into the GPU's frame
+// uniforms (renderer/frame_uniforms.h): the last, write-only step of a frame's CPU work.
+// Also the facts about the GPU resources the uniforms describe. No GL here.
+#pragma once
+
+#include <array>
+
+#include "renderer/api/render_quality.h"
+#include "renderer/frame_context.h"
+#include "renderer/frame_uniforms.h"
+#include "weather/noise_volumes.h"
+
+namespace cloudsvc {
+
+// Values of a noise volume below which a fraction i / 15 of its texels lie (i = 0..15).
+// The shader turns a layer's coverage c into the base-noise threshold Q(1 - c), so that
+// coverage is the fraction of horizontal area covered by cloud at mid-profile.
+using NoiseQuantiles = std::array<float, 16>;
+NoiseQuantiles noise_quantiles(const weather::NoiseVolume& v);
+
+// What the frame uniforms say about the GPU resources bound with them.
+struct GpuResourceSummary {
+  NoiseQuantiles base_quantiles{};      // of the base shape noise
+  float detail_mean = 0.5f;             // mean value of the detail noise volume
+  std::array<float, 4> weather_pole_south{0.5f, 0.5f, 0.5f, 0.0f};
+  std::array<float, 4> weather_pole_north{0.5f, 0.5f, 0.5f, 0.0f};
+  int weather_map_height = 1;
+  float weather_blend = 0.0f;     // weight of the second weather keyframe (weather_timeline.h)
+  bool coverage_pyramid = false;  // the coverage max-pyramid is bound (renderer/coverage_pyramid.h)
+};
+
+FrameUniforms pack_frame_uniforms(const FrameContext& frame, const RenderQuality& quality,
+                                  const GpuResourceSummary& resources);
+
+}  // namespace cloudsvc

@@ -1,0 +1,28 @@
+// Constants of the light model that the GPU renderer and the CPU reference share: defined
+// here once; the shaders receive them through the preamble renderer/gpu_interface.cpp
+// injects into every program (GLSL names in brackets). rgb = 680 / 550 / 440 nm.
+#pragma once
+
+namespace cloudsvc::model {
+
+// Solar spectral irradiance at the top of the atmosphere (W m^-2 nm^-1): the
+// extraterrestrial spectrum of Bruneton's precomputed-scattering demo (ASTM E-490).
+// [SOLAR_IRRADIANCE]
+inline constexpr double kSolarIrradiance[3] = {1.474, 1.8504, 1.91198};
+// Angular radius of the sun's disk (degrees). [SUN_COS_ANGULAR_RADIUS holds its cosine]
+inline constexpr double kSunAngularRadiusDeg = 0.2667;
+// Lambertian albedo of the ground: a mix of vegetation and soil (land averages of ~0.15 in
+// the red falling to ~0.08 in the blue). Seen by the ground's radiance, the light it sends
+// up into the clouds and the atmosphere's multiple-scattering LUT. [GROUND_ALBEDO]
+inline constexpr double kGroundAlbedo[3] = {0.14, 0.12, 0.08};
+// Radiance of the night sky (airglow + starlight), W m^-2 sr^-1 nm^-1. [NIGHT_SKY_RADIANCE]
+inline constexpr double kNightSkyRadiance = 2.0e-9;
+// Longest light march (m): the sun's optical depth from a cloud sample is accumulated to
+// the layer top (or base) but over at most this distance; a long grazing path through a
+// sheet stops there. Part of the model's definition. [LIGHT_MARCH_REACH_M]
+inline constexpr double kLightMarchReach_m = 4000.0;
+// Droplet phase-function mean cosine g used by the two-stream diffuse terms (delta-Eddington,
+// Joseph, Wiscombe & Weinman 1976). [TWO_STREAM_MEAN_COSINE]
+inline constexpr double kTwoStreamMeanCosine = 0.86;
+
+}  // namespace cloudsvc::model

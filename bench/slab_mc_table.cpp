@@ -5,11 +5,11 @@
 // (camera below, looking up) at view zenith 0° and 60° in the solar plane:
 //   MC ± standard error (renderer/model/slab_monte_carlo.h, exact transport),
 //   the renderer model with converged steps and at the shader's default 64 steps
-//   (renderer/model/slab_renderer_model.h, a transcription of shaders/scene.comp),
+//   (renderer/model/slab_renderer_model.h, a transcription of shaders/cloud_march.comp),
 //   relative errors (model - MC) / MC.
 // Radiances are L / E_sun in sr^-1 (E_sun normal to the beam); droplet diameter 14 um.
 //
-//   build-mc/bin/slab_mc_table [--scale 1] [--threads 2] [--seed 1]
+//   build/bin/slab_mc_table [--scale 1] [--threads 2] [--seed 1]
 #include <CLI/CLI.hpp>
 
 #include <algorithm>

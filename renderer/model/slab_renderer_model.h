@@ -1,7 +1,7 @@
-// A double-precision transcription of what the GPU cloud march (shaders/scene.comp)
-// computes for a homogeneous plane-parallel slab: the "model of the model" that the
+// A double-precision transcription of what the GPU cloud march (shaders/cloud_march.comp,
+// its light in shaders/cloud_lighting.glsl) computes for a homogeneous plane-parallel slab: the "model of the model" that the
 // Monte Carlo slab (slab_monte_carlo.h) is compared against. It is deliberately literal:
-// every step cites the shader line it mirrors, and nothing here is tuned.
+// every step names the shader function or variable it mirrors, and nothing here is tuned.
 //
 // Scene: flat slab base z = 0, top z = H (the shader's shells, with the planet radius
 // taken to infinity), sigma = sigma_t everywhere inside (coverage 1, density scale 1,
@@ -9,7 +9,7 @@
 // atmosphere transmittance T_atm = 1, sky irradiance E_sky = 0, ground albedo 0 (sun
 // only), no aerial perspective. A camera above the slab looking down sees the reflected
 // radiance; below looking up, the transmitted radiance. The result is the cloud term C
-// of scene.comp:209 (the background T · L_bg is excluded: it holds the direct sun, which
+// of cloud_march.comp, C += T * absorbed * (L_sun + L_diffuse) (the background T · L_bg is excluded: it holds the direct sun, which
 // the Monte Carlo radiances exclude as well). Units: L / E_sun in sr^-1.
 #pragma once
 
@@ -20,18 +20,20 @@ namespace cloudsvc::model {
 
 struct SlabRendererModelOptions {
   // RenderQuality defaults (renderer/render_types.h), as the shader receives them in
-  // U.quality and U.ms_params (renderer/scene_setup.cpp:86-89).
+  // U.quality and U.ms_params (make_frame_uniforms, renderer/scene_setup.cpp).
   int primary_steps = RenderQuality{}.primary_steps;  // U.quality.x
   int light_steps = RenderQuality{}.light_steps;      // U.quality.y
   int ms_octaves = RenderQuality{}.ms_octaves;        // U.quality.z
   double ms_a = RenderQuality{}.ms_a;                 // U.ms_params.x, extinction per octave
   double ms_b = RenderQuality{}.ms_b;                 // U.ms_params.y, energy per octave
   double ms_c = RenderQuality{}.ms_c;                 // U.ms_params.z, eccentricity per octave
-  double min_step_m = 1.0;                            // scene.comp:179, max(total_len / N, 1 m)
-  bool cap_light_march = true;                        // scene.comp:66, len <= LIGHT_MAX_DIST
-  double light_max_dist_m = 4000.0;                   // scene.comp:27
-  bool diffuse = true;                                // scene.comp:207, diffuse_inscatter
-  double mean_cosine = 0.86;                          // scene.comp:28, MEAN_COSINE
+  // Primary steps are uniform in t here, at least min_step_m long; cloud_march.comp steps
+  // uniformly in march_coordinate (ln(1 + t / t_ref)) without such a floor.
+  double min_step_m = 1.0;
+  bool cap_light_march = true;                        // light_optical_depth: len = min(len, LIGHT_MAX_DIST)
+  double light_max_dist_m = 4000.0;                   // LIGHT_MAX_DIST, cloud_lighting.glsl
+  bool diffuse = true;                                // cloud_march.comp: L_diffuse = diffuse_inscatter(...)
+  double mean_cosine = 0.86;                          // MEAN_COSINE, cloud_lighting.glsl
   // The diffuse field's in-scatter in the P1 (diffusion) approximation,
   // (Phi + 3 g F_net . w) / (4 pi) (cloud_lighting.glsl); false: isotropic hemispheres (the
   // model before the Monte Carlo comparison).
@@ -43,12 +45,13 @@ struct SlabRendererModelOptions {
   // Delta-scaling (Joseph, Wiscombe, Weinman 1976): a fraction f of the
   // scattering (the forward peak) is counted as unscattered, so the beam that feeds the
   // diffuse field decays with (1 - f) tau; 0 = off.
-  double delta_f = 0.86 * 0.86;  // scene: DELTA_F = MEAN_COSINE^2
+  double delta_f = 0.86 * 0.86;  // cloud_lighting.glsl: DELTA_F = MEAN_COSINE^2
   // Experiment: the sun term's light-march optical depth scaled by this (1 = exact single
   // scattering, the shader; 1 - f = the delta-scaled beam).
   double sun_tau_scale = 1.0;
-  double cloud_t_eps = 1e-3;                          // scene.comp:26, early exit
-  // The shader jitters the sample within each step per pixel (scene.comp:178,187). The
+  double cloud_t_eps = 1e-3;                          // CLOUD_T_EPS, cloud_march.comp: early exit
+  // The shader jitters the sample within each step per pixel (cloud_march.comp: jitter from
+  // hash12, t = march_distance(u0 + (st + jitter) du)). The
   // model averages over jitter_samples stratified jitters (j + 0.5) / n, i.e. the
   // expected pixel value; 1 = the step midpoint.
   int jitter_samples = 1;
@@ -71,8 +74,8 @@ SlabRendererModelResult slab_renderer_model_radiance(const SlabSpec& slab, const
                                                      const SlabRendererModelOptions& options = {});
 
 // Sun part pieces, exposed for tests: the light-march optical depth from height z (m) to
-// the slab top towards a sun with cosine mu_s (scene.comp:60-78), and the diffuse
-// in-scatter per unit scattering (scene.comp:110-125) in sr^-1.
+// the slab top towards a sun with cosine mu_s (light_optical_depth, cloud_lighting.glsl),
+// and the diffuse in-scatter per unit scattering (diffuse_inscatter, same file) in sr^-1.
 double slab_light_optical_depth(const SlabSpec& slab, double z, const SlabRendererModelOptions& options);
 // view_up_z: z component of the direction the in-scattered light travels (towards the
 // camera); only the P1 variant depends on it.

@@ -1,5 +1,5 @@
 // The cloud density field of the model (docs/RENDERING.md "Cloud density"; Schneider 2015
-// / Nubis, seeds 002-004), evaluated in double precision from the shared inputs with
+// / Nubis, as in Ford 2024 §3.1 and §4.2), evaluated in double precision from the shared inputs with
 // emulated GL sampling (texture_sampling.h). For a local point p at altitude a inside
 // layer L (base b, top t), f = (a - b) / (t - b):
 //   1. weather map w at the latitude/longitude of p's direction from the shell centre

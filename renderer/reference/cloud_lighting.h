@@ -14,10 +14,10 @@ namespace cloudsvc::reference {
 
 // The model's cap on the light march (m): the sun's optical depth is accumulated from the
 // sample to the layer top (or base, when the sun is below the horizontal) but over at most
-// 4 km (shaders/scene.comp LIGHT_MAX_DIST). It is part of the model definition: a long
+// 4 km (LIGHT_MAX_DIST, shaders/cloud_lighting.glsl). It is part of the model definition: a long
 // grazing path through a sheet stops there.
 constexpr double kLightMarchCap_m = 4000.0;
-// Droplet phase mean cosine used by the two-stream terms (scene.comp MEAN_COSINE).
+// Droplet phase mean cosine used by the two-stream terms (MEAN_COSINE, cloud_lighting.glsl).
 constexpr double kTwoStreamMeanCosine = 0.86;
 
 // Step scale of a layer: cloud_step_m and light_step_m are for cumulus (8 km noise period,

@@ -1,6 +1,6 @@
 // The clear-sky atmosphere of the model (docs/RENDERING.md "Atmosphere"; Hillaire 2020,
-// "A Scalable and Production Ready Sky and Atmosphere Rendering Technique", EGSR; constants
-// of DESIGN.md §4), evaluated by direct numerical integration in double precision, no LUTs.
+// "A Scalable and Production Ready Sky and Atmosphere Rendering Technique", EGSR; its Earth
+// constants, docs/SOURCES.md), evaluated by direct numerical integration in double precision, no LUTs.
 //
 // Geometry: the atmosphere is spherically symmetric with its own radii (ground 6360 km,
 // top 6460 km), independent of the cloud-shell radius: a point is given by its radius r

@@ -40,7 +40,7 @@ class CloudField {
   // honour_stratiform: when true (the model's definition, as in the shader), stratiform
   // layers ignore the weather map's cloud-type channel G (f_v = 1), as
   // weather/cloud_layer.h and docs/WEATHER.md describe them; false applies f_v to every
-  // layer (an older shader did; kept for comparisons).
+  // layer, for comparisons (docs/REFERENCE.md, "GPU vs reference").
   CloudField(const ReferenceScene& scene, const ReferenceInputs& inputs, bool honour_stratiform = true);
 
   // Extinction of layer li at local point p with altitude alt (above the shell sphere).

@@ -9,7 +9,7 @@
 //   relative errors (model - MC) / MC.
 // Radiances are L / E_sun in sr^-1 (E_sun normal to the beam); droplet diameter 14 um.
 //
-//   build-mc/bin/slab_mc_table [--scale 1] [--threads 2] [--seed 1]
+//   build/bin/slab_mc_table [--scale 1] [--threads 2] [--seed 1]
 #include <CLI/CLI.hpp>
 
 #include <algorithm>

@@ -1,6 +1,6 @@
-// Ray / spherical-shell intersection in a cancellation-free form (DESIGN.md §2;
-// Haines et al., "Precision Improvements for Ray/Sphere Intersection", Ray Tracing
-// Gems ch. 7). The ray starts at altitude h above a sphere of radius R (the ground),
+// Ray / spherical-shell intersection in a cancellation-free form (Haines et al. 2019,
+// "Precision Improvements for Ray/Sphere Intersection", Ray Tracing Gems ch. 7; the
+// float error figures are in docs/SOURCES.md and docs/STABILITY.md). The ray starts at altitude h above a sphere of radius R (the ground),
 // with mu = cos(angle between the ray and the local up at the start); the shell is the
 // sphere of radius R + H. Only the altitudes and mu are needed, never Earth-centred
 // coordinates, so float evaluation stays accurate to millimetres (see tests).

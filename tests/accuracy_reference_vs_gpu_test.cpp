@@ -1,4 +1,4 @@
-// Accuracy of the GPU renderer against the CPU reference (issue "Accuracy", DESIGN.md §7):
+// Accuracy of the GPU renderer against the CPU reference (docs/ACCURACY.md §2):
 // the same views of the same weather rendered by CloudRenderer (headless EGL on llvmpipe)
 // and by reference::render_reference (converged, double), 64x36. A pixel is its footprint:
 // the reference pixel is the mean of 3 x 3 stratified rays (ReferenceSettings::pixel_samples),

@@ -1,4 +1,4 @@
-// The accuracy scene set (issue "Accuracy", DESIGN.md §7), shared by
+// The accuracy scene set (docs/ACCURACY.md), shared by
 // tests/accuracy_reference_vs_gpu_test.cpp and bench/cloudbench.cpp so that every accuracy number in docs/ACCURACY.md is measured on the
 // same views. No gtest here (the benchmark includes it too).
 //

@@ -27,8 +27,8 @@ void expect_vec_near(const glm::dvec3& a, const glm::dvec3& b, double tol, const
 
 // --- geodetic <-> ECEF ----------------------------------------------------------------
 
-// GeographicLib's documented check value (REFERENCE-VALUES.md; GeographicLib
-// Geocentric documentation / CartConvert example).
+// GeographicLib's documented check value (GeographicLib Geocentric documentation /
+// CartConvert example; docs/SOURCES.md, "Geodesy and sun").
 TEST(Geodetic, GeographicLibCheckValue) {
   const glm::dvec3 p = geodetic_to_ecef({47.4, 8.5, 10000.0});
   EXPECT_NEAR(p.x, 4284246.2561, 1e-3);

@@ -1,7 +1,8 @@
 // Ray / spherical-shell intersection (geodesy/shell_intersection.h) against an
 // independent long-double evaluation in explicit 3D coordinates, in double and in
 // float, plus the naive float quadratic on Earth-centred coordinates as a contrast
-// (REFERENCE-VALUES.md: 26.4 m and 7.6 m off where the altitude form is ~1 mm off).
+// (docs/SOURCES.md, "Ray / shell intersection in float": 26.4 m and 7.6 m off where the
+// altitude form is ~1 mm off).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -195,7 +196,7 @@ TEST(ShellIntersection, TangentRay) {
 struct FloatCase {
   const char* name;
   double h, H, mu;
-  double ref_error_m;  // REFERENCE-VALUES.md value for the altitude form
+  double ref_error_m;  // docs/SOURCES.md value for the altitude form
   double naive_error_m;  // and for the naive form
 };
 

@@ -2,7 +2,7 @@
 // renderer's ray / shell intersection and altitude_of at grazing angles (issue "Accuracy"
 // part 4; docs/STABILITY.md). Inputs are rounded to float once and the double reference
 // uses those same float values, so the errors are those of the shader's arithmetic.
-// Bounds (shared/notes/REFERENCE-VALUES.md): camera 2 km looking 0.9 deg down at a 1.5 km
+// Bounds (docs/SOURCES.md, "Ray / shell intersection in float"): camera 2 km looking 0.9 deg down at a 1.5 km
 // shell, and camera 2 m with a horizontal ray to a 1.5 km shell: < 0.01 m; in general
 // < 0.01 m + 3e-7 t. Within 0.1 deg of the tangent the problem itself is ill-conditioned
 // (dt/dmu -> infinity): there the bound adds the error that rounding b'^2 and c to float
@@ -151,7 +151,7 @@ TEST(GpuShellPrecision, FloatShaderMatchesDoubleWithinBounds) {
                 s.max_ratio, s.max_tangent_err, s.ambiguous, s.max_alt_err);
 }
 
-// The two reference cases of REFERENCE-VALUES.md, asserted on their own.
+// The two reference cases of docs/SOURCES.md, asserted on their own.
 TEST(GpuShellPrecision, ReferenceCasesWithinOneCentimetre) {
   const double R = 6360000.0;
   const float mu_down = static_cast<float>(std::sin(-0.9 * kDeg));

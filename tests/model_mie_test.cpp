@@ -1,5 +1,5 @@
 // Lorenz-Mie code (renderer/model/mie.h) against published values (Wiscombe 1980 MIEV0
-// test cases, Bohren & Huffman 1983 App. A; shared/notes/REFERENCE-VALUES.md) and
+// test cases, Bohren & Huffman 1983 App. A; values in docs/SOURCES.md) and
 // against identities of the theory; then the Jendersie & d'Eon phase fit
 // (phase_function.h) against size-averaged Mie for water droplets.
 #include <gtest/gtest.h>
@@ -138,7 +138,7 @@ TEST(Mie, BohrenHuffmanExample) {
   EXPECT_NEAR(e.q_ext, e.q_sca, 1e-12);
 }
 
-// Normalised phase function at x = 100, m = 1.33 - 1e-5 i (REFERENCE-VALUES).
+// Normalised phase function at x = 100, m = 1.33 - 1e-5 i (Wiscombe 1980; docs/SOURCES.md).
 TEST(Mie, PhaseValuesAtX100) {
   const std::array<double, 7> deg = {0, 30, 60, 90, 120, 150, 180};
   const std::array<double, 7> ref = {419.22,    8.7416e-2, 1.2352e-2, 1.1770e-3,
@@ -252,7 +252,7 @@ TEST(MieAverage, NormalisedAndConsistent) {
 //   d=10  0.764 1.008 0.995 1.017 1.018 0.585 1.537 1.726 1.661 0.616 0.434 0.457 0.238
 //   d=20  1.083 1.045 1.042 1.012 0.961 0.579 1.359 1.341 1.913 0.473 0.294 0.558 0.207
 //   g_Mie 0.8517 (d=10), 0.8657 (d=20); g_fit 0.8642, 0.8793.
-// Against REFERENCE-VALUES' bands:
+// Against the bands of docs/SOURCES.md ("Jendersie & d'Eon 2023 phase function"):
 //  * 5-45 deg "0.97-1.02": not at 5 deg (diffraction ring at 0.55 um, see the next test)
 //    and not for d = 20 at 10-20 deg, where the fit is 4-5 % high (max 1.050 at 13-14
 //    deg; the same for lognormal and for spreads 10-30 %). Asserted: 0.95-1.05 at

@@ -1,5 +1,5 @@
 // Jendersie & d'Eon 2023 HG + Draine cloud phase function and droplet extinction,
-// against REFERENCE-VALUES.md and by numerical integration over the sphere.
+// against the values of docs/SOURCES.md and by numerical integration over the sphere.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -67,8 +67,8 @@ TEST(SphereIntegrator, KnownIntegrals) {
 }
 
 // ---------------------------------------------------------------------------------
-// Parameters: REFERENCE-VALUES.md table (computed from the published fits with the
-// minus signs of seed 004 and w_D's constant 0.665888).
+// Parameters: docs/SOURCES.md table (computed from the published fits with the
+// minus signs of Ford 2024 eqs. 3.14-3.17 and w_D's constant 0.665888).
 
 struct ParamRow {
   double d, g_hg, g_d, alpha, w_d;
@@ -107,7 +107,7 @@ TEST(JdDPhase, DiameterIsClampedToTheFitRange) {
               std::isfinite(nan.w_d));
 }
 
-// Phase values (sr^-1) from REFERENCE-VALUES.md at 0, 90 and 180 degrees.
+// Phase values (sr^-1) from docs/SOURCES.md at 0, 90 and 180 degrees.
 TEST(JdDPhase, ValuesAtKeyAngles) {
   struct Row {
     double d, p0, p90, p180;
@@ -140,7 +140,7 @@ TEST(JdDPhase, NormalisedOverTheSphere) {
   std::printf("worst |int p dOmega - 1| over d = 5..50: %.3g\n", worst);
 }
 
-// Mean cosine: REFERENCE-VALUES.md (4 decimals), the closed form, and the integral.
+// Mean cosine: docs/SOURCES.md (4 decimals), the closed form, and the integral.
 TEST(JdDPhase, MeanCosine) {
   const double table[][2] = {{5.0, 0.8434}, {10.0, 0.8642}, {20.0, 0.8793}, {50.0, 0.8912}};
   for (const auto& row : table) {
@@ -184,14 +184,16 @@ TEST(JdDPhase, PositiveAndFinite) {
 // Droplet optics: sigma_t = N0 Q_ext pi r^2.
 
 TEST(DropletOptics, ExtinctionFromMicrophysics) {
-  // Seed 001: N0 = 300 cm^-3, d = 14 um (r_e = 7 um), Q_ext = 2.
+  // Bouthors et al. 2008 §3.2: N0 = 300 cm^-3, d = 14 um (r_e = 7 um); Q_ext = 2.
   const double expected = 3e8 * 2.0 * kPi * 7e-6 * 7e-6;  // = 0.0923628 m^-1
   EXPECT_NEAR(cloud_extinction_per_m(14.0), expected, 1e-15);
   EXPECT_NEAR(cloud_extinction_per_m(14.0), 0.0924, 1e-4);
-  // Mean free path 1/sigma ~ 10.8 m: inside DESIGN.md's 10-20 m.
+  // Mean free path 1/sigma ~ 10.8 m: between 10 and 20 m (Bouthors et al. 2008 §3.1:
+  // several metres).
   EXPECT_GT(1.0 / cloud_extinction_per_m(14.0), 10.0);
   EXPECT_LT(1.0 / cloud_extinction_per_m(14.0), 20.0);
-  // Scaling: d^2, N0 and Q_ext; Q_ext = 1 doubles the path (~21.7 m, seed 001's "~20 m").
+  // Scaling: d^2, N0 and Q_ext; Q_ext = 1 doubles the path (~21.7 m, Bouthors et al. 2008
+  // §3.1: "20 m").
   EXPECT_NEAR(cloud_extinction_per_m(28.0) / cloud_extinction_per_m(14.0), 4.0, 1e-12);
   EXPECT_NEAR(cloud_extinction_per_m(14.0, 1.5e8) / cloud_extinction_per_m(14.0), 0.5, 1e-12);
   EXPECT_NEAR(1.0 / cloud_extinction_per_m(14.0, 3e8, 1.0), 21.65, 0.01);

@@ -24,7 +24,7 @@ using namespace cloudsvc::model;
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kDeg = kPi / 180.0;
-constexpr double kDropletUm = 14.0;  // r_e = 7 um (seed 001)
+constexpr double kDropletUm = 14.0;  // r_e = 7 um (Bouthors et al. 2008 §3.2)
 
 // |a - b| within k combined standard errors plus an absolute slack.
 void expect_within_se(double a, double se_a, double b, double se_b, double k, double slack, const char* what) {
@@ -331,8 +331,8 @@ TEST(SlabMc, DiffuseTransmittanceFollowsTwoStreamTrend) {
   }
 }
 
-// Seed 001 (REFERENCE-VALUES.md, "Slab multiple scattering"): a fit to the total
-// transmittance of N0 = 300 cm^-3, r_e = 7 um clouds of thickness H. The paper's
+// Bouthors et al. 2008, Appendices A and B (docs/SOURCES.md, "Slab multiple scattering"):
+// a fit to the total transmittance of N0 = 300 cm^-3, r_e = 7 um clouds of thickness H. The paper's
 // extinction uses Q_ext = 1 ("sigma = pi r_e^2", mean free path ~20 m), i.e. half the
 // optical depth of the renderer's Q_ext = 2.
 //  - In the paper's convention (Q_ext = 1) the MC reproduces the fit closely (within
@@ -371,7 +371,7 @@ TEST(SlabMc, Seed001TransmittanceBand) {
 }
 
 // ---------------------------------------------------------------------------------
-// Renderer model (a transcription of cloud_march.comp)
+// Renderer model (a transcription of the cloud march: cloud_march.comp, cloud_lighting.glsl)
 
 // With one octave (pure single scattering with the true phase), no diffuse term, no
 // light-march cap and converged steps, the shader's march integrates the single-
@@ -400,8 +400,9 @@ TEST(SlabRendererModel, OneOctaveWithoutDiffuseIsSingleScattering) {
   }
 }
 
-// Light march (cloud_lighting.glsl light_optical_depth): optical depth to the top along the sun, capped at
-// 4 km of path; and the diffuse in-scatter (diffuse_inscatter) at the slab's faces.
+// Light march (light_optical_depth in shaders/cloud_lighting.glsl): optical depth to the
+// top along the sun, capped at 4 km of path; and the diffuse in-scatter (diffuse_inscatter,
+// same file) at the slab's faces.
 TEST(SlabRendererModel, LightMarchAndDiffuseTermAsInTheShader) {
   const SlabSpec slab = slab_from_optical_depth(100.0, 80.0, kDropletUm);  // H = 1083 m
   SlabRendererModelOptions o;

@@ -4,15 +4,15 @@
 // below 2 km; middle: 2-7 km; high: 5-13 km). Droplet diameters and water contents are
 // typical, order-of-magnitude values from the cloud-physics literature (stratiform liquid
 // clouds: Miles, Verlinde & Clothiaux 2000, J. Atmos. Sci. 57, effective radii 5-10 um,
-// LWC 0.1-0.5 g/m^3); seed 004 (§3.2.3) gives 5-50 um as the range of cloud droplet
+// LWC 0.1-0.5 g/m^3); Ford 2024 §3.2.3 gives 5-50 um as the range of cloud droplet
 // diameters, typically near 10 um. Height-profile shapes follow Schneider's per-type
-// height gradients (Schneider 2015; seed 004 §2.1 and §4.2.1: stratus low and thin,
+// height gradients (Schneider 2015; Ford 2024 §2.1 and §4.2.1: stratus low and thin,
 // cumulus over a broader altitude range with rounded tops).
 //
 // default_density_scale = LWC / LWC_N0(d), LWC_N0(d) = 4/3 pi (d/2)^3 rho_w N0 with
 // N0 = 300 cm^-3 and rho_w = 1e6 g/m^3 (see cloud_layer.h): e.g. cumulus, d = 20 um,
 // LWC_N0 = 1.26 g/m^3, typical LWC 0.5 g/m^3 -> 0.40, giving sigma_t = 0.075 /m (mean free
-// path 13 m, consistent with DESIGN.md §4's 10-20 m).
+// path 13 m; Bouthors et al. 2008 §3.1: several to ~20 m for stratiform clouds).
 #include "weather/cloud_layer.h"
 
 #include <algorithm>

@@ -1,8 +1,7 @@
 // Tileable 3D noise volumes for cloud shapes. See noise_volumes.h and docs/WEATHER.md.
 //
 // Construction (Schneider 2015, "The real-time volumetric cloudscapes of Horizon Zero
-// Dawn"; seed 000 §3.2.1 and seed 004 §4.2.2 describe the same Perlin-Worley / Worley
-// textures). All positions are in units of the volume period, u in [0, 1)^3 at texel
+// Dawn"; Ford 2024 §4.2.2 describes the same Perlin-Worley / Worley textures). All positions are in units of the volume period, u in [0, 1)^3 at texel
 // centres (i + 0.5) / size; every lattice and cell index is taken modulo its own period,
 // so each volume tiles with period `size` texels.
 //   perlin     = 0.5 + 0.5 * kPerlinGain * perlin_fbm(4 u; 4 octaves), clamped to [0, 1]

@@ -1,5 +1,5 @@
 // Tileable 3D noise volumes for cloud shapes (Schneider, "The real-time volumetric
-// cloudscapes of Horizon Zero Dawn", 2015; seeds 002/003/004): generated once at start-up,
+// cloudscapes of Horizon Zero Dawn", 2015; Ford 2024 §4.2.2): generated once at start-up,
 // deterministically from a seed.
 #pragma once
 

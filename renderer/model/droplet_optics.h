@@ -1,6 +1,6 @@
-// Cloud extinction from droplet microphysics (DESIGN.md §4; seed 001 §2):
+// Cloud extinction from droplet microphysics (Bouthors et al. 2008 §3.1-3.2; docs/SOURCES.md):
 //   sigma_t = N0 * Q_ext * pi * r^2,  r = d / 2
-// with N0 the droplet number density (default 300 cm^-3 = 3e8 m^-3, seed 001) and
+// with N0 the droplet number density (default 300 cm^-3 = 3e8 m^-3, Bouthors et al. 2008 §3.2) and
 // Q_ext ~= 2 (large-particle limit of Mie extinction efficiency). Single-scattering
 // albedo of cloud water in the visible is ~1.
 #pragma once

@@ -49,7 +49,7 @@ std::complex<double> mie_log_derivative_cf(std::complex<double> z, int n);
 // stable in this direction for all n (Wiscombe 1980). Started at
 // N = max(n_max, |z|) + 40 with D_N from the continued fraction above, so the start is
 // exact rather than "D_N = 0 far enough up" (B&H's BHMIE start max(n_stop, |mx|) + 15
-// leaves a 1e-5 error at x = 100, see shared/notes/REFERENCE-VALUES.md).
+// leaves a 1e-5 error at x = 100; docs/SOURCES.md, "Lorenz-Mie test cases").
 std::vector<std::complex<double>> mie_log_derivatives(std::complex<double> z, int n_max);
 
 // Series coefficients a_n, b_n for n = 1 .. n_stop (stored at index n - 1).

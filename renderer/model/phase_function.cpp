@@ -13,8 +13,9 @@ constexpr double kMinDiameterUm = 5.0;   // fit validity range (the paper's d >=
 constexpr double kMaxDiameterUm = 50.0;
 }  // namespace
 
-// Jendersie & d'Eon 2023, fits for 5 um <= d <= 50 um (signs as in seed 004, w_D
-// constant 0.665888 as in the paper; the constant in g_D sits inside the exp).
+// Jendersie & d'Eon 2023, fits for 5 um <= d <= 50 um (the minus signs as in Ford 2024
+// eqs. 3.14-3.17, w_D constant 0.665888 as in the paper where Ford 2024 prints 0.664888;
+// the constant in g_D sits inside the exp; docs/SOURCES.md).
 JdDParams jdd_params(double diameter_um) {
   // Clamp into the fit's range; NaN maps to the lower bound so no NaN propagates.
   double d = diameter_um;
@@ -51,7 +52,7 @@ double jdd_phase(double cos_theta, const JdDParams& p) {
 }
 
 // <mu>_HG = g; <mu>_Draine = g (1 + alpha (3 + 2 g^2) / 5) / (1 + alpha (1 + 2 g^2) / 3)
-// (Draine 2003), as listed in REFERENCE-VALUES.md.
+// (Draine 2003); values in docs/SOURCES.md.
 double jdd_mean_cosine(const JdDParams& p) {
   const double g = p.g_d;
   const double gd = g * (1.0 + p.alpha * (3.0 + 2.0 * g * g) / 5.0) /

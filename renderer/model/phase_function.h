@@ -1,7 +1,8 @@
 // Cloud phase function: Jendersie & d'Eon 2023, "An Approximate Mie Scattering
 // Function for Fog and Cloud Rendering" (SIGGRAPH talk), HG + Draine blend fitted to Mie
 // for water droplets of diameter d (um, 5 <= d <= 50). Parameter fits as printed in
-// seed 004 (signs) with w_D's constant 0.665888. Double precision: this is
+// Ford 2024 eqs. 3.14-3.17 (signs) with the paper's w_D constant 0.665888 (docs/SOURCES.md).
+// Double precision: this is
 // the reference twin of shaders/phase_function.glsl.
 #pragma once
 

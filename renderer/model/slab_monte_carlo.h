@@ -1,8 +1,8 @@
 // Monte Carlo radiative transfer in a homogeneous, plane-parallel, conservatively
 // scattering slab (single-scattering albedo 1) with the Jendersie & d'Eon 2023 droplet
 // phase function, lit by a collimated sun, black ground, no atmosphere. An independent
-// check of the renderer's multiple-scattering approximation (issue "Accuracy"; DESIGN.md
-// §7): the transport here is exact up to Monte Carlo noise, nothing is fitted.
+// check of the renderer's multiple-scattering approximation (docs/ACCURACY.md §4): the
+// transport here is exact up to Monte Carlo noise, nothing is fitted.
 //
 // Method: photon random walk with delta (Woodcock) tracking against a majorant
 // (Woodcock et al. 1965; pbrt-v4 ch. 14 "majorant tracking"); in a homogeneous slab the
@@ -33,7 +33,7 @@ struct SlabSpec {
   double sigma_t_per_m = 0.0;       // extinction coefficient (homogeneous), 1/m
   double thickness_m = 0.0;         // geometric thickness H; base at z = 0, top at z = H
   double sun_zenith_deg = 0.0;      // 0..89: collimated sun from above
-  double droplet_diameter_um = 14.0;  // JdD phase (r_e = 7 um as in seed 001)
+  double droplet_diameter_um = 14.0;  // JdD phase (r_e = 7 um as in Bouthors et al. 2008 §3.2)
 
   double optical_depth() const { return sigma_t_per_m * thickness_m; }
 };

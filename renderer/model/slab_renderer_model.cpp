@@ -1,5 +1,6 @@
-// The GPU cloud march of shaders/cloud_march.comp, transcribed for a homogeneous flat slab
-// (see slab_renderer_model.h). Function names refer to shaders/cloud_march.comp and cloud_lighting.glsl.
+// The GPU cloud march of shaders/cloud_march.comp (light: shaders/cloud_lighting.glsl),
+// transcribed for a homogeneous flat slab (see slab_renderer_model.h). Comments name the
+// shader function or variable each line mirrors.
 #include "renderer/model/slab_renderer_model.h"
 
 #include <algorithm>
@@ -17,8 +18,8 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-// cloud_extinction (cloud_density.glsl:59-85) for the slab: zero outside the open
-// height interval (cloud_density.glsl:64), sigma_t inside (coverage 1, profile 1,
+// cloud_extinction_in (cloud_density.glsl) for the slab: zero outside the open
+// height interval (its test f <= 0 || f >= 1), sigma_t inside (coverage 1, profile 1,
 // density scale 1, density modulation 1).
 double slab_extinction(const SlabSpec& slab, double z) {
   const double f = z / slab.thickness_m;
@@ -26,16 +27,16 @@ double slab_extinction(const SlabSpec& slab, double z) {
   return slab.sigma_t_per_m;
 }
 
-// 1 - e^{-x} without cancellation (common.glsl:9-11 uses a series below 1e-3 because
+// 1 - e^{-x} without cancellation (one_minus_exp_neg in common.glsl uses a series below 1e-3 because
 // GLSL has no expm1).
 double one_minus_exp_neg(double x) { return -std::expm1(-x); }
 
-// Two-stream diffuse transmittance (cloud_lighting.glsl slab_diffuse_transmittance).
+// Two-stream diffuse transmittance (slab_diffuse_transmittance, cloud_lighting.glsl).
 double slab_diffuse_transmittance(double tau, double mean_cosine) {
   return 1.0 / (1.0 + 0.75 * (1.0 - mean_cosine) * tau);
 }
 
-// cloud_phase (phase_function.glsl:112-115): both asymmetries scaled by the octave's
+// cloud_phase (phase_function.glsl): both asymmetries scaled by the octave's
 // eccentricity, alpha and w_D unchanged.
 double octave_phase(double mu, const JdDParams& p, double eccentricity) {
   return (1.0 - p.w_d) * hg_phase(mu, p.g_hg * eccentricity) +
@@ -49,7 +50,7 @@ double cos_sun(const SlabSpec& slab) { return std::cos(slab.sun_zenith_deg * kPi
 SlabRendererModelOptions converged_renderer_model_options() {
   SlabRendererModelOptions o;
   o.primary_steps = 4096;
-  o.min_step_m = 0.0;  // the 1 m step floor of the march would cap thin slabs at H / 1 m steps
+  o.min_step_m = 0.0;  // a 1 m floor would cap thin slabs at H / 1 m steps
   return o;
 }
 
@@ -57,16 +58,16 @@ SlabRendererModelOptions converged_renderer_model_options() {
 double slab_light_optical_depth(const SlabSpec& slab, double z, const SlabRendererModelOptions& o) {
   const double mu_s = cos_sun(slab);
   if (!(mu_s > 0.0)) return 0.0;
-  double len = std::max((slab.thickness_m - z) / mu_s, 0.0);    // :62,64 exit through the top
-  // :63,65: the base is never hit on the way up to a sun above the horizon.
-  if (o.cap_light_march) len = std::min(len, o.light_max_dist_m);  // :66
-  const int n = o.light_steps;                                      // :67
+  double len = std::max((slab.thickness_m - z) / mu_s, 0.0);    // exit_top: exit through the top
+  // hit_base: the base is never hit on the way up to a sun above the horizon.
+  if (o.cap_light_march) len = std::min(len, o.light_max_dist_m);  // min(len, LIGHT_MAX_DIST)
+  const int n = o.light_steps;                                      // n
   double tau = 0.0, s_prev = 0.0;
-  for (int j = 0; j < n; ++j) {                                     // :69-76
+  for (int j = 0; j < n; ++j) {                                     // the loop over j
     const double f = static_cast<double>(j + 1) / n;
     const double s = len * f * f;  // quadratic spacing
-    const double zx = z + mu_s * (0.5 * (s + s_prev));              // :72-73 midpoint altitude
-    tau += slab_extinction(slab, zx) * (s - s_prev);                // :74
+    const double zx = z + mu_s * (0.5 * (s + s_prev));              // x, ax: midpoint altitude
+    tau += slab_extinction(slab, zx) * (s - s_prev);                // tau += ...
     s_prev = s;
   }
   return tau;
@@ -75,30 +76,30 @@ double slab_light_optical_depth(const SlabSpec& slab, double z, const SlabRender
 // diffuse_inscatter (cloud_lighting.glsl) with T_atm = 1, coverage 1, density scale 1,
 // E_sun = 1, E_sky = 0 (sky_irradiance), ground albedo 0 (E_ground = 0).
 double slab_diffuse_inscatter(const SlabSpec& slab, double z, const SlabRendererModelOptions& o, double view_up_z) {
-  const double sigma_nominal = slab.sigma_t_per_m * 1.0 * 1.0;           // :112
-  const double tau_a = sigma_nominal * std::max(slab.thickness_m - z, 0.0);  // :113
-  const double tau_b = sigma_nominal * std::max(z - 0.0, 0.0);            // :114
-  const double Ta = slab_diffuse_transmittance(tau_a, o.mean_cosine);     // :115
+  const double sigma_nominal = slab.sigma_t_per_m * 1.0 * 1.0;           // sigma_nominal
+  const double tau_a = sigma_nominal * std::max(slab.thickness_m - z, 0.0);  // tau_a
+  const double tau_b = sigma_nominal * std::max(z - 0.0, 0.0);            // tau_b
+  const double Ta = slab_diffuse_transmittance(tau_a, o.mean_cosine);     // Ta, Tb
   const double Tb = slab_diffuse_transmittance(tau_b, o.mean_cosine);
   const double mu_s = cos_sun(slab);
-  const double mu_pos = std::max(mu_s, 0.0);                              // :116
-  const double F_sun = 1.0 * 1.0 * mu_pos;                                // :117 E_sun T_atm mu
-  const double E_sky = 0.0;                                               // :118
-  const double E_ground = 0.0;                                            // :119-120 albedo 0
-  const double direct_a = mu_pos > 0.0 ? std::exp(-(1.0 - o.delta_f) * tau_a / std::max(mu_pos, 0.05)) : 0.0;  // :121
+  const double mu_pos = std::max(mu_s, 0.0);                              // mu_pos
+  const double F_sun = 1.0 * 1.0 * mu_pos;                                // F_sun = E_sun T_atm mu
+  const double E_sky = 0.0;                                               // E_sky
+  const double E_ground = 0.0;                                            // E_ground, albedo 0
+  const double direct_a = mu_pos > 0.0 ? std::exp(-(1.0 - o.delta_f) * tau_a / std::max(mu_pos, 0.05)) : 0.0;  // direct_a
   const double T_beam = o.eddington_beam && mu_pos > 0.0
                             ? ((0.5 + 0.75 * mu_pos) + (0.5 - 0.75 * mu_pos) * direct_a) /
                                   (1.0 + 0.75 * (1.0 - o.mean_cosine) * tau_a)
                             : Ta;
-  const double F_down = F_sun * std::max(T_beam - direct_a, 0.0) + E_sky * Ta;  // :122
-  const double F_up = (F_sun * T_beam + E_sky * Ta) * (1.0 - Tb) + E_ground * Tb;    // :123
+  const double F_down = F_sun * std::max(T_beam - direct_a, 0.0) + E_sky * Ta;  // F_down
+  const double F_up = (F_sun * T_beam + E_sky * Ta) * (1.0 - Tb) + E_ground * Tb;    // F_up
   if (o.p1_diffuse) {
     // fluence 2 (F_down + F_up), net upward flux F_up - F_down; in-scatter of the diffuse
     // field into direction w (z component view_up_z) with the droplet phase's mean cosine
     const double J = (2.0 * (F_down + F_up) + 3.0 * o.mean_cosine * (F_up - F_down) * view_up_z) / (4.0 * kPi);
     return std::max(J, 0.0);
   }
-  return (F_down + F_up) / (2.0 * kPi);                                   // :124
+  return (F_down + F_up) / (2.0 * kPi);                                   // isotropic hemispheres
 }
 
 SlabRendererModelResult slab_renderer_model_radiance(const SlabSpec& slab, const ViewDirection& v, bool top,
@@ -106,45 +107,45 @@ SlabRendererModelResult slab_renderer_model_radiance(const SlabSpec& slab, const
   if (!(slab.sigma_t_per_m > 0.0) || !(slab.thickness_m > 0.0) || o.primary_steps < 1 || o.light_steps < 1)
     throw std::invalid_argument("slab renderer model: bad slab or options");
   const JdDParams phase = jdd_params(slab.droplet_diameter_um);
-  // Camera ray: opposite to the light's travel direction (cloud_march.comp main).
+  // Camera ray: opposite to the light's travel direction (dir in cloud_march.comp).
   const glm::dvec3 dir = -view_travel_direction(v, top);
   const glm::dvec3 sun = sun_direction(slab.sun_zenith_deg);
-  const double cos_view_sun = glm::dot(dir, sun);  // :149
+  const double cos_view_sun = glm::dot(dir, sun);  // cos_view_sun
   // The camera sits on the boundary it looks through (top: z = H looking down; bottom:
-  // z = 0 looking up); the layer interval is [0, H / |mu|] (:156-171, one interval).
+  // z = 0 looking up); the layer interval is [0, H / |mu|] (ray_intervals, one interval).
   const double z_cam = top ? slab.thickness_m : 0.0;
   const double len = slab.thickness_m / std::fabs(dir.z);
   const double total_len = len;
-  const double nominal_dt = std::max(total_len / o.primary_steps, o.min_step_m);  // :179
-  const int steps = std::max(1, static_cast<int>(std::ceil(len / nominal_dt)));     // :184
-  const double dt = len / steps;                                                    // :185
+  const double nominal_dt = std::max(total_len / o.primary_steps, o.min_step_m);  // nominal_du (in t here)
+  const int steps = std::max(1, static_cast<int>(std::ceil(len / nominal_dt)));     // steps
+  const double dt = len / steps;                                                    // du
 
   SlabRendererModelResult out;
   const int nj = std::max(1, o.jitter_samples);
   double T_mean = 0.0;
   for (int jj = 0; jj < nj; ++jj) {
-    const double jitter = (jj + 0.5) / nj;  // :178 per-pixel hash, here stratified
+    const double jitter = (jj + 0.5) / nj;  // the shader's per-pixel hash12, here stratified
     double C_sun = 0.0, C_diff = 0.0, T = 1.0;
-    for (int s = 0; s < steps && T > o.cloud_t_eps; ++s) {  // :186
-      const double t = (s + jitter) * dt;                   // :187
-      const double z = z_cam + t * dir.z;                   // :188-189
-      const double sigma = slab_extinction(slab, z);        // :191
-      if (sigma <= 0.0) continue;                           // :192
-      // :197-206 direct sun, Wrenninge octaves over the light-march optical depth.
-      const double tau = o.sun_tau_scale * slab_light_optical_depth(slab, z, o);  // :199
+    for (int s = 0; s < steps && T > o.cloud_t_eps; ++s) {  // T > CLOUD_T_EPS
+      const double t = (s + jitter) * dt;                   // t
+      const double z = z_cam + t * dir.z;                   // p, alt
+      const double sigma = slab_extinction(slab, z);        // sigma = cloud_extinction_in(...)
+      if (sigma <= 0.0) continue;                           // sigma <= 0: next step
+      // L_sun: direct sun, Wrenninge octaves over the light-march optical depth.
+      const double tau = o.sun_tau_scale * slab_light_optical_depth(slab, z, o);  // tau
       double s_sum = 0.0, a = 1.0, b = 1.0, c = 1.0;
-      for (int oc = 0; oc < o.ms_octaves; ++oc) {  // :201-204
+      for (int oc = 0; oc < o.ms_octaves; ++oc) {  // the octave loop
         s_sum += b * octave_phase(cos_view_sun, phase, c) * std::exp(-a * tau);
         a *= o.ms_extinction_scale;
         b *= o.ms_energy_scale;
         c *= o.ms_eccentricity_scale;
       }
-      const double L_sun = 1.0 * 1.0 * s_sum;  // :205 E_sun T_atm s_sum
-      const double L_diffuse = o.diffuse ? slab_diffuse_inscatter(slab, z, o, -dir.z) : 0.0;  // :207
-      const double absorbed = one_minus_exp_neg(sigma * dt);  // :208
-      C_sun += T * absorbed * L_sun;                          // :209
+      const double L_sun = 1.0 * 1.0 * s_sum;  // L_sun = E_sun T_atm s_sum
+      const double L_diffuse = o.diffuse ? slab_diffuse_inscatter(slab, z, o, -dir.z) : 0.0;  // L_diffuse
+      const double absorbed = one_minus_exp_neg(sigma * dt);  // absorbed
+      C_sun += T * absorbed * L_sun;                          // C += T absorbed (L_sun + L_diffuse)
       C_diff += T * absorbed * L_diffuse;
-      T *= 1.0 - absorbed;                                    // :211
+      T *= 1.0 - absorbed;                                    // T *= 1 - absorbed
     }
     out.radiance_sun += C_sun / nj;
     out.radiance_diffuse += C_diff / nj;

@@ -1,7 +1,7 @@
-// A double-precision transcription of what the GPU cloud march (shaders/cloud_march.comp)
-// computes for a homogeneous plane-parallel slab: the "model of the model" that the
-// Monte Carlo slab (slab_monte_carlo.h) is compared against. It is deliberately literal:
-// every step cites the shader line it mirrors, and nothing here is tuned.
+// A double-precision transcription of what the GPU cloud march (shaders/cloud_march.comp,
+// its light in shaders/cloud_lighting.glsl) computes for a homogeneous plane-parallel
+// slab: the "model of the model" that the Monte Carlo slab (slab_monte_carlo.h) is compared against. It is deliberately literal:
+// every step names the shader function or variable it mirrors, and nothing here is tuned.
 //
 // Scene: flat slab base z = 0, top z = H (the shader's shells, with the planet radius
 // taken to infinity), sigma = sigma_t everywhere inside (coverage 1, density scale 1,
@@ -9,8 +9,8 @@
 // atmosphere transmittance T_atm = 1, sky irradiance E_sky = 0, ground albedo 0 (sun
 // only), no aerial perspective. A camera above the slab looking down sees the reflected
 // radiance; below looking up, the transmitted radiance. The result is the cloud term C
-// of cloud_march.comp main() (the background T · L_bg is excluded: it holds the direct sun, which
-// the Monte Carlo radiances exclude as well). Units: L / E_sun in sr^-1.
+// of cloud_march.comp, C += T * absorbed * (L_sun + L_diffuse) (the background T · L_bg
+// is excluded: it holds the direct sun, which the Monte Carlo radiances exclude as well). Units: L / E_sun in sr^-1.
 #pragma once
 
 #include "renderer/model/slab_monte_carlo.h"
@@ -30,11 +30,13 @@ struct SlabRendererModelOptions {
   double ms_extinction_scale = RenderQuality{}.ms_extinction_scale;      // Wrenninge a
   double ms_energy_scale = RenderQuality{}.ms_energy_scale;              // Wrenninge b
   double ms_eccentricity_scale = RenderQuality{}.ms_eccentricity_scale;  // Wrenninge c
-  double min_step_m = 1.0;  // cloud_march.comp: steps of at least 1e-6 march units
-  bool cap_light_march = true;                        // light march over at most light_max_dist_m
-  double light_max_dist_m = kLightMarchReach_m;       // LIGHT_MARCH_REACH_M
-  bool diffuse = true;                                // cloud_lighting.glsl diffuse_inscatter
-  double mean_cosine = kTwoStreamMeanCosine;          // TWO_STREAM_MEAN_COSINE
+  // Primary steps are uniform in t here, at least min_step_m long; cloud_march.comp steps
+  // uniformly in march_coordinate (ln(1 + t / t_ref)) without such a floor.
+  double min_step_m = 1.0;
+  bool cap_light_march = true;                   // light_optical_depth: len = min(len, LIGHT_MARCH_REACH_M)
+  double light_max_dist_m = kLightMarchReach_m;  // LIGHT_MARCH_REACH_M (scene_constants.h)
+  bool diffuse = true;                           // cloud_march.comp: L_diffuse = diffuse_inscatter(...)
+  double mean_cosine = kTwoStreamMeanCosine;     // TWO_STREAM_MEAN_COSINE (scene_constants.h)
   // The diffuse field's in-scatter in the P1 (diffusion) approximation,
   // (Phi + 3 g F_net . w) / (4 pi) (cloud_lighting.glsl); false: isotropic hemispheres (the
   // model before the Monte Carlo comparison).
@@ -50,8 +52,9 @@ struct SlabRendererModelOptions {
   // Experiment: the sun term's light-march optical depth scaled by this (1 = exact single
   // scattering, the shader; 1 - f = the delta-scaled beam).
   double sun_tau_scale = 1.0;
-  double cloud_t_eps = 1e-3;  // cloud_march.comp CLOUD_T_EPS, early exit
-  // The shader jitters the sample within each step per pixel (cloud_march.comp main()). The
+  double cloud_t_eps = 1e-3;  // CLOUD_T_EPS, cloud_march.comp: early exit
+  // The shader jitters the sample within each step per pixel (cloud_march.comp: jitter from
+  // hash12, t = march_distance(u0 + (st + jitter) du)). The
   // model averages over jitter_samples stratified jitters (j + 0.5) / n, i.e. the
   // expected pixel value; 1 = the step midpoint.
   int jitter_samples = 1;
@@ -74,8 +77,8 @@ SlabRendererModelResult slab_renderer_model_radiance(const SlabSpec& slab, const
                                                      const SlabRendererModelOptions& options = {});
 
 // Sun part pieces, exposed for tests: the light-march optical depth from height z (m) to
-// the slab top towards a sun with cosine mu_s (cloud_lighting.glsl light_optical_depth), and the diffuse
-// in-scatter per unit scattering (cloud_lighting.glsl diffuse_inscatter) in sr^-1.
+// the slab top towards a sun with cosine mu_s (light_optical_depth, cloud_lighting.glsl),
+// and the diffuse in-scatter per unit scattering (diffuse_inscatter, same file) in sr^-1.
 double slab_light_optical_depth(const SlabSpec& slab, double z, const SlabRendererModelOptions& options);
 // view_up_z: z component of the direction the in-scattered light travels (towards the
 // camera); only the P1 variant depends on it.

@@ -1,5 +1,5 @@
 // The cloud density field of the model (docs/RENDERING.md "Cloud density"; Schneider 2015
-// / Nubis, seeds 002-004), evaluated in double precision from the shared inputs with
+// / Nubis, as in Ford 2024 §3.1 and §4.2), evaluated in double precision from the shared inputs with
 // emulated GL sampling (texture_sampling.h). For a local point p at altitude a inside
 // layer L (base b, top t), f = (a - b) / (t - b):
 //   1. weather map w at the latitude/longitude of p's direction from the shell centre
@@ -40,7 +40,7 @@ class CloudField {
   // honour_stratiform: when true (the model's definition, as in the shader), stratiform
   // layers ignore the weather map's cloud-type channel G (f_v = 1), as
   // weather/cloud_layer.h and docs/WEATHER.md describe them; false applies f_v to every
-  // layer (an older shader did; kept for comparisons).
+  // layer, for comparisons (docs/REFERENCE.md, "GPU vs reference").
   CloudField(const ReferenceScene& scene, const ReferenceInputs& inputs, bool honour_stratiform = true);
 
   // Extinction of layer li at local point p with altitude alt (above the shell sphere).

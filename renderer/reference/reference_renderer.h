@@ -1,4 +1,4 @@
-// CPU reference renderer (issue "Accuracy", DESIGN.md §7): the same physical model as the
+// CPU reference renderer (docs/ACCURACY.md §1, docs/REFERENCE.md): the same physical model as the
 // GPU renderer (docs/RENDERING.md), evaluated independently in double precision at
 // converged settings. It shares only the inputs with the GPU path (weather module data,
 // geodesy, model constants and the model's CPU twins in renderer/model/); every line of

@@ -1,8 +1,8 @@
 // Where a straight ray crosses a sphere concentric with the shell, as both roots of
 //   t^2 + 2 (R + h) mu t + c = 0,   c = (h - H)(2R + h + H)
 // for a ray starting at altitude h above the sphere of radius R with zenith cosine mu,
-// and a sphere at altitude H (the cancellation-free form of DESIGN.md §2, Haines et al.,
-// Ray Tracing Gems ch. 7: q = b' + sign(b') sqrt(b'^2 - c), roots c / q and q with
+// and a sphere at altitude H (the cancellation-free form of Haines et al. 2019,
+// Ray Tracing Gems ch. 7, as in geo::intersect_shell: q = b' + sign(b') sqrt(b'^2 - c), roots c / q and q with
 // b' = -(R + h) mu). Unlike geo::intersect_shell, roots behind the start are kept, which
 // is what interval logic needs (inside the sphere for t0 < t < t1).
 #pragma once

@@ -1,5 +1,7 @@
 #include "renderer/coverage_cull.h"
 
+#include "renderer/model/scene_constants.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -7,7 +9,7 @@ namespace cloudsvc {
 
 namespace {
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kLightMarchM = 4000.0;     // LIGHT_MAX_DIST of shaders/cloud_lighting.glsl
+constexpr double kLightMarchM = model::kLightMarchReach_m;  // the longest light march
 }  // namespace
 
 float max_coverage_in_cap(const weather::WeatherMap& map, double lat_deg, double lon_deg, double cap_rad) {

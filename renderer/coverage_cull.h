@@ -17,7 +17,7 @@ namespace cloudsvc {
 float max_coverage_in_cap(const weather::WeatherMap& map, double lat_deg, double lon_deg, double cap_rad);
 
 // Angular radius (rad) of the cap a frame's clouds can affect, on a sphere of radius R:
-// the march reach (m; horizon_reach_m, renderer/scene_setup.h: the camera's horizon plus
+// the march reach (m; horizon_reach_m, renderer/frame_context.h: the camera's horizon plus
 // that of the highest layer top, at least 12 km) with 1 % margin, plus the longest light
 // march (4 km). The ground's cloud shadows are inside it: a shadow ray from visible ground
 // leaves the highest layer within that layer's horizon distance, which the reach includes.

@@ -1,7 +1,7 @@
 // Named ray-march quality presets (issue "Accuracy", part 2): RenderQuality values, to be
 // chosen from the measured error-vs-time Pareto front of bench/cloudbench.cpp against the
 // CPU reference (measured values in quality_presets.cpp and docs/ACCURACY.md). The march code is
-// the same for every preset; only the numbers of render_types.h's RenderQuality change.
+// the same for every preset; only the numbers of RenderQuality (renderer/api/render_quality.h) change.
 //
 //   naive    uniform 64 primary steps (step_growth_ref_m = 0), 6 light steps, 3 octaves:
 //            the baseline speed-ups are quoted against

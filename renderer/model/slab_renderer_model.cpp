@@ -60,7 +60,7 @@ double slab_light_optical_depth(const SlabSpec& slab, double z, const SlabRender
   if (!(mu_s > 0.0)) return 0.0;
   double len = std::max((slab.thickness_m - z) / mu_s, 0.0);    // exit_top: exit through the top
   // hit_base: the base is never hit on the way up to a sun above the horizon.
-  if (o.cap_light_march) len = std::min(len, o.light_max_dist_m);  // min(len, LIGHT_MAX_DIST)
+  if (o.cap_light_march) len = std::min(len, o.light_max_dist_m);  // min(len, LIGHT_MARCH_REACH_M)
   const int n = o.light_steps;                                      // n
   double tau = 0.0, s_prev = 0.0;
   for (int j = 0; j < n; ++j) {                                     // the loop over j

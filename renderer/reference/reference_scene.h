@@ -1,6 +1,6 @@
 // Everything the reference needs to know about one view, derived in double precision
 // from the ViewRequest and the Weather with the geodesy and model libraries, independently
-// of the GPU path's renderer/scene_setup.cpp:
+// of the GPU path's renderer/frame_context.cpp:
 //   - frames: "local" = East-North-Up axes at the camera, origin at the camera, metres;
 //     "ECEF" = WGS84 Earth-centred, Earth-fixed axes;
 //   - the cloud shell and the ground: spheres of the osculating radius R = sqrt(M N) at the

@@ -12,6 +12,8 @@
 
 #include <string>
 
+#include "weather/cloud_layer.h"
+
 namespace cloudsvc::gpu {
 
 // Texture units (sampler bindings): one unit per texture, so a texture bound for one pass
@@ -71,9 +73,10 @@ namespace ssbo { CLOUDSVC_GPU_STORAGE_BUFFERS(CLOUDSVC_GPU_CONSTANT) }
 namespace ubo { CLOUDSVC_GPU_UNIFORM_BLOCKS(CLOUDSVC_GPU_CONSTANT) }
 #undef CLOUDSVC_GPU_CONSTANT
 
-// Cloud layers the GPU path draws (GLSL: MAX_LAYERS): the size of the per-layer arrays of
-// the uniform blocks and the layer slices of the ground shadow map and light volume.
-inline constexpr int kMaxLayers = 4;
+// Cloud layers the GPU path draws (GLSL: MAX_LAYERS): every layer a valid weather may
+// have (weather::kMaxCloudLayers); the size of the per-layer arrays of the uniform blocks
+// and the layer slices of the ground shadow map and light volume.
+inline constexpr int kMaxLayers = weather::kMaxCloudLayers;
 
 // GLSL text defining every name above and the model constants of
 // renderer/model/scene_constants.h and renderer/model/atmosphere_constants.h (the latter as

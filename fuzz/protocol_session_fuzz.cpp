@@ -16,7 +16,8 @@
 //    through is a client message other than Hello whose capabilities were offered;
 //  - a WeatherLayers let through converts to a weather::Weather that weather::validate()
 //    accepts and a WeatherMapTile to a weather::MapTile without problem(): the renderer
-//    throws on either otherwise (CloudRenderer::set_weather, ::apply_tile).
+//    throws on either otherwise (CloudRenderer::set_weather, ::apply_tile). For tiles the
+//    protocol applies the same rules (weather/map_tile.h), so this checks the conversion.
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>

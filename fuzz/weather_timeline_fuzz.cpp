@@ -9,7 +9,8 @@
 // most 9 x 9 texels, mostly within valid bounds.
 // Invariants checked besides the sanitizers':
 //  - a tile that protocol::validate() accepts has no MapTile::problem() (the renderer
-//    throws on those, CloudRenderer::apply_tile);
+//    throws on those, CloudRenderer::apply_tile): validate() applies the same rules
+//    (weather/map_tile.h), so this checks that to_map_tile() keeps what they judged;
 //  - at() always returns two keyframes of the base map's size whose values are finite and
 //    in [0, 1], with a weight in [0, 1];
 //  - at most kMaxKeyframes keyframes are kept.

@@ -1,9 +1,12 @@
 // Limits and valid ranges of the wire format. validate() enforces them, Welcome advertises
-// the first four, docs/PROTOCOL.md quotes them all.
+// the first four, docs/PROTOCOL.md quotes them all. A WeatherMapTile's are the weather
+// module's tile rules (weather/map_tile.h), which validate() applies to it.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+
+#include "weather/map_tile.h"
 
 namespace cloudsvc::protocol {
 
@@ -15,9 +18,10 @@ inline constexpr std::uint32_t kMaxPayloadBytes = 64u * 1024u * 1024u;
 inline constexpr std::uint32_t kMaxImageSize = 8192;
 // Most cloud layers in WeatherLayers.
 inline constexpr std::size_t kMaxLayers = 4;
-// Largest WeatherMapTile width or height, texels. 1024 x 1024 x 4 channels x 4 bytes is
-// 16 MiB, well inside kMaxPayloadBytes; larger areas are sent as several tiles.
-inline constexpr std::uint32_t kMaxTileSize = 1024;
+// Largest WeatherMapTile width or height, texels: the weather module's limit, the one rule
+// set for tiles (weather/map_tile.h), 1024. 1024 x 1024 x 4 channels x 4 bytes is 16 MiB,
+// well inside kMaxPayloadBytes; larger areas are sent as several tiles.
+inline constexpr std::uint32_t kMaxTileSize = weather::kMaxTileTexels;
 // Longest strings, bytes of UTF-8.
 inline constexpr std::size_t kMaxNameBytes = 256;        // Hello.client_name
 inline constexpr std::size_t kMaxVersionBytes = 64;      // Welcome.service_version

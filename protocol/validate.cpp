@@ -8,6 +8,8 @@
 
 #include "protocol/limits.h"
 #include "protocol/utf8.h"
+#include "protocol/weather_conversion.h"
+#include "weather/map_tile.h"
 
 namespace cloudsvc::protocol {
 namespace {
@@ -229,53 +231,18 @@ Problem check(const WeatherLayers& m) {
   return {};
 }
 
-std::string_view channel_name(int bit) {
-  switch (bit) {
-    case 0:
-      return "coverage";
-    case 1:
-      return "vertical_development";
-    case 2:
-      return "density";
-    default:
-      return "precipitation";
-  }
-}
-
+// A tile is judged by the weather module's rules (weather/map_tile.h), the ones the
+// timeline and the renderer hold every tile to, with the fields named "WeatherMapTile.":
+// bounds, size up to kMaxTileSize (= weather::kMaxTileTexels), channels, valid-at time
+// finite, then the values. The protocol's own rule, the UTC range every time in a message
+// has, goes between the fields and the values, so the first problem named is the same as
+// when this function held its own copy of the rules.
 Problem check(const WeatherMapTile& m) {
-  CHECK(closed_open("WeatherMapTile.lat_min_deg", m.lat_min_deg, -90.0, 90.0));
-  CHECK(open_closed("WeatherMapTile.lat_max_deg", m.lat_max_deg, m.lat_min_deg, 90.0));
-  CHECK(closed_open("WeatherMapTile.lon_min_deg", m.lon_min_deg, -180.0, 180.0));
-  CHECK(open_closed("WeatherMapTile.lon_max_deg", m.lon_max_deg, m.lon_min_deg,
-                    m.lon_min_deg + 360.0));
-  CHECK(count_in("WeatherMapTile.width", m.width, 1, kMaxTileSize));
-  CHECK(count_in("WeatherMapTile.height", m.height, 1, kMaxTileSize));
-  CHECK(known_bits("WeatherMapTile.channels", m.channels, tile_channel::kAll));
-  if (m.channels == 0) return std::string("WeatherMapTile.channels is empty");
+  static_assert(tile_channel::kAll == weather::kAllTileChannels);
+  const weather::MapTileHeader header = to_tile_header(m);
+  if (std::string p = weather::tile_header_problem(header, "WeatherMapTile."); !p.empty()) return p;
   CHECK(check_utc("WeatherMapTile.valid_at_utc_s", m.valid_at_utc_s));
-  const int nc = m.channel_count();
-  const std::uint64_t expected = std::uint64_t{m.width} * m.height * nc;
-  if (m.data.size() != expected) {
-    return join("WeatherMapTile.data has ", num(m.data.size()), " values, expected ", num(expected),
-                " (width ", num(m.width), " x height ", num(m.height), " x ",
-                num(static_cast<std::uint64_t>(nc)), " channels)");
-  }
-  for (std::size_t i = 0; i < m.data.size(); ++i) {
-    const float v = m.data[i];
-    if (v >= 0.0f && v <= 1.0f) continue;  // false for NaN
-    const std::size_t texel = i / nc;
-    int k = static_cast<int>(i % nc);
-    int bit = 0;  // the k-th set bit of channels
-    for (;; ++bit) {
-      if ((m.channels >> bit) & 1) {
-        if (k == 0) break;
-        --k;
-      }
-    }
-    return join("WeatherMapTile.data[", num(i), "] ", num(static_cast<double>(v)),
-                " out of range [0, 1] (col ", num(texel % m.width), ", row ", num(texel / m.width),
-                ", ", channel_name(bit), ")");
-  }
+  if (std::string p = weather::tile_data_problem(header, m.data, "WeatherMapTile."); !p.empty()) return p;
   return {};
 }
 

@@ -52,6 +52,11 @@ weather::MapTile to_map_tile(const protocol::WeatherMapTile& m) {
   return t;
 }
 
+weather::MapTileHeader to_tile_header(const protocol::WeatherMapTile& m) {
+  return weather::MapTileHeader{m.lat_min_deg, m.lon_min_deg, m.lat_max_deg, m.lon_max_deg,
+                                m.width,       m.height,      m.channels,    m.valid_at_utc_s};
+}
+
 protocol::WeatherMapTile to_message(const weather::MapTile& t) {
   protocol::WeatherMapTile m;
   m.lat_min_deg = t.lat_min_deg;

@@ -21,6 +21,11 @@ CloudRenderer::CloudRenderer(const RendererConfig& config) : config_(config), fi
 }
 
 void CloudRenderer::apply_tile(const weather::MapTile& tile, double now_utc_s) {
+  // A precondition check, kept on purpose: this is a public API (tests, tools and the
+  // service call it), and the timeline's resampling trusts the bounds, size and values. It
+  // is the one rule set of weather/map_tile.h that the protocol applies to a WeatherMapTile
+  // too, so a tile the service accepted passes it; the second pass costs one sweep over
+  // the values, little beside apply_tile's resampling of every keyframe.
   const std::string problem = tile.problem();
   if (!problem.empty()) throw std::invalid_argument("weather tile: " + problem);
   timeline_.apply(tile, now_utc_s);

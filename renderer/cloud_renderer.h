@@ -43,7 +43,8 @@ class CloudRenderer {
   const weather::Weather& weather() const { return weather_; }
 
   // Streams a weather-map tile in (weather/weather_timeline.h): it fades in over time
-  // instead of popping. The tile must have no problem(); now_utc_s is the current time.
+  // instead of popping. now_utc_s is the current time. Throws std::invalid_argument
+  // ("weather tile: " + problem()) when the tile breaks the rules of weather/map_tile.h.
   void apply_tile(const weather::MapTile& tile, double now_utc_s);
   std::size_t weather_keyframes() const { return timeline_.keyframe_count(); }
 

@@ -1,20 +1,17 @@
 #include "service/render_loop.h"
 
 #include <chrono>
-#include <cstdio>
-#include <filesystem>
+#include <exception>
 #include <memory>
-#include <stdexcept>
+#include <string>
 
 #include "protocol/limits.h"
 #include "protocol/weather_conversion.h"
 #include "renderer/cloud_renderer.h"
 #include "renderer/gl/egl_context.h"
-#include "renderer/image_output.h"
 #include "renderer/quality_presets.h"
-#include "service/frame_encoding.h"
-#include "service/output_directory.h"
-#include "service/shm_frame_writer.h"
+#include "service/frame_sinks.h"
+#include "service/sim_clock.h"
 #include "service/window_presenter.h"
 
 namespace cloudsvc {
@@ -43,26 +40,16 @@ ViewRequest view_request(const protocol::Pose& p, double utc_s, const protocol::
 
 bool utc_in_range(double utc_s) { return utc_s >= protocol::kMinUtc_s && utc_s < protocol::kMaxUtc_s; }
 
+// Where the answers about one frame go: a pose-driven frame to every client (reply_to
+// empty, request_id 0), a requested one to the requester; an Error about the frame
+// answers `answers_seq`.
+struct FrameAddress {
+  std::uint64_t request_id = 0;
+  std::optional<std::uint64_t> reply_to;
+  std::uint64_t answers_seq = 0;
+};
+
 }  // namespace
-
-void SimClock::set(double utc_s) {
-  base_utc_s_ = utc_s;
-  base_sim_s_.reset();
-}
-
-double SimClock::utc_for(const protocol::Pose& p) const {
-  if (p.utc_unix_s) return *p.utc_unix_s;
-  return base_utc_s_ + (base_sim_s_ ? p.sim_time_s - *base_sim_s_ : 0.0);
-}
-
-void SimClock::observe(const protocol::Pose& p) {
-  if (p.utc_unix_s) {
-    base_utc_s_ = *p.utc_unix_s;
-    base_sim_s_ = p.sim_time_s;
-  } else if (!base_sim_s_) {
-    base_sim_s_ = p.sim_time_s;
-  }
-}
 
 protocol::SetView initial_view(const ServeOptions& o) {
   protocol::SetView v;
@@ -88,156 +75,196 @@ double RenderLoop::frame_in_progress_ms() const {
   return started == 0 ? 0.0 : static_cast<double>(steady_ns() - started) * 1e-6;
 }
 
-void RenderLoop::run() {
-  // GL context: the window's when there is one, else headless EGL.
-  std::unique_ptr<WindowPresenter> window;
-  std::unique_ptr<gl::EglContext> egl;
-  if (options_.window) window = std::make_unique<WindowPresenter>(options_.width, options_.height, "cloudsvc serve");
-  else egl = std::make_unique<gl::EglContext>();
+class RenderLoop::Run {
+ public:
+  // Makes the GL context (the window's when there is one, else headless EGL) and then the
+  // renderer, with the command line's weather, view and time.
+  explicit Run(RenderLoop& loop);
 
-  CloudRenderer renderer;
-  renderer.set_weather(options_.weather);
-  protocol::SetView view = initial_view(options_);
-  SimClock clock;
-  clock.set(options_.unix_time_s);
-  std::optional<PendingPose> pose;  // the pose on screen
-  std::uint64_t frame = 0;
-  auto fps_window_start = SteadyClock::now();
-  std::uint64_t fps_window_frames = 0;
+  // How long a take() of the mailbox waits: a window needs its events polled.
+  std::chrono::milliseconds wait() const { return std::chrono::milliseconds(window_ ? 30 : 200); }
+  // Processes the window's events; its close button stops the service.
+  void poll_window();
+  void apply_change(StateChange& c);
+  // The newest pose: rendered and announced to everyone when its UTC is in range.
+  void on_pose(const PendingPose& p);
+  // A RenderRequest: the pose on screen rendered again for the requester.
+  void on_render_request(const PendingRender& r);
 
-  // Writes the frame to every sink the view asks for; fills in where it went.
-  auto publish = [&](const FrameImage& img, const PendingPose& p, double utc, protocol::FrameReady& ready,
-                     std::optional<std::uint64_t> reply_to, std::uint64_t answers_seq) {
-    const std::lock_guard publishing(publish_mutex_);
-    if ((view.sinks & protocol::sink::kShm) && shm_) {
-      ShmFrameMeta meta{frame, p.pose.sim_time_s, utc, p.pose.lat_deg, p.pose.lon_deg, p.pose.alt_m,
-                        p.pose.heading_deg, p.pose.pitch_deg, p.pose.roll_deg, img.stats.render_ms};
-      if (view.shm_format == protocol::ShmPixelFormat::Rgba8Srgb) {
-        const auto px = to_rgba8_srgb(img);
-        ready.shm_slot = shm_->write(meta, CLOUDSVC_SHM_RGBA8_SRGB, img.width, img.height, px.data(),
-                                     static_cast<std::size_t>(img.width) * 4);
-      } else {
-        const auto px = to_rgba16f(img);
-        ready.shm_slot = shm_->write(meta, CLOUDSVC_SHM_RGBA16F_LINEAR, img.width, img.height, px.data(),
-                                     static_cast<std::size_t>(img.width) * 8);
-      }
-    }
-    if ((view.sinks & protocol::sink::kFile) && !view.file_dir.empty()) {
-      // Checked again for every frame: a directory accepted earlier may since have been
-      // replaced by a link leading out of --out-dir.
-      const ClientDirectory dir = resolve_client_directory(view.file_dir, options_.out_dir);
-      char name[64];
-      std::snprintf(name, sizeof name, "frame_%06llu.%s", static_cast<unsigned long long>(frame),
-                    view.file_format == protocol::FileFormat::Exr ? "exr" : "png");
-      try {
-        if (!dir.problem.empty()) throw std::runtime_error(dir.problem);
-        const std::string path = (dir.path / name).string();
-        write_image(path, img);
-        ready.file_path = path;
-      } catch (const std::exception& e) {
-        notify_(reply_to, protocol::Error{protocol::ErrorCode::SinkUnavailable, e.what(), answers_seq});
-      }
-    }
-    if ((view.sinks & protocol::sink::kWindow) && window) window->present(img);
-  };
+ private:
+  void apply_tile(const protocol::WeatherMapTile& tile);
+  // The steps of one frame, in order.
+  void render_and_publish(const PendingPose& p, const FrameAddress& to);
+  std::optional<FrameImage> render_frame(const PendingPose& p, double utc_s, const FrameAddress& to);
+  void publish_to_sinks(const FrameImage& img, const PendingPose& p, double utc_s, protocol::FrameReady& ready,
+                        const FrameAddress& to);
+  void announce(protocol::FrameReady& ready, const PendingPose& p, const FrameAddress& to);
+  void count_frame();
 
-  auto count_frame = [&] {
-    frames_.store(frame);
-    ++fps_window_frames;
-    const auto now = SteadyClock::now();
-    const double span = std::chrono::duration<double>(now - fps_window_start).count();
-    if (span >= 1.0) {
-      fps_.store(static_cast<double>(fps_window_frames) / span);
-      fps_window_start = now;
-      fps_window_frames = 0;
-    }
-  };
+  RenderLoop& loop_;
+  const ServeOptions& options_;
+  // Declared before the renderer: its GL context exists first and goes last.
+  std::unique_ptr<WindowPresenter> window_;
+  std::unique_ptr<gl::EglContext> egl_;
+  CloudRenderer renderer_;
+  protocol::SetView view_;
+  SimClock clock_;
+  std::optional<PendingPose> pose_;  // the pose on screen
+  std::uint64_t frame_ = 0;          // frames begun, numbering them from 1
+  SteadyClock::time_point fps_window_start_;
+  std::uint64_t fps_window_frames_ = 0;
+};
 
-  // Renders p and announces it: pose-driven frames to everyone (reply_to empty), requested
-  // frames to the requester; an Error about the frame answers `answers_seq`.
-  auto render_and_publish = [&](const PendingPose& p, std::uint64_t request_id, std::optional<std::uint64_t> reply_to,
-                                std::uint64_t answers_seq) {
-    const double utc = clock.utc_for(p.pose);
-    ++frame;
-    FrameImage img;
-    frame_started_ns_.store(steady_ns());
+RenderLoop::Run::Run(RenderLoop& loop)
+    : loop_(loop), options_(loop.options_),
+      window_(options_.window ? std::make_unique<WindowPresenter>(options_.width, options_.height, "cloudsvc serve")
+                              : nullptr),
+      egl_(window_ ? nullptr : std::make_unique<gl::EglContext>()), view_(initial_view(options_)) {
+  renderer_.set_weather(options_.weather);
+  clock_.set(options_.unix_time_s);
+  fps_window_start_ = SteadyClock::now();
+}
+
+void RenderLoop::Run::poll_window() {
+  if (!window_) return;
+  window_->poll();
+  if (window_->close_requested()) loop_.stop_service_();
+}
+
+void RenderLoop::Run::apply_change(StateChange& c) {
+  if (auto* v = std::get_if<protocol::SetView>(&c)) view_ = *v;
+  else if (auto* w = std::get_if<protocol::WeatherLayers>(&c)) renderer_.set_weather(to_weather(*w));
+  else if (auto* t = std::get_if<protocol::SetTime>(&c)) clock_.set(t->utc_unix_s);
+  else if (auto* tile = std::get_if<protocol::WeatherMapTile>(&c)) apply_tile(*tile);
+}
+
+void RenderLoop::Run::apply_tile(const protocol::WeatherMapTile& tile) {
+  // "now" is the time of the pose on screen.
+  const double now = pose_ ? clock_.utc_for(pose_->pose) : clock_.base_utc_s();
+  try {
+    renderer_.apply_tile(to_map_tile(tile), now);
+  } catch (const std::exception& e) {
+    // The protocol checked the tile with the rules apply_tile checks again (one rule set,
+    // weather/map_tile.h), so this is a safety net only.
+    loop_.notify_(std::nullopt, protocol::Error{protocol::ErrorCode::InvalidField, e.what(), 0});
+  }
+  loop_.mailbox_.tile_applied(tile);
+}
+
+void RenderLoop::Run::on_pose(const PendingPose& p) {
+  // A pose without its own UTC gets one from the clock (SetTime + sim time since); checked
+  // like an explicit UTC, so e.g. sim_time_s 1e300 is refused, not drawn black.
+  const double utc = clock_.utc_for(p.pose);
+  if (!utc_in_range(utc)) {
+    loop_.notify_(p.client_id,
+                  protocol::Error{protocol::ErrorCode::InvalidField,
+                                  "Pose.sim_time_s: the pose's UTC (last SetTime advanced by sim time since) is " +
+                                      std::to_string(utc) + " s, outside [" + std::to_string(protocol::kMinUtc_s) +
+                                      ", " + std::to_string(protocol::kMaxUtc_s) +
+                                      ") (years 1900-2199); pose not rendered",
+                                  p.seq});
+    return;
+  }
+  clock_.observe(p.pose);
+  pose_ = p;
+  render_and_publish(*pose_, FrameAddress{});
+}
+
+void RenderLoop::Run::on_render_request(const PendingRender& r) {
+  if (!pose_) {
+    loop_.notify_(r.client_id, protocol::Error{protocol::ErrorCode::UnexpectedMessage,
+                                               "RenderRequest before any Pose: nothing to render", r.seq});
+  } else {
+    PendingPose p = *pose_;
+    p.received = r.received;
+    render_and_publish(p, FrameAddress{r.request_id, r.client_id, r.seq});
+  }
+  loop_.mailbox_.render_finished(r.client_id);
+}
+
+void RenderLoop::Run::render_and_publish(const PendingPose& p, const FrameAddress& to) {
+  const double utc = clock_.utc_for(p.pose);
+  ++frame_;  // a frame that fails to render keeps its number
+  const std::optional<FrameImage> img = render_frame(p, utc, to);
+  if (!img) return;
+  protocol::FrameReady ready;
+  ready.frame_number = frame_;
+  ready.request_id = to.request_id;
+  ready.pose = p.pose;
+  ready.sim_time_s = p.pose.sim_time_s;
+  ready.width = view_.width;
+  ready.height = view_.height;
+  ready.render_ms = img->stats.render_ms;
+  publish_to_sinks(*img, p, utc, ready, to);
+  announce(ready, p, to);
+}
+
+// The frame's image, or nullopt after an Error{RenderFailed} went to `to`.
+std::optional<FrameImage> RenderLoop::Run::render_frame(const PendingPose& p, double utc_s, const FrameAddress& to) {
+  loop_.frame_started_ns_.store(steady_ns());
+  try {
+    const std::string preset = view_.quality_preset.empty() ? "default" : view_.quality_preset;
+    // the preset's name was checked by check_view
+    FrameImage img = renderer_.render(view_request(p.pose, utc_s, view_, frame_), *quality_preset(preset));
+    loop_.frame_started_ns_.store(0);
+    return img;
+  } catch (const std::exception& e) {
+    loop_.frame_started_ns_.store(0);
+    loop_.notify_(to.reply_to, protocol::Error{protocol::ErrorCode::RenderFailed, e.what(), to.answers_seq});
+    return std::nullopt;
+  }
+}
+
+// Writes the frame to every sink the view asks for (service/frame_sinks.h), all under the
+// publish mutex, and fills in where it went. A file that cannot be written is reported to
+// `to` (SinkUnavailable); the frame is still announced.
+void RenderLoop::Run::publish_to_sinks(const FrameImage& img, const PendingPose& p, double utc_s,
+                                       protocol::FrameReady& ready, const FrameAddress& to) {
+  const std::lock_guard publishing(loop_.publish_mutex_);
+  if ((view_.sinks & protocol::sink::kShm) && loop_.shm_) {
+    ready.shm_slot = publish_to_shm(*loop_.shm_, img, shm_frame_meta(frame_, p.pose, utc_s, img), view_.shm_format);
+  }
+  if ((view_.sinks & protocol::sink::kFile) && !view_.file_dir.empty()) {
     try {
-      const std::string preset = view.quality_preset.empty() ? "default" : view.quality_preset;
-      img = renderer.render(view_request(p.pose, utc, view, frame), *quality_preset(preset));  // checked by check_view
+      ready.file_path = publish_to_file(img, frame_, view_, options_.out_dir);
     } catch (const std::exception& e) {
-      frame_started_ns_.store(0);
-      notify_(reply_to, protocol::Error{protocol::ErrorCode::RenderFailed, e.what(), answers_seq});
-      return;
+      loop_.notify_(to.reply_to, protocol::Error{protocol::ErrorCode::SinkUnavailable, e.what(), to.answers_seq});
     }
-    frame_started_ns_.store(0);
-    protocol::FrameReady ready;
-    ready.frame_number = frame;
-    ready.request_id = request_id;
-    ready.pose = p.pose;
-    ready.sim_time_s = p.pose.sim_time_s;
-    ready.width = view.width;
-    ready.height = view.height;
-    ready.render_ms = img.stats.render_ms;
-    publish(img, p, utc, ready, reply_to, answers_seq);
-    ready.latency_ms = std::chrono::duration<double, std::milli>(SteadyClock::now() - p.received).count();
-    count_frame();
-    notify_(reply_to, ready);
-    if (options_.exit_after_frames > 0 && frame >= static_cast<std::uint64_t>(options_.exit_after_frames))
-      stop_service_();
-  };
+  }
+  if ((view_.sinks & protocol::sink::kWindow) && window_) window_->present(img);
+}
 
-  auto apply_change = [&](StateChange& c) {
-    if (auto* v = std::get_if<protocol::SetView>(&c)) view = *v;
-    else if (auto* w = std::get_if<protocol::WeatherLayers>(&c)) renderer.set_weather(to_weather(*w));
-    else if (auto* t = std::get_if<protocol::SetTime>(&c)) clock.set(t->utc_unix_s);
-    else if (auto* tile = std::get_if<protocol::WeatherMapTile>(&c)) {
-      // Validated by the protocol; "now" is the time of the pose on screen.
-      const double now = pose ? clock.utc_for(pose->pose) : clock.base_utc_s();
-      try {
-        renderer.apply_tile(to_map_tile(*tile), now);
-      } catch (const std::exception& e) {  // the protocol validated it: a safety net only
-        notify_(std::nullopt, protocol::Error{protocol::ErrorCode::InvalidField, e.what(), 0});
-      }
-      mailbox_.tile_applied(*tile);
-    }
-  };
+// FrameReady to `to`, after the counters; the last frame --exit-after-frames allows stops
+// the service.
+void RenderLoop::Run::announce(protocol::FrameReady& ready, const PendingPose& p, const FrameAddress& to) {
+  ready.latency_ms = std::chrono::duration<double, std::milli>(SteadyClock::now() - p.received).count();
+  count_frame();
+  loop_.notify_(to.reply_to, ready);
+  if (options_.exit_after_frames > 0 && frame_ >= static_cast<std::uint64_t>(options_.exit_after_frames))
+    loop_.stop_service_();
+}
 
+void RenderLoop::Run::count_frame() {
+  loop_.frames_.store(frame_);
+  ++fps_window_frames_;
+  const auto now = SteadyClock::now();
+  const double span = std::chrono::duration<double>(now - fps_window_start_).count();
+  if (span >= 1.0) {
+    loop_.fps_.store(static_cast<double>(fps_window_frames_) / span);
+    fps_window_start_ = now;
+    fps_window_frames_ = 0;
+  }
+}
+
+void RenderLoop::run() {
+  Run run(*this);
   for (;;) {
-    MailboxBatch batch = mailbox_.take(std::chrono::milliseconds(window ? 30 : 200));
+    MailboxBatch batch = mailbox_.take(run.wait());
     if (batch.stop) break;  // no new frame once the service is stopping
-    if (window) {
-      window->poll();
-      if (window->close_requested()) stop_service_();
-    }
-    for (StateChange& c : batch.changes) apply_change(c);
-    if (batch.pose) {
-      // A pose without its own UTC gets one from the clock (SetTime + sim time since);
-      // checked like an explicit UTC, so e.g. sim_time_s 1e300 is refused, not drawn black.
-      const double utc = clock.utc_for(batch.pose->pose);
-      if (!utc_in_range(utc)) {
-        notify_(batch.pose->client_id,
-                protocol::Error{protocol::ErrorCode::InvalidField,
-                                "Pose.sim_time_s: the pose's UTC (last SetTime advanced by sim time since) is " +
-                                    std::to_string(utc) + " s, outside [" + std::to_string(protocol::kMinUtc_s) + ", " +
-                                    std::to_string(protocol::kMaxUtc_s) + ") (years 1900-2199); pose not rendered",
-                                batch.pose->seq});
-      } else {
-        clock.observe(batch.pose->pose);
-        pose = batch.pose;
-        render_and_publish(*pose, 0, std::nullopt, 0);
-      }
-    }
-    for (const PendingRender& r : batch.renders) {
-      if (!pose) {
-        notify_(r.client_id, protocol::Error{protocol::ErrorCode::UnexpectedMessage,
-                                             "RenderRequest before any Pose: nothing to render", r.seq});
-      } else {
-        PendingPose p = *pose;
-        p.received = r.received;
-        render_and_publish(p, r.request_id, r.client_id, r.seq);
-      }
-      mailbox_.render_finished(r.client_id);
-    }
+    run.poll_window();
+    for (StateChange& c : batch.changes) run.apply_change(c);
+    if (batch.pose) run.on_pose(*batch.pose);
+    for (const PendingRender& r : batch.renders) run.on_render_request(r);
   }
 }
 

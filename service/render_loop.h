@@ -42,6 +42,10 @@ class RenderLoop {
   double frame_in_progress_ms() const;
 
  private:
+  // One run(): the GL context, the renderer, the view, the clock and the frame counter,
+  // with the steps of a frame (render, publish to each sink, announce). render_loop.cpp.
+  class Run;
+
   const ServeOptions& options_;
   FrameMailbox& mailbox_;
   Notify notify_;
@@ -56,21 +60,5 @@ class RenderLoop {
 // The initial view of a service: sinks from the command line (shm if --shm, file if
 // --out-dir, window if --window), size and fov from --size/--fov.
 protocol::SetView initial_view(const ServeOptions& options);
-
-// UTC of each pose: its own when it carries one, else the last SetTime (or the command
-// line's --time) advanced by the simulation time since then.
-class SimClock {
- public:
-  void set(double utc_s);
-  // The pose's effective UTC, without changing the clock.
-  double utc_for(const protocol::Pose& p) const;
-  // Takes the pose as the clock's new reference (after it was found valid).
-  void observe(const protocol::Pose& p);
-  double base_utc_s() const { return base_utc_s_; }
-
- private:
-  double base_utc_s_ = 0.0;
-  std::optional<double> base_sim_s_;  // sim time of the first pose after the base was set
-};
 
 }  // namespace cloudsvc

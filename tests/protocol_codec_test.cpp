@@ -18,7 +18,9 @@
 #include "protocol/framing.h"
 #include "protocol/limits.h"
 #include "protocol/validate.h"
+#include "protocol/weather_conversion.h"
 #include "protocol/wire.h"
+#include "weather/map_tile.h"
 
 namespace cloudsvc::protocol {
 namespace {
@@ -539,6 +541,55 @@ TEST(ProtocolValidate, TileRanges) {
                  t.width = t.height = 1024, t.channels = tile_channel::kAll;
                  t.data.assign(1024u * 1024u * 4u, 0.5f);
                }));
+}
+
+// One rule set for tiles (weather/map_tile.h): validate() says what MapTile::problem() says
+// of the converted tile, in the message's field names; the protocol adds only its UTC range
+// and sizes beyond what a MapTile holds. Exact texts, as a client sees them.
+TEST(ProtocolValidate, TilesFollowTheWeatherModulesRules) {
+  EXPECT_EQ(kMaxTileSize, static_cast<std::uint32_t>(weather::kMaxTileTexels));
+  EXPECT_EQ(Welcome{}.limits.max_tile_size, kMaxTileSize);
+  const std::vector<std::function<void(WeatherMapTile&)>> edits{
+      [](WeatherMapTile& t) { t.lat_min_deg = -91; },
+      [](WeatherMapTile& t) { t.lat_max_deg = kNaN; },
+      [](WeatherMapTile& t) { t.lon_min_deg = 180, t.lon_max_deg = 190; },
+      [](WeatherMapTile& t) { t.lon_max_deg = 530.001; },
+      [](WeatherMapTile& t) { t.width = 1025; },
+      [](WeatherMapTile& t) { t.height = 0; },
+      [](WeatherMapTile& t) { t.channels = 0x30; },
+      [](WeatherMapTile& t) { t.channels = 0; },
+      [](WeatherMapTile& t) { t.valid_at_utc_s = -kInf; },
+      [](WeatherMapTile& t) { t.data.pop_back(); },
+      [](WeatherMapTile& t) { t.data[9] = -kNaN; },
+  };
+  for (std::size_t i = 0; i < edits.size(); ++i) {
+    SCOPED_TRACE(i);
+    WeatherMapTile t = sample_tile();
+    edits[i](t);
+    const std::string problem = to_map_tile(t).problem("WeatherMapTile.");
+    EXPECT_FALSE(problem.empty());
+    EXPECT_EQ(validate(t), problem);
+  }
+  auto tile = [](const std::function<void(WeatherMapTile&)>& edit) {
+    return with<WeatherMapTile>(sample_tile(), edit);
+  };
+  EXPECT_EQ(validate(tile([](WeatherMapTile& t) { t.width = 1025; })), "WeatherMapTile.width 1025 out of range [1, 1024]");
+  EXPECT_EQ(validate(tile([](WeatherMapTile& t) { t.height = 0xffffffffu; })),
+            "WeatherMapTile.height 4294967295 out of range [1, 1024]");
+  EXPECT_EQ(validate(tile([](WeatherMapTile& t) { t.channels = 0x11; })), "WeatherMapTile.channels has unknown bits 0x10");
+  EXPECT_EQ(validate(tile([](WeatherMapTile& t) { t.channels = 0; })), "WeatherMapTile.channels is empty");
+  EXPECT_EQ(validate(tile([](WeatherMapTile& t) { t.lon_min_deg = -180.5; })),
+            "WeatherMapTile.lon_min_deg -180.5 out of range [-180, 180)");
+  EXPECT_EQ(validate(tile([](WeatherMapTile& t) { t.lat_max_deg = 45; })),
+            "WeatherMapTile.lat_max_deg 45 out of range (45, 90]");
+  EXPECT_EQ(validate(tile([](WeatherMapTile& t) { t.valid_at_utc_s = kNaN; })),
+            "WeatherMapTile.valid_at_utc_s is nan (must be finite)");
+  EXPECT_EQ(validate(tile([](WeatherMapTile& t) { t.valid_at_utc_s = 1.05e10; })),
+            "WeatherMapTile.valid_at_utc_s 1.05e+10 out of range [-2208988800, 7258118400)");
+  EXPECT_EQ(validate(tile([](WeatherMapTile& t) { t.data.push_back(0.5f); })),
+            "WeatherMapTile.data has 31 values, expected 30 (width 5 x height 3 x 2 channels)");
+  EXPECT_EQ(validate(tile([](WeatherMapTile& t) { t.data[12] = -0.25f; })),
+            "WeatherMapTile.data[12] -0.25 out of range [0, 1] (col 1, row 1, coverage)");
 }
 
 TEST(ProtocolValidate, OtherMessages) {

@@ -4,7 +4,10 @@
 
 #include <cmath>
 #include <limits>
+#include <span>
+#include <vector>
 
+#include "weather/map_tile.h"
 #include "weather/weather_timeline.h"
 #include "weather_tile_support.h"
 
@@ -45,19 +48,68 @@ TEST(WeatherTiles, CrossTheAntimeridian) {
   EXPECT_NEAR(at(m, 0, 160), 0.5f, 1e-6);
 }
 
+// One line naming the field (weather/map_tile.h; the protocol passes "WeatherMapTile.").
 TEST(WeatherTiles, ProblemsAreNamed) {
   EXPECT_TRUE(coverage_tile(40, 0, 50, 20, 0.5f).problem().empty());
-  EXPECT_NE(coverage_tile(50, 0, 40, 20, 0.5f).problem(), "");
-  EXPECT_NE(coverage_tile(40, -190, 50, 20, 0.5f).problem(), "");
+  EXPECT_EQ(coverage_tile(50, 0, 40, 20, 0.5f).problem(), "MapTile.lat_max_deg 40 out of range (50, 90]");
+  EXPECT_EQ(coverage_tile(50, 0, 40, 20, 0.5f).problem("WeatherMapTile."),
+            "WeatherMapTile.lat_max_deg 40 out of range (50, 90]");
+  EXPECT_EQ(coverage_tile(40, -190, 50, 20, 0.5f).problem(), "MapTile.lon_min_deg -190 out of range [-180, 180)");
+  EXPECT_EQ(coverage_tile(40, 170, 50, 530.5, 0.5f).problem(), "MapTile.lon_max_deg 530.5 out of range (170, 530]");
+  EXPECT_EQ(coverage_tile(std::nan(""), 0, 50, 20, 0.5f).problem(), "MapTile.lat_min_deg is nan (must be finite)");
   MapTile t = coverage_tile(40, 0, 50, 20, 0.5f);
   t.data[3] = std::nanf("");
-  EXPECT_NE(t.problem().find("finite"), std::string::npos);
+  EXPECT_EQ(t.problem(), "MapTile.data[3] nan out of range [0, 1] (col 3, row 0, coverage)");
   t = coverage_tile(40, 0, 50, 20, 0.5f);
   t.data.pop_back();
-  EXPECT_NE(t.problem().find("expected"), std::string::npos);
+  EXPECT_EQ(t.problem(), "MapTile.data has 15 values, expected 16 (width 4 x height 4 x 1 channels)");
   t = coverage_tile(40, 0, 50, 20, 0.5f);
   t.channels = 0;
-  EXPECT_NE(t.problem(), "");
+  EXPECT_EQ(t.problem(), "MapTile.channels is empty");
+  t.channels = 0x11;
+  EXPECT_EQ(t.problem(), "MapTile.channels has unknown bits 0x10");
+  t = coverage_tile(40, 0, 50, 20, 0.5f);
+  t.valid_at_utc_s = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(t.problem(), "MapTile.valid_at_utc_s is inf (must be finite)");
+  // Several channels: the value's channel is named by its bit (0b101: coverage, density).
+  t = coverage_tile(40, 0, 50, 20, 0.5f, 0.0, 2, 1);
+  t.channels = 0b101;
+  t.data = {0.5f, 0.5f, 0.5f, 1.25f};
+  EXPECT_EQ(t.problem(), "MapTile.data[3] 1.25 out of range [0, 1] (col 1, row 0, density)");
+}
+
+// The one size limit of a tile, whoever sends it (the protocol announces the same number).
+TEST(WeatherTiles, AreAtMostKMaxTileTexelsASide) {
+  EXPECT_EQ(kMaxTileTexels, 1024);
+  EXPECT_TRUE(coverage_tile(40, 0, 50, 20, 0.5f, 0.0, kMaxTileTexels, 1).problem().empty());
+  EXPECT_TRUE(coverage_tile(40, 0, 50, 20, 0.5f, 0.0, 1, kMaxTileTexels).problem().empty());
+  EXPECT_EQ(coverage_tile(40, 0, 50, 20, 0.5f, 0.0, kMaxTileTexels + 1, 1).problem(),
+            "MapTile.width 1025 out of range [1, 1024]");
+  EXPECT_EQ(coverage_tile(40, 0, 50, 20, 0.5f, 0.0, 1, kMaxTileTexels + 1).problem(),
+            "MapTile.height 1025 out of range [1, 1024]");
+  EXPECT_EQ(coverage_tile(40, 0, 50, 20, 0.5f, 0.0, 0, 4).problem(), "MapTile.width 0 out of range [1, 1024]");
+  MapTile t = coverage_tile(40, 0, 50, 20, 0.5f);
+  t.height = -3;
+  EXPECT_EQ(t.problem(), "MapTile.height -3 out of range [1, 1024]");
+}
+
+// problem() is the header's rules, then the values'; the values may be held elsewhere.
+TEST(WeatherTiles, HeaderAndDataRules) {
+  MapTile t = coverage_tile(40, 0, 50, 20, 0.5f, 0.0, 2, 2);
+  const std::vector<float> values{0.0f, 1.0f, 0.25f, -0.5f};
+  t.data.clear();
+  const MapTileHeader h = t.header();
+  EXPECT_EQ(tile_header_problem(h, "T."), "");
+  EXPECT_EQ(tile_data_problem(h, values, "T."), "T.data[3] -0.5 out of range [0, 1] (col 1, row 1, coverage)");
+  EXPECT_EQ(tile_data_problem(h, std::span(values).first(3), "T."),
+            "T.data has 3 values, expected 4 (width 2 x height 2 x 1 channels)");
+  EXPECT_EQ(t.problem("T."), "T.data has 0 values, expected 4 (width 2 x height 2 x 1 channels)");
+  // Sizes beyond int, as a message may send them, are named as sent.
+  MapTileHeader wide = h;
+  wide.width = 4294967295;
+  EXPECT_EQ(tile_header_problem(wide, "T."), "T.width 4294967295 out of range [1, 1024]");
+  t.lat_max_deg = 30;  // the header's problem comes first
+  EXPECT_EQ(t.problem("T."), "T.lat_max_deg 30 out of range (40, 90]");
 }
 
 // A forecast valid in the future blends in linearly up to its valid-at time.

@@ -7,22 +7,6 @@
 
 namespace cloudsvc::weather {
 
-std::string MapTile::problem() const {
-  if (!(std::isfinite(lat_min_deg) && std::isfinite(lat_max_deg) && std::isfinite(lon_min_deg) && std::isfinite(lon_max_deg)))
-    return "tile bounds are not finite";
-  if (lat_min_deg < -90.0 || lat_max_deg > 90.0 || lat_min_deg >= lat_max_deg) return "tile latitudes must satisfy -90 <= lat_min < lat_max <= 90";
-  if (lon_min_deg < -180.0 || lon_min_deg >= 180.0 || lon_max_deg <= lon_min_deg || lon_max_deg > lon_min_deg + 360.0)
-    return "tile longitudes must satisfy -180 <= lon_min < 180 and lon_min < lon_max <= lon_min + 360";
-  if (width < 1 || height < 1 || width > 4096 || height > 4096) return "tile size must be 1..4096 texels per side";
-  if (channels == 0 || channels > 0x0f) return "tile channels must be a non-empty subset of bits 0-3";
-  const std::size_t n = static_cast<std::size_t>(width) * height * static_cast<std::size_t>(std::popcount(channels));
-  if (data.size() != n) return "tile data has " + std::to_string(data.size()) + " values, expected " + std::to_string(n);
-  for (float v : data)
-    if (!std::isfinite(v) || v < 0.0f || v > 1.0f) return "tile values must be finite and in [0, 1]";
-  if (!std::isfinite(valid_at_utc_s)) return "tile valid-at time is not finite";
-  return {};
-}
-
 void apply_tile(WeatherMap& map, const MapTile& t) {
   if (map.width <= 0 || map.height <= 0) return;
   const int nch = std::popcount(t.channels);

@@ -2,7 +2,7 @@
 // keyframes, each a full WeatherMap valid at a UTC time; the renderer blends the two
 // keyframes around the current time, so a new forecast fades in instead of popping.
 //
-// A tile (a georeferenced patch of some channels) updates the keyframe at its valid-at
+// A tile (a georeferenced patch of some channels, weather/map_tile.h) updates the keyframe at its valid-at
 // time; a missing keyframe is created as a copy of the state valid then. A tile valid
 // at or before "now" would pop, so it goes into a keyframe at now + transition instead.
 // Any time may be asked for, in any order (a simulator may set its clock back or replay
@@ -14,27 +14,12 @@
 
 #include <cstdint>
 #include <map>
-#include <string>
 #include <vector>
 
+#include "weather/map_tile.h"
 #include "weather/weather_map.h"
 
 namespace cloudsvc::weather {
-
-// Channel bits of a tile: bit 0 coverage (R), 1 cloud type (G; "vertical development" in
-// the protocol), 2 density (B), 3 precipitation (A). Values are interleaved per texel in
-// ascending bit order.
-struct MapTile {
-  double lat_min_deg = 0.0, lon_min_deg = 0.0;  // south-west corner
-  double lat_max_deg = 0.0, lon_max_deg = 0.0;  // north-east corner; lon_max may exceed 180 (wraps)
-  int width = 0, height = 0;                    // texels; row 0 at the south
-  std::uint8_t channels = 0;
-  double valid_at_utc_s = 0.0;
-  std::vector<float> data;  // height * width * popcount(channels)
-
-  // One line describing what is wrong, empty when the tile is usable.
-  std::string problem() const;
-};
 
 // Writes the tile's channels into `map` at every map texel whose centre lies inside the
 // tile (bilinear resampling of the tile; seamless across the antimeridian).

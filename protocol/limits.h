@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "weather/cloud_layer.h"
 #include "weather/map_tile.h"
 
 namespace cloudsvc::protocol {
@@ -16,8 +17,9 @@ namespace cloudsvc::protocol {
 inline constexpr std::uint32_t kMaxPayloadBytes = 64u * 1024u * 1024u;
 // Largest SetView width or height, pixels.
 inline constexpr std::uint32_t kMaxImageSize = 8192;
-// Most cloud layers in WeatherLayers.
-inline constexpr std::size_t kMaxLayers = 4;
+// Most cloud layers in WeatherLayers: every layer a valid weather may have
+// (weather::kMaxCloudLayers, which the renderer draws too).
+inline constexpr std::size_t kMaxLayers = weather::kMaxCloudLayers;
 // Largest WeatherMapTile width or height, texels: the weather module's limit, the one rule
 // set for tiles (weather/map_tile.h), 1024. 1024 x 1024 x 4 channels x 4 bytes is 16 MiB,
 // well inside kMaxPayloadBytes; larger areas are sent as several tiles.

@@ -54,7 +54,7 @@ FrameContext make_frame_context(const ViewRequest& view, const weather::Weather&
     const weather::CloudTypeTraits& tr = weather::cloud_type_traits(lf.layer.type);
     lf.base_period_m = tr.noise_scale_m;
     lf.detail_period_m = tr.noise_scale_m / 8.0;
-    // Wind: the field is sampled at rot * x (renderer/wind_drift.h).
+    // Wind: the field is sampled at rot * x (weather/wind_drift.h).
     lf.field_rotation = wind_rotation(lf.layer.wind, anchor, view.unix_time_s);
     // Noise space: world positions with altitude scaled by k along the ellipsoid normal,
     // a fixed map of the world (no camera dependence); here the camera's point of it.

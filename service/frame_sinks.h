@@ -6,7 +6,7 @@
 #include <string>
 
 #include "protocol/messages.h"
-#include "renderer/render_types.h"
+#include "renderer/api/frame_image.h"
 #include "service/shm_frame_writer.h"
 
 namespace cloudsvc {

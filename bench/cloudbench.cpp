@@ -1,5 +1,5 @@
 // cloudbench: error vs cost of the ray-march knobs against the CPU reference (issue
-// "Accuracy", part 2; docs/ACCURACY.md). For each scene of tests/accuracy_scenes.h (the eight
+// "Accuracy", part 2; docs/ACCURACY.md). For each scene of tests/fixtures/accuracy_scenes.h (the eight
 // "core" ones) it renders the CPU reference once (cached as EXR under OUT/ref/, keyed by
 // scene and size), then for each march configuration renders a warm-up frame
 // (frame_index 0, whose error is measured) and N timed frames (frame_index 1..N, median
@@ -43,7 +43,6 @@
 #include <string>
 #include <vector>
 
-#include "../tests/accuracy_scenes.h"
 #include "bench/bench_util.h"
 #include "bench/cost_command.h"
 #include "bench/sequence_command.h"
@@ -54,6 +53,7 @@
 #include "renderer/quality_presets.h"
 #include "renderer/reference/image_metrics.h"
 #include "renderer/reference/reference_renderer.h"
+#include "tests/fixtures/accuracy_scenes.h"
 #include "weather/presets.h"
 
 namespace fs = std::filesystem;

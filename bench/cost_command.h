@@ -1,5 +1,5 @@
 // `cloudbench --cost`: the cost half of the run-time-vs-error benchmark, without the CPU
-// reference: for each of the eight benchmark scenes (tests/accuracy_scenes.h) and each
+// reference: for each of the eight benchmark scenes (tests/fixtures/accuracy_scenes.h) and each
 // quality preset named, the view held still, a first full frame, then N timed frames
 // (temporal reuse amortised, as in cloudbench's cost column); median render_ms and the
 // median GPU time of each pass. Prints a Markdown table and the sum-of-medians ratio of
@@ -24,11 +24,11 @@
 #include <string>
 #include <vector>
 
-#include "../tests/accuracy_scenes.h"
 #include "bench/bench_util.h"
 #include "renderer/cloud_renderer.h"
 #include "renderer/gl/egl_context.h"
 #include "renderer/quality_presets.h"
+#include "tests/fixtures/accuracy_scenes.h"
 #include "weather/presets.h"
 
 namespace cloudsvc::cost_command {

@@ -23,12 +23,12 @@
 #include <vector>
 
 #include "bench/bench_util.h"
-#include "bench/flight_sequence.h"
 #include "geodesy/utc_time.h"
 #include "renderer/cloud_renderer.h"
 #include "renderer/gl/egl_context.h"
 #include "renderer/quality_presets.h"
 #include "renderer/reference/image_metrics.h"
+#include "tests/fixtures/flight_sequence.h"
 #include "weather/presets.h"
 
 namespace cloudsvc::sequence_command {
@@ -83,7 +83,7 @@ inline int run(int argc, char** argv) {
   csv << "flight,config,frame,psnr_db,rmse,render_ms,marched_fraction,history_used\n";
   std::vector<Summary> summaries;
   for (const Flight& fl : flights()) {
-    bench::FlightSequence s;
+    fixtures::FlightSequence s;
     s.start.position = {47.45, 8.56, fl.alt_m};
     s.start.attitude = {fl.heading_deg, fl.pitch_deg, 0.0};
     s.start.unix_time_s = *geo::parse_utc_iso8601("2026-06-21T11:30:00Z");
@@ -91,7 +91,7 @@ inline int run(int argc, char** argv) {
     s.start.height = h;
     s.start.reset_history = true;
     s.frames = frames;
-    const std::vector<ViewRequest> views = bench::flight_views(s);
+    const std::vector<ViewRequest> views = fixtures::flight_views(s);
     CloudRenderer ref_renderer;
     ref_renderer.set_weather(*weather::preset(fl.preset));
     std::vector<FrameImage> refs;

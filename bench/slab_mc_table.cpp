@@ -9,7 +9,7 @@
 //   relative errors (model - MC) / MC.
 // Radiances are L / E_sun in sr^-1 (E_sun normal to the beam); droplet diameter 14 um.
 //
-//   build/bin/slab_mc_table [--scale 1] [--threads 2] [--seed 1]
+//   build/bin/slab_mc_table [--scale 1] [--threads 0] [--seed 1]   (--threads 0: all cores)
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "common/parallel_for.h"
 #include "renderer/model/droplet_optics.h"
 #include "renderer/model/phase_function.h"
 #include "renderer/model/slab_monte_carlo.h"
@@ -71,12 +72,13 @@ void print_table(const std::vector<Row>& rows, bool top) {
 int main(int argc, char** argv) {
   CLI::App app{"Renderer light model vs Monte Carlo in a homogeneous conservative cloud slab (Markdown tables)"};
   double scale = 1.0;
-  int threads = 2;
+  int threads = cloudsvc::kAllThreads;
   std::uint64_t seed = 1;
   std::vector<double> taus = {1, 2, 4, 8, 16, 32, 64, 100};
   std::vector<double> suns = {0, 30, 60, 80};
   app.add_option("--scale", scale, "photon count multiplier (1: a few minutes on 2 cores)")->check(CLI::Range(0.001, 1000.0));
-  app.add_option("--threads", threads, "worker threads")->check(CLI::Range(1, 256));
+  app.add_option("--threads", threads, "worker threads (0: all cores; the tables do not depend on it)")
+      ->check(CLI::Range(0, 256));
   app.add_option("--seed", seed, "random seed");
   app.add_option("--tau", taus, "optical depths")->check(CLI::Range(0.01, 1000.0));
   app.add_option("--sun", suns, "sun zenith angles, degrees")->check(CLI::Range(0.0, 85.0));
@@ -169,7 +171,7 @@ int main(int argc, char** argv) {
                 top ? "Reflected" : "Transmitted", std::exp(sum / std::max(n, 1)), std::exp(worst), n);
   }
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::printf("\nMonte Carlo %.0f s, total %.0f s (%d threads, scale %g, seed %llu).\n", mc_seconds, total, threads,
-              scale, static_cast<unsigned long long>(seed));
+  std::printf("\nMonte Carlo %.0f s, total %.0f s (%d threads, scale %g, seed %llu).\n", mc_seconds, total,
+              cloudsvc::resolve_threads(threads), scale, static_cast<unsigned long long>(seed));
   return 0;
 }

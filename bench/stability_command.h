@@ -20,9 +20,11 @@
 #include <vector>
 
 #include "bench/bench_util.h"
-#include "bench/stability_sweep.h"
+#include "geodesy/utc_time.h"
 #include "renderer/gl/egl_context.h"
 #include "renderer/quality_presets.h"
+#include "tests/fixtures/stability_sweep.h"
+#include "weather/presets.h"
 
 namespace cloudsvc::stability_command {
 

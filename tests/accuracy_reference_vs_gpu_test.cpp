@@ -25,7 +25,6 @@
 #include <string>
 #include <vector>
 
-#include "accuracy_scenes.h"
 #include "render_test_support.h"
 #include "renderer/reference/image_metrics.h"
 #include "renderer/reference/reference_atmosphere.h"
@@ -34,6 +33,7 @@
 #include "renderer/quality_presets.h"
 #include "renderer/frame_uniforms_packing.h"
 #include "weather/wind_drift.h"
+#include "tests/fixtures/accuracy_scenes.h"
 
 namespace cloudsvc::test {
 namespace {
@@ -43,7 +43,7 @@ constexpr int kWidth = 64, kHeight = 36;
 constexpr int kSamples = 3;  // rays per pixel along each axis, reference and GPU alike
 constexpr int kPresetFrames = 17;  // the still view's frames of the preset check (one 16-frame cycle + 1)
 
-// PSNR floors per scene of tests/accuracy_scenes.h (same order): the default preset and
+// PSNR floors per scene of tests/fixtures/accuracy_scenes.h (same order): the default preset and
 // the fine GPU march (fine_quality below); measured value minus ~3 dB.
 struct Scene {
   accuracy::AccuracyScene s;

@@ -290,7 +290,8 @@ TEST(SlabMc, DetectorImportanceSamplingIsUnbiased) {
   }
 }
 
-// Results depend on the seed only, not on the number of threads.
+// Results depend on the seed only, not on the number of threads: bit-identical for 1, 2
+// and 5 threads and for all cores (threads = 0).
 TEST(SlabMc, DeterministicForAnyThreadCount) {
   const SlabSpec slab = slab_from_optical_depth(4.0, 30.0, kDropletUm);
   SlabMcOptions o;
@@ -298,11 +299,18 @@ TEST(SlabMc, DeterministicForAnyThreadCount) {
   o.views = {{0, 0}};
   o.threads = 1;
   const SlabMcResult a = run_slab_monte_carlo(slab, o);
-  o.threads = 2;
-  const SlabMcResult b = run_slab_monte_carlo(slab, o);
-  EXPECT_EQ(a.reflected.mean, b.reflected.mean);
-  EXPECT_EQ(a.radiance_top[0].mean, b.radiance_top[0].mean);
-  EXPECT_EQ(a.radiance_bottom[0].std_error, b.radiance_bottom[0].std_error);
+  for (int threads : {2, 5, 0}) {
+    o.threads = threads;
+    const SlabMcResult b = run_slab_monte_carlo(slab, o);
+    EXPECT_EQ(a.reflected.mean, b.reflected.mean) << threads;
+    EXPECT_EQ(a.reflected.std_error, b.reflected.std_error) << threads;
+    EXPECT_EQ(a.transmitted.mean, b.transmitted.mean) << threads;
+    EXPECT_EQ(a.radiance_top[0].mean, b.radiance_top[0].mean) << threads;
+    EXPECT_EQ(a.radiance_bottom[0].mean, b.radiance_bottom[0].mean) << threads;
+    EXPECT_EQ(a.radiance_bottom[0].std_error, b.radiance_bottom[0].std_error) << threads;
+    EXPECT_EQ(a.mean_collisions, b.mean_collisions) << threads;
+  }
+  o.threads = 1;
   o.seed = 2;
   const SlabMcResult c = run_slab_monte_carlo(slab, o);
   EXPECT_NE(a.radiance_top[0].mean, c.radiance_top[0].mean);

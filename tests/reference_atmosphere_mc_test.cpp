@@ -3,7 +3,8 @@
 // (tests/accuracy_atmosphere_mc_test.cpp): phase sampling, majorant bounds, ratio-tracking
 // transmittance against the integrated optical depth, a white furnace (no absorption,
 // albedo 1, isotropic light at the top: radiance 1 everywhere), single scattering against
-// the deterministic integral of reference_atmosphere.h, and the optically thin limit.
+// the deterministic integral of reference_atmosphere.h, independence of the thread count,
+// and the optically thin limit.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -133,6 +134,30 @@ TEST(AtmosphereMonteCarlo, SingleScatteringMatchesTheDeterministicIntegral) {
       }
     }
   }
+}
+
+// An estimate depends on the seed, not on the thread count: bit-identical for 1, 2 and 5
+// threads and for all cores (threads = 0); 1000 paths = 7 full chunks and a partial one.
+TEST(AtmosphereMonteCarlo, IdenticalForAnyThreadCount) {
+  const mc::McAtmosphere a;
+  mc::McSettings s;
+  s.paths = 1000;
+  const glm::dvec3 sun = direction(180, 10), d = direction(30, 15);
+  s.threads = 1;
+  const mc::McEstimate one = mc::sky_radiance(a, 500.0, d, sun, 1, s);
+  EXPECT_EQ(one.paths, 1000);
+  for (int threads : {2, 5, 0}) {
+    s.threads = threads;
+    const mc::McEstimate e = mc::sky_radiance(a, 500.0, d, sun, 1, s);
+    EXPECT_EQ(e.total.mean, one.total.mean) << threads;
+    EXPECT_EQ(e.total.std_error, one.total.std_error) << threads;
+    EXPECT_EQ(e.single.mean, one.single.mean) << threads;
+    EXPECT_EQ(e.multiple.mean, one.multiple.mean) << threads;
+    EXPECT_EQ(e.multiple.std_error, one.multiple.std_error) << threads;
+  }
+  s.threads = 1;
+  s.seed = 2;
+  EXPECT_NE(mc::sky_radiance(a, 500.0, d, sun, 1, s).total.mean, one.total.mean);
 }
 
 // Optically thin limit, black ground: multiple / single scattering shrinks in proportion

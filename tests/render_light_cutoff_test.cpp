@@ -10,8 +10,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "../tests/accuracy_scenes.h"
 #include "render_test_support.h"
+#include "tests/fixtures/accuracy_scenes.h"
 
 namespace cloudsvc::test {
 namespace {

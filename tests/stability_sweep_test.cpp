@@ -7,9 +7,11 @@
 #include <cmath>
 #include <cstdio>
 
-#include "bench/stability_sweep.h"
+#include "geodesy/solar_position.h"
+#include "geodesy/utc_time.h"
 #include "render_test_support.h"
 #include "renderer/quality_presets.h"
+#include "tests/fixtures/stability_sweep.h"
 
 namespace cloudsvc::test {
 namespace {

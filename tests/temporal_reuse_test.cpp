@@ -5,10 +5,10 @@
 
 #include <cstdio>
 
-#include "bench/flight_sequence.h"
 #include "render_test_support.h"
 #include "renderer/quality_presets.h"
 #include "renderer/reference/image_metrics.h"
+#include "tests/fixtures/flight_sequence.h"
 
 namespace cloudsvc::test {
 namespace {
@@ -149,12 +149,12 @@ TEST(TemporalReuse, FlyingSequenceStaysCloseToTheFullMarch) {
   CloudRenderer default_renderer;  // the default preset: 1/4 px while the clouds move fast
   default_renderer.set_weather(*weather::preset("broken-cumulus"));
   const RenderQuality preset = *quality_preset("default");
-  bench::FlightSequence s;
+  fixtures::FlightSequence s;
   s.start = make_view(47.45, 8.56, 1800.0, 250.0, 0.0, "2026-06-21T11:30:00Z", 160, 90);
   s.start.reset_history = true;
   s.frames = 24;
   double sum_t = 0, sum_f = 0, sum_d = 0, worst_gap = 0, worst_t = 1e9, worst_d = 1e9, marched = 0;
-  for (const ViewRequest& v : bench::flight_views(s)) {
+  for (const ViewRequest& v : fixtures::flight_views(s)) {
     const FrameImage t = r.render(v, with_stride(4));
     const FrameImage d = default_renderer.render(v, preset);
     const FrameImage ref = full_march(full_renderer, v, high_quality());

@@ -22,10 +22,10 @@
 #include <array>
 #include <cmath>
 
+#include "common/parallel_for.h"
 #include "weather/cellular_noise.h"
 #include "weather/gradient_noise.h"
 #include "weather/noise_hash.h"
-#include "weather/parallel_for.h"
 
 namespace cloudsvc::weather {
 namespace {
@@ -101,13 +101,13 @@ std::vector<std::uint8_t> quantize_stretched(const std::vector<float>& v) {
 
 // Fills a size^3 float volume row by row: row_fn(uy, uz, out) writes the `size` texels of
 // the row at period coordinates ((x + 0.5) / size, uy, uz). z-slices are spread over
-// threads; row_fn must be safe to call concurrently.
+// all cores; row_fn must be safe to call concurrently.
 template <typename RowFn>
 std::vector<float> fill_volume(int size, const RowFn& row_fn) {
   const std::size_t n = static_cast<std::size_t>(size);
   std::vector<float> v(n * n * n);
   const float inv = 1.0f / static_cast<float>(size);
-  detail::parallel_for_rows(size, detail::generation_threads(), [&](int z) {
+  parallel_for(size, kAllThreads, [&](int z) {
     const float uz = (static_cast<float>(z) + 0.5f) * inv;
     for (int y = 0; y < size; ++y) {
       const float uy = (static_cast<float>(y) + 0.5f) * inv;

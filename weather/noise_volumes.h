@@ -18,7 +18,8 @@ struct NoiseVolume {
 NoiseVolume make_base_shape_noise(int size = 128, std::uint32_t seed = 1);
 // Detail erosion: three octaves of inverted Worley noise, one channel. Tiles.
 // Both volumes are stretched so their 0.1 % / 99.9 % quantiles map to 0 / 255; formulas,
-// histograms and timings are in docs/WEATHER.md. Generation uses 2 threads.
+// histograms and timings are in docs/WEATHER.md. Generation uses all cores
+// (common/parallel_for.h); the volumes do not depend on the thread count.
 NoiseVolume make_detail_noise(int size = 32, std::uint32_t seed = 2);
 
 }  // namespace cloudsvc::weather

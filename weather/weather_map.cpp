@@ -14,9 +14,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/parallel_for.h"
 #include "weather/gradient_noise.h"
 #include "weather/noise_hash.h"
-#include "weather/parallel_for.h"
 
 namespace cloudsvc::weather {
 namespace {
@@ -57,7 +57,7 @@ WeatherMap generate_procedural_map(std::uint32_t seed, int width, int height,
     sin_lon[i] = std::sin(lon);
   }
 
-  detail::parallel_for_rows(height, detail::generation_threads(), [&](int j) {
+  parallel_for(height, kAllThreads, [&](int j) {
     const double lat = (-90.0 + (j + 0.5) * 180.0 / height) * kPi / 180.0;
     const double r_xy = radius_cells * std::cos(lat);
     const double z = radius_cells * std::sin(lat);

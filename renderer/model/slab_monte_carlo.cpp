@@ -2,16 +2,15 @@
 #include "renderer/model/slab_monte_carlo.h"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
-#include <thread>
 
 #include <glm/geometric.hpp>
 
+#include "common/parallel_for.h"
 #include "renderer/model/droplet_optics.h"
 
 namespace cloudsvc::model {
@@ -198,7 +197,7 @@ void run_chunk(const Context& c, std::uint64_t seed, int chunk, std::uint64_t ph
   const int n = c.layout.size();
   out.sum.assign(n, 0.0);
   out.sum_sq.assign(n, 0.0);
-  Pcg32 rng(splitmix64(seed ^ splitmix64(static_cast<std::uint64_t>(chunk) + 1)), static_cast<std::uint64_t>(chunk));
+  Pcg32 rng = chunk_stream(seed, static_cast<std::uint64_t>(chunk));
   std::vector<double> x(n);
   for (std::uint64_t i = 0; i < photons; ++i) {
     std::fill(x.begin(), x.end(), 0.0);
@@ -280,6 +279,10 @@ std::uint32_t Pcg32::next_u32() {
   return (xorshifted >> rot) | (xorshifted << ((32u - rot) & 31u));
 }
 
+Pcg32 chunk_stream(std::uint64_t seed, std::uint64_t chunk) {
+  return Pcg32(splitmix64(seed ^ splitmix64(chunk + 1)), chunk);
+}
+
 double Pcg32::uniform() {
   const std::uint64_t hi = next_u32() >> 5;  // 27 bits
   const std::uint64_t lo = next_u32() >> 6;  // 26 bits
@@ -336,18 +339,10 @@ SlabMcResult run_slab_monte_carlo(const SlabSpec& slab, const SlabMcOptions& opt
 
   const int chunks = std::max(1, options.chunks);
   std::vector<ChunkSums> sums(chunks);
-  std::atomic<int> next{0};
-  auto worker = [&] {
-    for (int k = next.fetch_add(1); k < chunks; k = next.fetch_add(1)) {
-      const std::uint64_t n = options.photons / chunks + (static_cast<std::uint64_t>(k) < options.photons % chunks ? 1 : 0);
-      run_chunk(c, options.seed, k, n, sums[k]);
-    }
-  };
-  const int nthreads = std::clamp(options.threads, 1, chunks);
-  std::vector<std::thread> pool;
-  for (int i = 1; i < nthreads; ++i) pool.emplace_back(worker);
-  worker();
-  for (std::thread& t : pool) t.join();
+  parallel_for(chunks, options.threads, [&](int k) {
+    const std::uint64_t n = options.photons / chunks + (static_cast<std::uint64_t>(k) < options.photons % chunks ? 1 : 0);
+    run_chunk(c, options.seed, k, n, sums[k]);
+  });
 
   // Merge in chunk order (deterministic summation).
   const int n_est = c.layout.size();

@@ -65,8 +65,8 @@ glm::dvec3 scatter_direction(const glm::dvec3& d, double cos_t, double phi);
 struct SlabMcOptions {
   std::uint64_t photons = 100000;
   std::uint64_t seed = 1;
-  int threads = 2;
-  int chunks = 64;                          // work units, each with its own PCG32 stream
+  int threads = 0;                          // worker threads, 0 = all cores (common/parallel_for.h)
+  int chunks = 64;                          // work units, each with its own PCG32 stream (chunk_stream)
   std::uint64_t max_collisions = 10000000;  // per history (photon and its copies); beyond it: lost
   // Next-event contributions attenuated by more than this optical depth along the view
   // are skipped: bias < e^-40 · max(p)/mu ~ 1e-14 sr^-1, saves most of the cost deep in
@@ -130,6 +130,12 @@ class Pcg32 {
   std::uint64_t state_ = 0;
   std::uint64_t inc_ = 0;
 };
+
+// The PCG32 stream of work chunk `chunk` of a Monte Carlo run with seed `seed`: stream
+// (increment) `chunk`, state seed decorrelated by SplitMix64 (Steele, Lea & Flood 2014) of
+// seed and chunk. A run split into fixed chunks, each drawing from its own stream, and
+// merged in chunk order gives the same result on any number of threads.
+Pcg32 chunk_stream(std::uint64_t seed, std::uint64_t chunk);
 
 // Cosine of the scattering angle sampled from the HG lobe (analytic inverse CDF).
 double sample_hg_cos_theta(double g, double u);

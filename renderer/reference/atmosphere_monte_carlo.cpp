@@ -7,8 +7,10 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
-#include <thread>
+#include <stdexcept>
 #include <vector>
+
+#include "common/parallel_for.h"
 
 namespace cloudsvc::reference::mc {
 
@@ -341,18 +343,21 @@ double sun_transmittance_ratio_tracking(const McAtmosphere& a, int c, double alt
 McEstimate sky_radiance(const McAtmosphere& atmosphere, double camera_alt_m, const glm::dvec3& view,
                         const glm::dvec3& sun, int channel, const McSettings& settings) {
   const auto start = std::chrono::steady_clock::now();
-  const int threads = std::max(1, settings.threads);
-  std::vector<Sums> sums(static_cast<std::size_t>(threads));
+  const long long paths = std::max(0LL, settings.paths);
+  const long long chunks = (paths + kPathsPerChunk - 1) / kPathsPerChunk;
+  if (chunks > std::numeric_limits<int>::max()) throw std::invalid_argument("sky_radiance: too many paths");
+  std::vector<Sums> sums(static_cast<std::size_t>(chunks));
   const glm::dvec3 p0(0.0, 0.0, atmo::radius_for_altitude(camera_alt_m));
   const glm::dvec3 d = glm::normalize(view), sn = glm::normalize(sun);
-  const auto work = [&](int ti) {
-    Tracer tr{atmosphere, channel, sn, settings, {},
-              model::Pcg32(settings.seed * 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(channel),
-                           static_cast<std::uint64_t>(ti) + 1)};
+  // one seed per (settings.seed, channel), one stream per chunk of it
+  const std::uint64_t seed = settings.seed * 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(channel);
+  parallel_for(static_cast<int>(chunks), settings.threads, [&](int k) {
+    Tracer tr{atmosphere, channel, sn, settings, {}, model::chunk_stream(seed, static_cast<std::uint64_t>(k))};
     for (int b = 0; b < kBands; ++b)
       tr.majorants[static_cast<std::size_t>(b)] = band_majorant(atmosphere, channel, b);
-    Sums& S = sums[static_cast<std::size_t>(ti)];
-    for (long long i = ti; i < settings.paths; i += threads) {
+    Sums& S = sums[static_cast<std::size_t>(k)];
+    const long long first = k * kPathsPerChunk, end = std::min(paths, first + kPathsPerChunk);
+    for (long long i = first; i < end; ++i) {
       double single = 0.0, multiple = 0.0;
       tr.camera_path(p0, d, single, multiple);
       const double total = single + multiple;
@@ -363,12 +368,8 @@ McEstimate sky_radiance(const McAtmosphere& atmosphere, double camera_alt_m, con
       S.t += total;
       S.t2 += total * total;
     }
-  };
-  std::vector<std::thread> pool;
-  for (int ti = 1; ti < threads; ++ti) pool.emplace_back(work, ti);
-  work(0);
-  for (auto& t : pool) t.join();
-  Sums all;
+  });
+  Sums all;  // in chunk order: the same sum on any number of threads
   for (const Sums& S : sums) {
     all.s += S.s, all.s2 += S.s2, all.m += S.m, all.m2 += S.m2, all.t += S.t, all.t2 += S.t2;
   }

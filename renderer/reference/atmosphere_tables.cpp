@@ -8,7 +8,7 @@
 #include <numbers>
 #include <tuple>
 
-#include "renderer/reference/parallel_rows.h"
+#include "common/parallel_for.h"
 #include "renderer/reference/quadrature.h"
 #include "renderer/reference/reference_atmosphere.h"
 
@@ -87,7 +87,7 @@ glm::dvec3 MuAltitudeTable::lookup(double altitude_m, double mu_sun) const {
 void AtmosphereTables::build_fine_transmittance() {
   fine_.optical_depth.assign(static_cast<std::size_t>(fine_.n_mu) * fine_.n_r, glm::dvec3(0.0));
   const double H = std::sqrt(atmo::kTopRadius * atmo::kTopRadius - atmo::kBottomRadius * atmo::kBottomRadius);
-  parallel_rows(fine_.n_r, settings_.threads, [&](int j) {
+  parallel_for(fine_.n_r, settings_.threads, [&](int j) {
     const double rho = H * j / (fine_.n_r - 1);
     const double r = std::sqrt(rho * rho + atmo::kBottomRadius * atmo::kBottomRadius);
     const double d_min = atmo::kTopRadius - r, d_max = rho + H;
@@ -211,12 +211,12 @@ AtmosphereTables::AtmosphereTables(const AtmosphereTableSettings& settings)
       psi_ms_(settings.mu_sun_nodes, psi_altitudes()),
       e_sky_(settings.mu_sun_nodes, sky_irradiance_altitudes()) {
   build_fine_transmittance();
-  parallel_rows(static_cast<int>(psi_ms_.altitudes().size()), settings_.threads, [&](int j) {
+  parallel_for(static_cast<int>(psi_ms_.altitudes().size()), settings_.threads, [&](int j) {
     const auto jj = static_cast<std::size_t>(j);
     for (std::size_t i = 0; i < psi_ms_.mus().size(); ++i)
       psi_ms_.set(i, jj, multiple_scattering_at(psi_ms_.altitudes()[jj], psi_ms_.mus()[i]));
   });
-  parallel_rows(static_cast<int>(e_sky_.altitudes().size()), settings_.threads, [&](int j) {
+  parallel_for(static_cast<int>(e_sky_.altitudes().size()), settings_.threads, [&](int j) {
     const auto jj = static_cast<std::size_t>(j);
     for (std::size_t i = 0; i < e_sky_.mus().size(); ++i)
       e_sky_.set(i, jj, sky_irradiance_at(e_sky_.altitudes()[jj], e_sky_.mus()[i]));

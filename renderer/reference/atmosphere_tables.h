@@ -39,7 +39,7 @@ struct AtmosphereTableSettings {
   int ms_azimuth_nodes = 6;        // ... midpoint nodes over azimuth [0, pi] (mirror symmetric)
   int sky_zenith_nodes = 10;       // E_sky: Gauss-Legendre nodes in mu over [0, 1], clustered at 0
   int sky_azimuth_nodes = 10;      // ... midpoint nodes over azimuth [0, pi]
-  int threads = 2;
+  int threads = 0;                 // worker threads, 0 = all cores (common/parallel_for.h); no effect on the values
 
   bool operator<(const AtmosphereTableSettings& o) const;
 };

@@ -6,8 +6,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "common/parallel_for.h"
 #include "renderer/reference/cloud_field.h"
-#include "renderer/reference/parallel_rows.h"
 #include "renderer/reference/pixel_integrator.h"
 #include "renderer/reference/reference_scene.h"
 
@@ -43,7 +43,7 @@ FrameImage render_reference(const ViewRequest& view, const weather::Weather& wea
   std::vector<int> row_nonfinite(static_cast<std::size_t>(view.height), 0);
   std::vector<int> row_cloud(static_cast<std::size_t>(view.height), 0);
 
-  parallel_rows(view.height, settings.threads, [&](int y) {
+  parallel_for(view.height, settings.threads, [&](int y) {
     std::uint64_t evals = 0;
     for (int x = 0; x < view.width; ++x) {
       const int n = settings.pixel_samples;

@@ -56,7 +56,9 @@ struct ReferenceSettings {
   int pixel_samples = 1;
   // Shared inputs (sizes and seeds as RendererConfig's defaults)
   InputConfig inputs;
-  int threads = 2;
+  // Worker threads over image rows (and for the tables), 0 = all cores (common/parallel_for.h);
+  // the image does not depend on it.
+  int threads = 0;
 };
 
 // The solar irradiance, the sun's angular radius and the night-sky radiance of the model

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "protocol/limits.h"
+#include "protocol/shm/shm_frame_writer.h"
 #include "protocol/weather_conversion.h"
 #include "renderer/cloud_renderer.h"
 #include "renderer/gl/egl_context.h"
@@ -14,7 +15,6 @@
 #include "renderer/quality_presets.h"
 #include "service/frame_encoding.h"
 #include "service/output_directory.h"
-#include "service/shm_frame_writer.h"
 #include "service/window_presenter.h"
 
 namespace cloudsvc {

@@ -18,6 +18,7 @@
 #include <utility>
 #include <vector>
 
+#include "protocol/shm/shm_name.h"
 #include "service/option_values.h"
 
 namespace cloudsvc::cli {
@@ -33,7 +34,6 @@ constexpr int kMaxPort = 65535;
 // Longest Unix socket path: sun_path holds 108 bytes including the terminating NUL.
 constexpr std::size_t kMaxUnixPathBytes = sizeof(sockaddr_un{}.sun_path) - 1;
 static_assert(kMaxUnixPathBytes == 107);
-constexpr std::size_t kMaxShmNameChars = 200;
 constexpr int kMinClients = 1;
 constexpr int kMaxClients = 1024;
 constexpr int kMaxIdleTimeout_s = 86400;
@@ -190,21 +190,9 @@ std::vector<ListenAddress> parse_listen_addresses(std::string_view flag,
 
 // ---- other values --------------------------------------------------------------------------
 
-bool is_shm_name_char(char c) {
-  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' ||
-         c == '_' || c == '.';
-}
-
 // --shm NAME: the shared-memory object "/NAME".
 std::string parse_shm_name(std::string_view flag, const std::string& text) {
-  const std::string expected = "expected 1.." + std::to_string(kMaxShmNameChars) +
-                               " characters from letters, digits, '-', '_', '.' (not . or ..)";
-  if (text.empty() || text.size() > kMaxShmNameChars || text == "." || text == "..") {
-    fail(flag, text, expected);
-  }
-  for (char c : text) {
-    if (!is_shm_name_char(c)) fail(flag, text, expected);
-  }
+  if (!valid_shm_name(text)) fail(flag, text, "expected " + shm_name_rule());
   return text;
 }
 

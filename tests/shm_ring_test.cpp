@@ -26,7 +26,7 @@ std::string unique_name(const char* tag) { return std::string("cloudsvc-test-") 
 TEST(ShmRing, ConcurrentReaderNeverSeesATornFrame) {
   const std::string name = unique_name("torn");
   const int w = 256, h = 128;
-  ShmFrameWriter writer(name, w, h, 3);
+  ShmFrameWriter writer(name, w, h, 0600, 3);  // owner read+write, 3 slots
   std::atomic<bool> done{false};
   std::atomic<int> frames_read{0}, torn{0};
   std::thread reader_thread([&] {
@@ -72,7 +72,7 @@ TEST(ShmRing, ConcurrentReaderNeverSeesATornFrame) {
 
 TEST(ShmRing, ReaderThatDiesHoldsNothing) {
   const std::string name = unique_name("die");
-  ShmFrameWriter writer(name, 64, 32, 3);
+  ShmFrameWriter writer(name, 64, 32, 0600, 3);  // owner read+write, 3 slots
   std::vector<std::uint8_t> px(64 * 32 * 4, 7);
   ShmFrameMeta meta;
   meta.frame_number = 1;

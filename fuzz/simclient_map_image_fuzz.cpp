@@ -42,9 +42,10 @@
 #include "protocol/messages.h"
 #include "protocol/validate.h"
 #include "protocol/weather_conversion.h"
-#include "sim_client/cli_values.h"
+#include "sim_client/map_flags.h"
 #include "sim_client/map_image.h"
 #include "sim_client/map_tiles.h"
+#include "sim_client/usage_errors.h"
 
 namespace {
 

@@ -9,7 +9,7 @@
 #include "protocol/cloudsvc_generated.h"  // generated at build time
 #include "protocol/error_code.h"
 #include "protocol/messages.h"
-#include "protocol/shm_layout.h"
+#include "protocol/shm/shm_layout.h"
 
 namespace cloudsvc::protocol::wire_checks {
 

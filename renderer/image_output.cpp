@@ -8,7 +8,6 @@
 
 #include <algorithm>
 #include <cerrno>
-#include <cmath>
 #include <cstring>
 #include <cstdio>
 #include <filesystem>
@@ -18,48 +17,11 @@ namespace cloudsvc {
 
 namespace {
 
-double aces_filmic(double x) {  // Narkowicz 2015, "ACES Filmic Tone Mapping Curve"
-  return std::clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
-}
-
-double srgb_oetf(double v) { return v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055; }
-
 std::string lower_extension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return ext;
 }
-
-}  // namespace
-
-std::vector<std::uint8_t> tone_map_srgb8(const FrameImage& img, double exposure_ev) {
-  const size_t n = static_cast<size_t>(img.width) * img.height;
-  // Log-average luminance (Reinhard et al. 2002), ignoring the sun disk's extreme values.
-  double log_sum = 0.0;
-  size_t count = 0;
-  for (size_t i = 0; i < n; ++i) {
-    const double y = luminance(&img.rgba[i * 4]);
-    if (y < 10.0) {
-      log_sum += std::log(1e-12 + y);
-      ++count;
-    }
-  }
-  const double key = count ? std::exp(log_sum / static_cast<double>(count)) : 1.0;
-  // 0.18 / key, at most 5000: twilight (sky ~1e-5 W m^-2 sr^-1 nm^-1) stays visible and dim,
-  // a moonless night (airglow ~2e-9) stays black, as the eye would see it without adapting.
-  const double exposure = std::clamp(0.18 / key, 0.5, 5000.0) * std::exp2(exposure_ev);
-  std::vector<std::uint8_t> out(n * 4);
-  for (size_t i = 0; i < n; ++i) {
-    for (int c = 0; c < 3; ++c) {
-      const double v = srgb_oetf(aces_filmic(exposure * std::max(0.0f, img.rgba[i * 4 + c])));
-      out[i * 4 + c] = static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
-    }
-    out[i * 4 + 3] = 255;
-  }
-  return out;
-}
-
-namespace {
 
 // The encoded file (EXR or PNG) in memory: OpenImageIO writes through an in-memory proxy,
 // so no file is opened by name until write_file_safely.
@@ -80,7 +42,7 @@ std::vector<unsigned char> encode_image(const std::string& path, const std::stri
     spec.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &p);
     ok = out->open(path, spec) && out->write_image(OIIO::TypeDesc::FLOAT, img.rgba.data());
   } else {
-    const std::vector<std::uint8_t> px = tone_map_srgb8(img, exposure_ev);
+    const std::vector<std::uint8_t> px = tone_map_srgb8(img.rgba, 4, exposure_ev);  // FrameImage: RGBA
     OIIO::ImageSpec spec(img.width, img.height, 4, OIIO::TypeDesc::UINT8);
     OIIO::Filesystem::IOProxy* p = &proxy;
     spec.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &p);

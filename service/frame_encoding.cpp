@@ -2,7 +2,7 @@
 
 #include <Imath/half.h>
 
-#include "renderer/image_output.h"
+#include "common/tone_map.h"
 
 namespace cloudsvc {
 
@@ -12,6 +12,6 @@ std::vector<std::uint16_t> to_rgba16f(const FrameImage& img) {
   return out;
 }
 
-std::vector<std::uint8_t> to_rgba8_srgb(const FrameImage& img) { return tone_map_srgb8(img); }
+std::vector<std::uint8_t> to_rgba8_srgb(const FrameImage& img) { return tone_map_srgb8(img.rgba, 4); }  // RGBA
 
 }  // namespace cloudsvc

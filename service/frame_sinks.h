@@ -7,7 +7,7 @@
 
 #include "protocol/messages.h"
 #include "renderer/api/frame_image.h"
-#include "service/shm_frame_writer.h"
+#include "protocol/shm/shm_frame_writer.h"
 
 namespace cloudsvc {
 

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "protocol/limits.h"
+#include "protocol/shm/shm_frame_writer.h"
 #include "protocol/weather_conversion.h"
 #include "renderer/cloud_renderer.h"
 #include "renderer/gl/egl_context.h"

@@ -1,8 +1,9 @@
 // Command line of `cloudsvc` (CLI11): the `render` and `demo` flags, the `serve`
 // sub-command (serve_options.cpp), and the reporting of bad input. CLI11 only collects each
-// flag's text and prints help; every value is then validated (option_values.h) so that a
-// bad command fails before any rendering starts, with exactly one line on stderr naming
-// the flag, the given value and what is allowed, and exit code 2.
+// flag's text and prints help; every value is then validated (common/option_values.h and
+// its neighbours, shared with sim_client) so that a bad command fails before any rendering
+// starts, with exactly one line on stderr naming the flag, the given value and what is
+// allowed, and exit code 2.
 #include "service/render_options.h"
 
 #include <CLI/CLI.hpp>
@@ -14,9 +15,12 @@
 #include <utility>
 #include <vector>
 
+#include "common/option_paths.h"
+#include "common/option_values.h"
+#include "common/option_weather.h"
 #include "geodesy/geodetic.h"
 #include "renderer/quality_presets.h"
-#include "service/option_values.h"
+#include "service/serve_command_line.h"
 
 namespace cloudsvc {
 namespace {
@@ -29,7 +33,6 @@ using cli::given;
 using cli::kExitBadInput;
 using cli::kExitOk;
 using cli::kFieldOfView;
-using cli::kProgram;
 using cli::numeric_help;
 using cli::one_line;
 using cli::parse_frame_count;
@@ -50,6 +53,7 @@ const Range kHeading{-360.0, 360.0, false, "degrees"};
 const Range kPitch{-90.0, 90.0, false, "degrees"};
 const Range kRoll{-180.0, 180.0, false, "degrees"};
 const Range kExposure{-20.0, 20.0, false, "EV"};
+constexpr const char* kProgram = "cloudsvc";  // prefix of every error line
 constexpr int kMaxFrames = 100000;  // --frames upper bound (a benchmark, not a stream)
 constexpr const char* kReferenceQuality = "reference";
 
@@ -68,7 +72,7 @@ double wrap_heading_deg(double heading_deg) {
 }
 
 // ---------------------------------------------------------------------------------------
-// Flag definitions (CLI11 collects text; option_values.h converts it)
+// Flag definitions (CLI11 collects text; common/option_values.h converts it)
 
 // Raw text of each `render` flag, as collected by CLI11.
 struct RenderArgs {

@@ -18,13 +18,13 @@
 #include <thread>
 
 #include "protocol/limits.h"
+#include "protocol/shm/shm_frame_writer.h"
 #include "renderer/quality_presets.h"
 #include "service/commands.h"
 #include "service/frame_mailbox.h"
 #include "service/network_server.h"
 #include "service/output_directory.h"
 #include "service/render_loop.h"
-#include "service/shm_frame_writer.h"
 
 namespace cloudsvc {
 

@@ -1,10 +1,6 @@
 // Flags of `cloudsvc serve` (serve_options.h is the spec): their help text, and the
 // conversion of the text CLI11 collected into ServeOptions, with the same one-line error
-// contract as render and demo (option_values.h).
-#include <arpa/inet.h>
-#include <netinet/in.h>
-#include <sys/un.h>
-
+// contract as render and demo (common/option_values.h).
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstddef>
@@ -18,7 +14,12 @@
 #include <utility>
 #include <vector>
 
-#include "service/option_values.h"
+#include "common/option_address.h"
+#include "common/option_paths.h"
+#include "common/option_values.h"
+#include "common/option_weather.h"
+#include "protocol/shm/shm_name.h"
+#include "service/serve_command_line.h"
 
 namespace cloudsvc::cli {
 
@@ -26,105 +27,29 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr std::string_view kTcpScheme = "tcp://";
-constexpr std::string_view kUnixScheme = "unix:";
-constexpr int kMinPort = 0;  // 0: the kernel picks a free port
-constexpr int kMaxPort = 65535;
-// Longest Unix socket path: sun_path holds 108 bytes including the terminating NUL.
-constexpr std::size_t kMaxUnixPathBytes = sizeof(sockaddr_un{}.sun_path) - 1;
-static_assert(kMaxUnixPathBytes == 107);
-constexpr std::size_t kMaxShmNameChars = 200;
 constexpr int kMinClients = 1;
 constexpr int kMaxClients = 1024;
 constexpr int kMaxIdleTimeout_s = 86400;
 constexpr int kMinTileBudget_mib = 16;  // one full 1024 x 1024 x 4-channel tile
 constexpr int kMaxTileBudget_mib = 65536;
 
-const std::string kListenForms =
-    "expected tcp://HOST:PORT (HOST a numeric IPv4 address, [IPv6 address] or localhost; "
-    "PORT in [0, 65535], 0 = any free port) or unix:PATH";
-
 // ---- --listen --------------------------------------------------------------------------
 
-// PORT of tcp://HOST:PORT, in [0, 65535].
-std::uint16_t parse_port(std::string_view flag, const std::string& text, std::string_view port) {
-  if (port.empty()) fail(flag, text, "missing port after ':' (integer in [0, 65535])");
-  const std::optional<int> value = parse_digits(port);
-  if (!value) fail(flag, text, "port " + std::string(port) + " is not an integer in [0, 65535]");
-  if (*value < kMinPort || *value > kMaxPort) {
-    fail(flag, text, "port " + std::string(port) + " out of range [0, 65535]");
-  }
-  return static_cast<std::uint16_t>(*value);
-}
-
-// Canonical text of a numeric address of `family` (AF_INET/AF_INET6), or "" if `host`
-// is not one. No name is resolved.
-std::string canonical_address(int family, const std::string& host) {
-  unsigned char binary[sizeof(in6_addr)];
-  if (inet_pton(family, host.c_str(), binary) != 1) return "";
-  char text[INET6_ADDRSTRLEN];
-  return inet_ntop(family, binary, text, sizeof text) != nullptr ? text : "";
-}
-
-// tcp://HOST:PORT; `rest` is the text after "tcp://".
-ListenAddress parse_tcp_address(std::string_view flag, const std::string& text,
-                                std::string_view rest) {
+// tcp://HOST:PORT (port 0: any free port) or unix:PATH (option_address.h); a socket path
+// must also be bindable: in an existing writable directory, not an existing non-socket
+// file (binding there would fail or clobber it).
+ListenAddress parse_listen_address(std::string_view flag, const std::string& text) {
+  const Endpoint endpoint = parse_endpoint(flag, text, PortUse::Listen);
   ListenAddress address;
-  address.kind = ListenAddress::Kind::Tcp;
   address.text = text;
-  std::string host;
-  std::size_t colon = std::string_view::npos;
-  bool bracketed = false;
-  if (!rest.empty() && rest.front() == '[') {
-    const std::size_t close = rest.find(']');
-    if (close == std::string_view::npos) fail(flag, text, "missing ']' after the IPv6 address");
-    host = std::string(rest.substr(1, close - 1));
-    bracketed = true;
-    if (close + 1 == rest.size() || rest[close + 1] != ':') {
-      fail(flag, text, "missing :PORT after the address (integer in [0, 65535])");
-    }
-    colon = close + 1;
-  } else {
-    colon = rest.rfind(':');
-    if (colon == std::string_view::npos) {
-      fail(flag, text, "missing :PORT after the host (integer in [0, 65535])");
-    }
-    host = std::string(rest.substr(0, colon));
-    if (host.find(':') != std::string::npos) {
-      fail(flag, text, "an IPv6 address must be in brackets, e.g. tcp://[::1]:7420");
-    }
-  }
-  address.port = parse_port(flag, text, rest.substr(colon + 1));
-  if (host.empty()) fail(flag, text, "missing host; " + kListenForms);
-  if (!bracketed && host == "localhost") {
-    address.host = "127.0.0.1";
+  if (endpoint.kind == Endpoint::Kind::Tcp) {
+    address.kind = ListenAddress::Kind::Tcp;
+    address.host = endpoint.host;
+    address.port = endpoint.port;
     return address;
   }
-  address.host = canonical_address(bracketed ? AF_INET6 : AF_INET, host);
-  if (address.host.empty()) {
-    fail(flag, text,
-         bracketed ? "\"" + host + "\" is not a numeric IPv6 address"
-                   : "host \"" + host +
-                         "\" is not a numeric IPv4 address or localhost (host names are not "
-                         "resolved; IPv6 goes in brackets)");
-  }
-  return address;
-}
-
-// unix:PATH: at most 107 bytes, in an existing writable directory, not an existing
-// non-socket file (binding there would fail or clobber it).
-ListenAddress parse_unix_address(std::string_view flag, const std::string& text,
-                                 std::string_view path_text) {
-  ListenAddress address;
   address.kind = ListenAddress::Kind::Unix;
-  address.text = text;
-  address.path = std::string(path_text);
-  if (address.path.empty()) fail(flag, text, "empty socket path; expected unix:PATH");
-  if (address.path.size() > kMaxUnixPathBytes) {
-    fail(flag, text,
-         "socket path is " + std::to_string(address.path.size()) + " bytes, at most " +
-             std::to_string(kMaxUnixPathBytes) + " (sun_path)");
-  }
+  address.path = endpoint.path;
   const fs::path path(address.path);
   if (!path.has_filename()) fail(flag, text, "socket path names a directory, expected a file name");
   require_writable_directory(flag, text, path.has_parent_path() ? path.parent_path() : ".");
@@ -134,15 +59,6 @@ ListenAddress parse_unix_address(std::string_view flag, const std::string& text,
     fail(flag, text, "exists and is not a socket");
   }
   return address;
-}
-
-ListenAddress parse_listen_address(std::string_view flag, const std::string& text) {
-  const std::string_view view(text);
-  if (view.starts_with(kTcpScheme)) return parse_tcp_address(flag, text, view.substr(kTcpScheme.size()));
-  if (view.starts_with(kUnixScheme)) {
-    return parse_unix_address(flag, text, view.substr(kUnixScheme.size()));
-  }
-  fail(flag, text, kListenForms);
 }
 
 bool is_wildcard(const ListenAddress& a) { return a.host == "0.0.0.0" || a.host == "::"; }
@@ -190,21 +106,9 @@ std::vector<ListenAddress> parse_listen_addresses(std::string_view flag,
 
 // ---- other values --------------------------------------------------------------------------
 
-bool is_shm_name_char(char c) {
-  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' ||
-         c == '_' || c == '.';
-}
-
 // --shm NAME: the shared-memory object "/NAME".
 std::string parse_shm_name(std::string_view flag, const std::string& text) {
-  const std::string expected = "expected 1.." + std::to_string(kMaxShmNameChars) +
-                               " characters from letters, digits, '-', '_', '.' (not . or ..)";
-  if (text.empty() || text.size() > kMaxShmNameChars || text == "." || text == "..") {
-    fail(flag, text, expected);
-  }
-  for (char c : text) {
-    if (!is_shm_name_char(c)) fail(flag, text, expected);
-  }
+  if (!valid_shm_name(text)) fail(flag, text, "expected " + shm_name_rule());
   return text;
 }
 

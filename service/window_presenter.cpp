@@ -5,10 +5,10 @@
 
 #include <stdexcept>
 
+#include "common/tone_map.h"
 #include "renderer/gl/gl_objects.h"
 #include "renderer/gl/shader_program.h"
 #include "renderer/gpu_interface.h"
-#include "renderer/image_output.h"
 
 namespace cloudsvc {
 
@@ -69,7 +69,7 @@ void WindowPresenter::present(const FrameImage& img, double exposure_ev) {
     impl_->tex_w = img.width;
     impl_->tex_h = img.height;
   }
-  const std::vector<std::uint8_t> px = tone_map_srgb8(img, exposure_ev);
+  const std::vector<std::uint8_t> px = tone_map_srgb8(img.rgba, 4, exposure_ev);  // FrameImage: RGBA
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   glTextureSubImage2D(impl_->shown.id(), 0, 0, 0, img.width, img.height, GL_RGBA, GL_UNSIGNED_BYTE, px.data());
   impl_->has_frame = true;

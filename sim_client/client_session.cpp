@@ -3,7 +3,8 @@
 
 #include <algorithm>
 
-#include "sim_client/cli_values.h"
+#include "sim_client/text_input.h"
+#include "sim_client/usage_errors.h"
 
 namespace cloudsvc::sim {
 
@@ -80,7 +81,7 @@ std::optional<protocol::FrameReady> ClientSession::wait_frame(
   const auto deadline = Clock::now() + timeout;
   for (;;) {
     if (Clock::now() >= deadline && kept_.empty())
-      throw RunError("no frame for the pose at sim time " + number_text(pose.sim_time_s) + " s within " +
+      throw RunError("no frame for the pose at sim time " + format_number(pose.sim_time_s) + " s within " +
                      std::to_string(timeout.count() / 1000) + " s (--frame-timeout)");
     std::optional<protocol::Message> m = next(deadline);
     if (!m) continue;

@@ -52,7 +52,7 @@ class ClientSession {
 
   // Sends the view and confirms it. When the service rejects it with SinkUnavailable and
   // the view asked for shared memory besides another sink, sends it again without shared
-  // memory (note on `warn`). Returns the view in effect; throws RunError (cli_values.h)
+  // memory (note on `warn`). Returns the view in effect; throws RunError (usage_errors.h)
   // when the service rejects it.
   protocol::SetView set_view(protocol::SetView view, const std::function<void(const std::string&)>& warn);
 

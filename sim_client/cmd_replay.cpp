@@ -8,7 +8,9 @@
 #include <map>
 #include <memory>
 
-#include "sim_client/cli_values.h"
+#include "common/option_address.h"
+#include "common/option_paths.h"
+#include "common/option_values.h"
 #include "sim_client/client_session.h"
 #include "sim_client/commands.h"
 #include "sim_client/contact_sheet.h"
@@ -16,7 +18,7 @@
 #include "sim_client/progress.h"
 #include "sim_client/replay_poses.h"
 #include "sim_client/run_summary.h"
-#include "sim_client/text_input.h"
+#include "sim_client/usage_errors.h"
 
 namespace cloudsvc::sim {
 
@@ -48,30 +50,26 @@ struct ReplayOptions {
 ReplayOptions validate(const ReplayArgs& a) {
   ReplayOptions o;
   o.log = a.log;
-  check_address("--connect", a.connect);
+  cli::parse_endpoint("--connect", a.connect, cli::PortUse::Connect);
   o.address = a.connect;
-  std::tie(o.width, o.height) = parse_flag_size("--size", a.size);
-  o.fov_deg = parse_flag_number("--fov", a.fov, NumberRange{0.0, 170.0, true, "degrees, horizontal"});
-  o.fps = parse_flag_number("--fps", a.fps, NumberRange{0.0, 1000.0, true, "frames per second of log time"});
+  std::tie(o.width, o.height) = cli::parse_image_size("--size", a.size);
+  o.fov_deg = cli::parse_number("--fov", a.fov, cli::kFieldOfView);
+  o.fps = cli::parse_number("--fps", a.fps, cli::Range{0.0, 1000.0, true, "frames per second of log time"});
   if (!a.max_frames.empty())
-    o.max_frames = static_cast<std::size_t>(parse_flag_integer("--max-frames", a.max_frames, 1, 50000000, "frames"));
+    o.max_frames = static_cast<std::size_t>(cli::parse_integer("--max-frames", a.max_frames, 1, 50000000, "frames"));
   if (a.format == "png") o.format = protocol::FileFormat::Png;
   else if (a.format == "exr") o.format = protocol::FileFormat::Exr;
-  else fail_flag("--format", a.format, "expected png (8-bit sRGB) or exr (linear half float)");
+  else cli::fail("--format", a.format, "expected png (8-bit sRGB) or exr (linear half float)");
   if (!a.out.empty()) {
+    cli::check_output_directory("--out", a.out);  // created when the run starts
     std::error_code ec;
     o.out_dir = std::filesystem::absolute(a.out, ec);
-    if (std::filesystem::exists(o.out_dir, ec) && !std::filesystem::is_directory(o.out_dir, ec))
-      fail_flag("--out", a.out, "exists and is not a directory");
   }
   if (!a.contact_sheet.empty()) {
     const std::string& c = a.contact_sheet;
-    if (c.size() < 4 || !iequals(std::string_view(c).substr(c.size() - 4), ".png"))
-      fail_flag("--contact-sheet", c, "expected a file name ending in .png");
-    if (a.out.empty()) fail_flag("--contact-sheet", c, "needs --out (the sheet is made from the frame files)");
-    std::error_code ec;
-    const auto dir = std::filesystem::absolute(c, ec).parent_path();
-    if (!std::filesystem::is_directory(dir, ec)) fail_flag("--contact-sheet", c, "directory " + dir.string() + " does not exist");
+    if (!cli::ends_with_ci(c, ".png")) cli::fail("--contact-sheet", c, "expected a file name ending in .png");
+    if (a.out.empty()) cli::fail("--contact-sheet", c, "needs --out (the sheet is made from the frame files)");
+    cli::check_writable_file("--contact-sheet", c);
     o.contact_sheet = c;
   }
   o.log_options.acmi_object = a.object;
@@ -120,7 +118,7 @@ class Replay {
     std::printf("%s\n", format_replay_summary(summary_).c_str());
     std::fflush(stdout);
     if (!o_.contact_sheet.empty()) write_sheet();
-    return summary_.frames > 0 ? kExitOk : kExitFailure;
+    return summary_.frames > 0 ? cli::kExitOk : cli::kExitFailure;
   }
 
  private:

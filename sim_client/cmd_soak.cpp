@@ -5,14 +5,16 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
-#include <filesystem>
 #include <fstream>
 #include <memory>
 
-#include "sim_client/cli_values.h"
+#include "common/option_address.h"
+#include "common/option_paths.h"
+#include "common/option_values.h"
 #include "sim_client/commands.h"
 #include "sim_client/process_rss.h"
 #include "sim_client/soak_run.h"
+#include "sim_client/usage_errors.h"
 
 namespace cloudsvc::sim {
 
@@ -40,22 +42,20 @@ struct SoakCommandOptions {
 SoakCommandOptions validate(const SoakArgs& a) {
   SoakCommandOptions o;
   o.run.addresses = a.connect.empty() ? std::vector<std::string>{kDefaultAddress} : a.connect;
-  for (const std::string& address : o.run.addresses) check_address("--connect", address);
-  o.run.clients = static_cast<std::size_t>(parse_flag_integer("--clients", a.clients, 1, kMaxClients, "connections"));
-  o.run.rate_hz = parse_flag_number("--rate", a.rate, NumberRange{0.0, kMaxRate_hz, true, "poses per second per client"});
-  o.run.duration_s = parse_flag_duration("--duration", a.duration, kMaxDuration_s);
-  std::tie(o.run.width, o.run.height) = parse_flag_size("--size", a.size);
+  for (const std::string& address : o.run.addresses) cli::parse_endpoint("--connect", address, cli::PortUse::Connect);
+  o.run.clients = static_cast<std::size_t>(cli::parse_integer("--clients", a.clients, 1, kMaxClients, "connections"));
+  o.run.rate_hz = cli::parse_number("--rate", a.rate, cli::Range{0.0, kMaxRate_hz, true, "poses per second per client"});
+  o.run.duration_s = cli::parse_duration("--duration", a.duration, kMaxDuration_s);
+  std::tie(o.run.width, o.run.height) = cli::parse_image_size("--size", a.size);
   if (!a.render_every.empty())
-    o.run.render_every = static_cast<std::uint64_t>(parse_flag_integer("--render-every", a.render_every, 1, 1000000, "poses"));
+    o.run.render_every = static_cast<std::uint64_t>(cli::parse_integer("--render-every", a.render_every, 1, 1000000, "poses"));
   if (!a.service_pid.empty()) {
-    o.run.service_pid = static_cast<int>(parse_flag_integer("--service-pid", a.service_pid, 1, kMaxPid, "process id"));
+    o.run.service_pid = static_cast<int>(cli::parse_integer("--service-pid", a.service_pid, 1, kMaxPid, "process id"));
     if (!process_rss_bytes(o.run.service_pid))
-      fail_flag("--service-pid", a.service_pid, "no such process, or no VmRSS in /proc/" + a.service_pid + "/status");
+      cli::fail("--service-pid", a.service_pid, "no such process, or no VmRSS in /proc/" + a.service_pid + "/status");
   }
   if (!a.json.empty()) {
-    std::error_code ec;
-    const auto dir = std::filesystem::absolute(a.json, ec).parent_path();
-    if (!std::filesystem::is_directory(dir, ec)) fail_flag("--json", a.json, "directory " + dir.string() + " does not exist");
+    cli::check_writable_file("--json", a.json);
     o.json = a.json;
   }
   o.expect_errors = a.expect_errors;
@@ -75,7 +75,7 @@ int run_soak_command(const SoakCommandOptions& o) {
     if (!f) throw RunError("--json " + o.json + ": cannot write");
   }
   const std::vector<std::string> failures = soak_failures(summary, o.expect_errors);
-  if (failures.empty()) return kExitOk;
+  if (failures.empty()) return cli::kExitOk;
   std::string why;
   for (const std::string& f : failures) why += (why.empty() ? "" : "; ") + f;
   throw RunError("failed: " + why);

@@ -8,8 +8,10 @@
 #include <iostream>
 #include <memory>
 
+#include "common/option_address.h"
+#include "common/option_paths.h"
+#include "common/option_values.h"
 #include "protocol/weather_conversion.h"
-#include "sim_client/cli_values.h"
 #include "sim_client/client_session.h"
 #include "sim_client/commands.h"
 #include "sim_client/image_stats.h"
@@ -18,6 +20,7 @@
 #include "sim_client/run_summary.h"
 #include "sim_client/sweep_plan.h"
 #include "sim_client/tone_map.h"
+#include "sim_client/usage_errors.h"
 
 namespace cloudsvc::sim {
 
@@ -43,15 +46,14 @@ struct SweepOptions {
 SweepOptions validate(const SweepArgs& a) {
   SweepOptions o;
   o.file = a.file;
-  check_address("--connect", a.connect);
+  cli::parse_endpoint("--connect", a.connect, cli::PortUse::Connect);
   o.address = a.connect;
-  if (a.out.empty()) fail_flag("--out", a.out, "required: the directory for the frames and manifest.csv");
+  if (a.out.empty()) cli::fail("--out", a.out, "required: the directory for the frames and manifest.csv");
+  cli::check_output_directory("--out", a.out);  // created when the run starts
   std::error_code ec;
   o.out_dir = std::filesystem::absolute(a.out, ec);
-  if (std::filesystem::exists(o.out_dir, ec) && !std::filesystem::is_directory(o.out_dir, ec))
-    fail_flag("--out", a.out, "exists and is not a directory");
-  std::tie(o.width, o.height) = parse_flag_size("--size", a.size);
-  o.fov_deg = parse_flag_number("--fov", a.fov, NumberRange{0.0, 170.0, true, "degrees, horizontal"});
+  std::tie(o.width, o.height) = cli::parse_image_size("--size", a.size);
+  o.fov_deg = cli::parse_number("--fov", a.fov, cli::kFieldOfView);
   o.frame_timeout = std::chrono::milliseconds(static_cast<long long>(parse_frame_timeout(a.frame_timeout) * 1000.0));
   o.png = a.png;
   return o;
@@ -151,7 +153,7 @@ int run_sweep(const SweepOptions& o, const SweepPlan& plan) {
   summary.manifest = manifest_path.string();
   std::printf("%s\n", format_sweep_summary(summary).c_str());
   std::fflush(stdout);
-  return rows == plan.entries.size() ? kExitOk : kExitFailure;
+  return rows == plan.entries.size() ? cli::kExitOk : cli::kExitFailure;
 }
 
 }  // namespace

@@ -12,9 +12,11 @@
 #include <memory>
 #include <thread>
 
-#include "sim_client/cli_values.h"
+#include "common/option_values.h"
+#include "protocol/shm/shm_frame_reader.h"
+#include "protocol/shm/shm_name.h"
 #include "sim_client/commands.h"
-#include "sim_client/shm_frame_reader.h"
+#include "sim_client/usage_errors.h"
 #include "sim_client/watch_stats.h"
 
 namespace cloudsvc::sim {
@@ -47,17 +49,18 @@ struct WatchOptions {
 
 WatchOptions validate(const WatchArgs& a) {
   WatchOptions o;
-  if (a.shm.empty()) fail_flag("--shm", a.shm, "required: the ring name given to cloudsvc serve --shm");
-  if (a.shm.find('/') != std::string::npos) fail_flag("--shm", a.shm, "give the name without '/'");
+  if (a.shm.empty()) cli::fail("--shm", a.shm, "required: the ring name given to cloudsvc serve --shm");
+  if (a.shm.find('/') != std::string::npos) cli::fail("--shm", a.shm, "give the name without '/'");
+  if (!valid_shm_name(a.shm)) cli::fail("--shm", a.shm, "expected " + shm_name_rule() + ", as given to cloudsvc serve --shm");
   o.shm = a.shm;
-  if (!a.seconds.empty()) o.seconds = parse_flag_number("--seconds", a.seconds, NumberRange{0.0, 31536000.0, true, "seconds"});
+  if (!a.seconds.empty()) o.seconds = cli::parse_number("--seconds", a.seconds, cli::Range{0.0, 31536000.0, true, "seconds"});
   return o;
 }
 
 int run_watch(const WatchOptions& o) {
-  std::unique_ptr<client::ShmFrameReader> reader;
+  std::unique_ptr<ShmFrameReader> reader;
   try {
-    reader = std::make_unique<client::ShmFrameReader>(o.shm);
+    reader = std::make_unique<ShmFrameReader>(o.shm);
   } catch (const std::exception& e) {
     throw RunError("--shm " + o.shm + ": " + e.what());
   }
@@ -99,7 +102,7 @@ int run_watch(const WatchOptions& o) {
   }
   std::printf("%s\n", stats.summary_line(std::chrono::duration<double>(Clock::now() - start).count()).c_str());
   std::fflush(stdout);
-  return kExitOk;
+  return cli::kExitOk;
 }
 
 }  // namespace

@@ -6,16 +6,20 @@
 #include <memory>
 #include <thread>
 
+#include "common/option_address.h"
+#include "common/option_values.h"
+#include "common/option_weather.h"
 #include "geodesy/utc_time.h"
 #include "protocol/validate.h"
 #include "protocol/weather_conversion.h"
-#include "sim_client/cli_values.h"
 #include "sim_client/client_session.h"
 #include "sim_client/commands.h"
+#include "sim_client/map_flags.h"
 #include "sim_client/map_image.h"
 #include "sim_client/map_tiles.h"
+#include "sim_client/text_input.h"
+#include "sim_client/usage_errors.h"
 #include "weather/presets.h"
-#include "weather/weather_json.h"
 
 namespace cloudsvc::sim {
 
@@ -38,44 +42,33 @@ struct WeatherOptions {
   std::chrono::milliseconds quiet{500};
 };
 
-std::string preset_list() {
-  std::string out;
-  for (const std::string& n : weather::preset_names()) out += (out.empty() ? "" : ", ") + n;
-  return out;
-}
-
 WeatherOptions validate(const WeatherArgs& a) {
   WeatherOptions o;
-  check_address("--connect", a.connect);
+  cli::parse_endpoint("--connect", a.connect, cli::PortUse::Connect);
   o.address = a.connect;
-  if (!a.layers.empty() && !a.preset.empty()) fail_flag("--preset", a.preset, "give either --layers or --preset, not both");
+  if (!a.layers.empty() && !a.preset.empty()) cli::fail("--preset", a.preset, "give either --layers or --preset, not both");
   if (a.layers.empty() && a.preset.empty() && a.map.empty())
     throw UsageError("nothing to send: give --layers FILE.json, --preset NAME or --map IMAGE");
   if (!a.preset.empty()) {
-    o.layers = weather::preset(a.preset);
-    if (!o.layers) fail_flag("--preset", a.preset, "unknown preset (expected one of " + preset_list() + ")");
+    o.layers = cli::weather_preset("--preset", a.preset);
     o.layers_label = "preset " + a.preset;
   }
   if (!a.layers.empty()) {
-    try {
-      o.layers = weather::load_weather_json(a.layers);
-    } catch (const weather::WeatherFileError& e) {
-      throw UsageError(std::string("--layers ") + e.what());
-    }
+    o.layers = cli::load_weather_file("--layers", a.layers);
     o.layers_label = "layers from " + a.layers;
   }
   if (a.map.empty()) {
     for (const auto& [flag, value] : {std::pair{"--bounds", &a.bounds}, std::pair{"--valid-at", &a.valid_at}})
-      if (!value->empty()) fail_flag(flag, *value, "only with --map");
+      if (!value->empty()) cli::fail(flag, *value, "only with --map");
   } else {
-    if (a.bounds.empty()) fail_flag("--bounds", a.bounds, "required with --map: lat_min,lon_min,lat_max,lon_max in degrees");
-    if (a.valid_at.empty()) fail_flag("--valid-at", a.valid_at, "required with --map: the UTC time the map is valid at");
+    if (a.bounds.empty()) cli::fail("--bounds", a.bounds, "required with --map: lat_min,lon_min,lat_max,lon_max in degrees");
+    if (a.valid_at.empty()) cli::fail("--valid-at", a.valid_at, "required with --map: the UTC time the map is valid at");
     o.map = a.map;
     o.bounds = parse_flag_bounds("--bounds", a.bounds);
-    o.valid_at_utc_s = parse_flag_time("--valid-at", a.valid_at);
+    o.valid_at_utc_s = cli::parse_time("--valid-at", a.valid_at);
     o.channels = parse_flag_channels("--channels", a.channels);
   }
-  o.quiet = std::chrono::milliseconds(parse_flag_integer("--quiet-ms", a.quiet_ms, 0, 60000, "milliseconds"));
+  o.quiet = std::chrono::milliseconds(cli::parse_integer("--quiet-ms", a.quiet_ms, 0, 60000, "milliseconds"));
   return o;
 }
 
@@ -134,15 +127,15 @@ int run_weather(const WeatherOptions& o) {
     for (std::uint8_t c : o.channels) names += (names.empty() ? "" : ",") + channel_name(c);
     std::printf("weather: sent %s as %zu tiles (%dx%d texels, channels %s, bounds %s,%s,%s,%s, valid at %s)\n",
                 o.map.c_str(), tiles.size(), raster.width, raster.height, names.c_str(),
-                number_text(o.bounds.lat_min_deg).c_str(), number_text(o.bounds.lon_min_deg).c_str(),
-                number_text(o.bounds.lat_max_deg).c_str(), number_text(o.bounds.lon_max_deg).c_str(),
+                format_number(o.bounds.lat_min_deg).c_str(), format_number(o.bounds.lon_min_deg).c_str(),
+                format_number(o.bounds.lat_max_deg).c_str(), format_number(o.bounds.lon_max_deg).c_str(),
                 geo::format_utc_iso8601(o.valid_at_utc_s).c_str());
   }
   std::printf(errors.empty() ? "weather: accepted (no error from the service)\n"
                              : "weather: %zu error(s) from the service\n",
               errors.size());
   std::fflush(stdout);
-  return errors.empty() ? kExitOk : kExitFailure;
+  return errors.empty() ? cli::kExitOk : cli::kExitFailure;
 }
 
 }  // namespace
@@ -155,7 +148,8 @@ Command add_weather_command(CLI::App& app) {
   cmd->add_option("--connect", args->connect, connect_help())->type_name("ADDR");
   cmd->add_option("--layers", args->layers, "Weather file (docs/WEATHER.md) whose layers replace the service's layer stack")
       ->type_name("FILE.json");
-  cmd->add_option("--preset", args->preset, "Weather preset whose layers replace the service's: " + preset_list())
+  cmd->add_option("--preset", args->preset,
+                  "Weather preset whose layers replace the service's: " + cli::join(weather::preset_names(), ", "))
       ->type_name("NAME");
   cmd->add_option("--map", args->map,
                   "Weather map image (EXR, TIFF, PNG, ... read by OpenImageIO): top row = north edge, values in [0, 1] "

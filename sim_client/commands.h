@@ -1,7 +1,8 @@
 // Sub-commands of the `sim_client` executable (sim_client_main.cpp). Each add_*_command
 // registers its CLI11 sub-command and flags on `app` and returns the function that
-// validates the collected flags (throwing UsageError) and runs the command (throwing
-// RunError, client::ConnectionError or FlightLogError), returning the exit code.
+// validates the collected flags (throwing cli::FlagError, common/option_values.h, or
+// UsageError) and runs the command (throwing RunError, client::ConnectionError or
+// FlightLogError), returning the exit code.
 // Documented in docs/SIM_CLIENT.md.
 #pragma once
 
@@ -27,12 +28,9 @@ Command add_soak_command(CLI::App& app);     // cmd_soak.cpp
 
 // Shared flag text and checks of the commands (cmd_common.cpp).
 inline constexpr const char* kDefaultAddress = "tcp://127.0.0.1:7420";
-// Checks the --connect form: tcp://HOST:PORT or unix:PATH (the connection itself is made
-// later). Throws UsageError.
-void check_address(const std::string& flag, const std::string& address);
 // Help text of --connect.
 std::string connect_help();
-// --frame-timeout: seconds in (0, 86400].
+// --frame-timeout: seconds in (0, 86400]; cli::FlagError otherwise.
 double parse_frame_timeout(const std::string& text);
 std::string frame_timeout_help();
 inline constexpr const char* kDefaultFrameTimeout_s = "120";

@@ -5,7 +5,9 @@
 
 #include <cmath>
 
-#include "sim_client/cli_values.h"
+#include "sim_client/map_flags.h"
+#include "sim_client/text_input.h"
+#include "sim_client/usage_errors.h"
 
 namespace cloudsvc::sim {
 
@@ -17,7 +19,7 @@ void check_map_values(const MapRaster& r, const std::string& source) {
     const std::size_t texel = i / nc, k = i % nc;
     const std::size_t x = texel % static_cast<std::size_t>(r.width), y = texel / static_cast<std::size_t>(r.width);
     throw UsageError(source + ": pixel (x " + std::to_string(x) + ", y " + std::to_string(y) + ") channel " +
-                     std::to_string(k) + " (" + channel_name(r.channel_bits[k]) + "): value " + number_text(v) +
+                     std::to_string(k) + " (" + channel_name(r.channel_bits[k]) + "): value " + format_number(v) +
                      (std::isfinite(v) ? " outside [0, 1]" : " is not finite"));
   }
 }

@@ -12,7 +12,7 @@ namespace cloudsvc::sim {
 
 // channel_bits: protocol tile_channel bits, one per image channel used (parse_flag_channels).
 // Values are read as float (8- and 16-bit integer images scale to [0, 1]); the image's top
-// row is the northern edge. Throws UsageError (cli_values.h) naming the file when it cannot
+// row is the northern edge. Throws UsageError (usage_errors.h) naming the file when it cannot
 // be read, has fewer channels than listed, or a value is not finite or outside [0, 1]:
 //   "map.exr: pixel (x 12, y 40) channel 1 (density): value 1.5 outside [0, 1]"
 // (x counted from the west edge, y from the top/north edge, channels from 0).

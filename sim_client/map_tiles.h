@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "protocol/messages.h"
-#include "sim_client/cli_values.h"
+#include "sim_client/map_flags.h"
 
 namespace cloudsvc::sim {
 

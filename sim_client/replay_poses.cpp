@@ -3,7 +3,7 @@
 
 #include "geodesy/utc_time.h"
 #include "protocol/validate.h"
-#include "sim_client/cli_values.h"
+#include "sim_client/usage_errors.h"
 
 namespace cloudsvc::sim {
 

@@ -15,9 +15,9 @@ struct ServiceAddress {
   std::string path;        // Unix: socket file path
 };
 
-// Throws ConnectionError (service_connection.h) "<address>: expected tcp://HOST:PORT or
-// unix:PATH" (or naming the bad port) when the text has neither form. The host is only
-// split off here; asio checks that it is a numeric address when connecting.
+// Throws ConnectionError (service_connection.h) "<address>: <problem>" when the text is not
+// one of the forms of common/option_address.h (the --connect flag's syntax: a numeric
+// host or localhost, port 1..65535, a socket path of at most 107 bytes).
 ServiceAddress parse_service_address(const std::string& address);
 
 }  // namespace cloudsvc::client

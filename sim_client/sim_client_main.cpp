@@ -10,10 +10,13 @@
 #include <string>
 #include <vector>
 
-#include "sim_client/cli_values.h"
+#include "common/option_values.h"
 #include "sim_client/commands.h"
 #include "sim_client/flight_log_error.h"
 #include "sim_client/service_connection.h"
+#include "sim_client/usage_errors.h"
+
+namespace cli = cloudsvc::cli;
 
 namespace {
 
@@ -46,7 +49,7 @@ int main(int argc, char** argv) {
     for (const Command& c : commands) known = known || c.app->get_name() == argv[1];
     if (!known)
       return fail("sim_client: ", std::string(argv[1]) + ": unknown sub-command (expected replay, sweep, weather, watch or soak)",
-                  kExitBadInput);
+                  cli::kExitBadInput);
   }
   try {
     app.parse(argc, argv);
@@ -60,7 +63,7 @@ int main(int argc, char** argv) {
       if (c.app->parsed()) where = "sim_client " + c.app->get_name() + ": ";
     std::string text = e.what();
     if (text == "A subcommand is required") text += " (replay, sweep, weather, watch or soak; see sim_client --help)";
-    return fail(where, text, kExitBadInput);
+    return fail(where, text, cli::kExitBadInput);
   }
   for (const Command& c : commands) {
     if (!c.app->parsed()) continue;
@@ -68,14 +71,16 @@ int main(int argc, char** argv) {
     try {
       return c.run();
     } catch (const cloudsvc::sim::FlightLogError& e) {
-      return fail("", e.what(), kExitBadInput);  // "<file>:<line>: <problem>"
+      return fail("", e.what(), cli::kExitBadInput);  // "<file>:<line>: <problem>"
+    } catch (const cli::FlagError& e) {  // a bad flag value: "<flag> <value>: <reason>"
+      return fail(prefix, e.what(), cli::kExitBadInput);
     } catch (const UsageError& e) {
-      return fail(prefix, e.what(), kExitBadInput);
+      return fail(prefix, e.what(), cli::kExitBadInput);
     } catch (const cloudsvc::client::ConnectionError& e) {
-      return fail(prefix, e.what(), kExitFailure);
+      return fail(prefix, e.what(), cli::kExitFailure);
     } catch (const std::exception& e) {
-      return fail(prefix, e.what(), kExitFailure);
+      return fail(prefix, e.what(), cli::kExitFailure);
     }
   }
-  return kExitBadInput;
+  return cli::kExitBadInput;
 }

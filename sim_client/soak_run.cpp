@@ -10,12 +10,12 @@
 #include <stdexcept>
 #include <thread>
 
-#include "sim_client/cli_values.h"
 #include "sim_client/client_session.h"
 #include "sim_client/process_rss.h"
 #include "sim_client/service_connection.h"
 #include "sim_client/soak_client.h"
 #include "sim_client/soak_track.h"
+#include "sim_client/usage_errors.h"
 
 namespace cloudsvc::sim {
 

@@ -3,11 +3,11 @@
 #include <array>
 #include <cmath>
 
-#include "sim_client/cli_values.h"
 #include "sim_client/csv_fields.h"
 #include "sim_client/sweep_plan.h"
 #include "sim_client/sweep_support.h"
 #include "sim_client/text_input.h"
+#include "sim_client/usage_errors.h"
 
 namespace cloudsvc::sim {
 

@@ -2,9 +2,10 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
-#include "sim_client/cli_values.h"
 #include "sim_client/sweep_plan.h"
 #include "sim_client/sweep_support.h"
+#include "sim_client/text_input.h"
+#include "sim_client/usage_errors.h"
 
 namespace cloudsvc::sim {
 
@@ -157,7 +158,7 @@ class JsonSweepParser {
     const auto heading = axis(grid, "heading", false), pitch = axis(grid, "pitch", false), roll = axis(grid, "roll", false);
     const double total = static_cast<double>(lat.size()) * lon.size() * alt.size() * heading.size() * pitch.size() * roll.size();
     if (total > static_cast<double>(kMaxSweepEntries))
-      fail("grid", "has " + number_text(total) + " combinations, at most " + std::to_string(kMaxSweepEntries));
+      fail("grid", "has " + format_number(total) + " combinations, at most " + std::to_string(kMaxSweepEntries));
     std::size_t k = 0;
     for (double la : lat)
       for (double lo : lon)

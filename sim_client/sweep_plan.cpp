@@ -4,8 +4,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "sim_client/cli_values.h"
 #include "sim_client/text_input.h"
+#include "sim_client/usage_errors.h"
 
 namespace cloudsvc::sim {
 

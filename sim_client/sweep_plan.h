@@ -56,7 +56,7 @@ struct SweepPlan {
 };
 
 // Reads a sweep file, by extension (.json or .csv, case-insensitive). Throws UsageError
-// (cli_values.h) with one line naming the file and the field or line:
+// (usage_errors.h) with one line naming the file and the field or line:
 //   "sweep.json: poses[2].lat: 95 out of range [-90, 90] (degrees)"
 //   "sweep.csv:4: unknown weather 'fog' (not a preset and not a .json file)"
 SweepPlan load_sweep(const std::string& path);

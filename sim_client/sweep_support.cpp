@@ -5,8 +5,8 @@
 
 #include "geodesy/utc_time.h"
 #include "protocol/limits.h"
-#include "sim_client/cli_values.h"
 #include "sim_client/text_input.h"
+#include "sim_client/usage_errors.h"
 #include "weather/presets.h"
 #include "weather/weather_json.h"
 
@@ -26,7 +26,7 @@ std::string joined_presets() {
 
 std::optional<std::string> check(const char* field, double v, double lo, double hi, const char* unit) {
   if (v >= lo && v <= hi) return std::nullopt;
-  return std::string(field) + ": " + number_text(v) + " out of range [" + number_text(lo) + ", " + number_text(hi) +
+  return std::string(field) + ": " + format_number(v) + " out of range [" + format_number(lo) + ", " + format_number(hi) +
          "] (" + unit + ")";
 }
 
@@ -76,7 +76,7 @@ std::optional<std::string> entry_problem(const SweepEntry& e) {
   if (auto p = check("pitch", e.pitch_deg, -kMaxAbsPitch_deg, kMaxAbsPitch_deg, "degrees")) return p;
   if (auto p = check("roll", e.roll_deg, -kMaxAbsRoll_deg, kMaxAbsRoll_deg, "degrees")) return p;
   if (!(e.utc_unix_s >= kMinUtc_s && e.utc_unix_s < kMaxUtc_s))
-    return "time: " + number_text(e.utc_unix_s) + " s outside the years 1900..2199";
+    return "time: " + format_number(e.utc_unix_s) + " s outside the years 1900..2199";
   return std::nullopt;
 }
 

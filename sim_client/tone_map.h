@@ -1,19 +1,12 @@
-// Display conversion of the service's linear radiance frames (EXR) for people: sweep --png
-// and contact sheets. Same recipe as the service's own PNG frames: auto exposure from the
-// log-average luminance (key 0.18, exposure factor clamped to [0.5, 5000], pixels with
-// luminance >= 10 such as the sun disk ignored), the ACES filmic fit of Narkowicz 2015 and
-// the sRGB transfer function.
+// Display images for people from the service's frame files: sweep --png and contact
+// sheets. Linear radiance frames (EXR) are tone mapped by tone_map_display
+// (common/tone_map.h), the recipe of the service's own PNG frames.
 #pragma once
 
 #include <string>
 #include <vector>
 
 namespace cloudsvc::sim {
-
-// rgb: interleaved linear values (W m^-2 sr^-1 nm^-1), `channels` per pixel (>= 3);
-// returns display values in [0, 1] (sRGB-encoded), same layout; alpha channels become 1.
-// Non-finite values become 0.
-std::vector<float> tone_map_display(const std::vector<float>& rgb, int channels);
 
 // Reads an image; a floating-point one (EXR, HDR) is tone mapped, an integer one (PNG) is
 // taken as display-ready. Returns RGB display values in [0, 1], 3 per pixel. Throws

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <string>
 
-#include "protocol/shm_layout.h"
+#include "protocol/shm/shm_layout.h"
 
 namespace cloudsvc::sim {
 

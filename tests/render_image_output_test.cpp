@@ -1,16 +1,20 @@
 // Frame files (renderer/image_output.h) are written without following or clobbering
 // anything planted in the output folder: the writer used to open a predictable temporary
 // (".frame_000001.tmp<pid>.png") by name, so a symbolic link planted there by another
-// local user made the service overwrite the link's target.
+// local user made the service overwrite the link's target. The PNG frames are tone mapped
+// as sim_client converts the EXR frames (common/tone_map.h).
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "renderer/image_output.h"
+#include "sim_client/tone_map.h"
 
 namespace cloudsvc {
 namespace {
@@ -79,6 +83,41 @@ TEST_F(ImageOutputSafety, NoTemporaryIsLeftAndTheFrameIsReadableByOthers) {
   ASSERT_EQ(::stat(out.c_str(), &st), 0);
   EXPECT_EQ(st.st_mode & 0777, 0644u);
   EXPECT_THROW(write_image((dir_ / "missing" / "f.png").string(), small_frame()), std::runtime_error);
+}
+
+// The service's PNG of a frame and sim_client's display conversion of the same frame
+// written as EXR (sweep --png, contact sheets) agree to 1 step of 255 (the EXR holds half
+// floats, relative step 2^-11); non-finite and negative radiance is black in both.
+TEST_F(ImageOutputSafety, ServicePngAndSimClientConversionOfTheExrAgree) {
+  FrameImage img;
+  img.width = 32;
+  img.height = 8;
+  for (int i = 0; i < img.width * img.height; ++i) {
+    const float r = 1e-3f * std::pow(1.05f, static_cast<float>(i));  // 1e-3 .. 250 W m^-2 sr^-1 nm^-1
+    for (float v : {r, 0.8f * r, 1.2f * r, 0.5f}) img.rgba.push_back(v);
+  }
+  const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+  const float bad[] = {nan, inf, -inf, -1.0f};
+  for (int i = 0; i < 4; ++i) img.rgba[i * 4 * 7] = img.rgba[i * 4 * 7 + 1] = img.rgba[i * 4 * 7 + 2] = bad[i];
+  const fs::path png = dir_ / "out" / "frame.png", exr = dir_ / "out" / "frame.exr";
+  write_image(png.string(), img);
+  write_image(exr.string(), img);
+  const sim::DisplayImage service = sim::read_display_image(png.string());  // 8-bit: as stored
+  const sim::DisplayImage client = sim::read_display_image(exr.string());   // tone mapped
+  ASSERT_EQ(service.rgb.size(), client.rgb.size());
+  ASSERT_EQ(service.rgb.size(), static_cast<std::size_t>(img.width) * img.height * 3);
+  int worst = 0;
+  for (std::size_t k = 0; k < service.rgb.size(); ++k) {
+    const long a = std::lround(service.rgb[k] * 255.0f), b = std::lround(client.rgb[k] * 255.0f);
+    worst = std::max(worst, static_cast<int>(std::labs(a - b)));
+  }
+  EXPECT_LE(worst, 1);
+  for (int i = 0; i < 4; ++i)
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_EQ(service.rgb[i * 3 * 7 + c], 0.0f) << "bad pixel " << i;
+      EXPECT_EQ(client.rgb[i * 3 * 7 + c], 0.0f) << "bad pixel " << i;
+    }
+  EXPECT_EQ(std::lround(service.rgb.back() * 255.0f), 255) << "the brightest pixel saturates";
 }
 
 }  // namespace

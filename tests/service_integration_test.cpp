@@ -6,10 +6,10 @@
 #include <filesystem>
 #include <fstream>
 
+#include "protocol/shm/shm_frame_reader.h"
 #include "service_test_support.h"
 #include "sim_client/flight_log.h"
 #include "sim_client/service_connection.h"
-#include "sim_client/shm_frame_reader.h"
 
 namespace cloudsvc::test {
 namespace {
@@ -43,8 +43,8 @@ TEST(Service, PoseGivesFrameWithEchoInSharedMemory) {
   ASSERT_TRUE(ready.shm_slot.has_value());
   EXPECT_GE(ready.latency_ms, ready.render_ms);
 
-  client::ShmFrameReader reader(svc.shm_name());
-  client::ShmFrame f;
+  ShmFrameReader reader(svc.shm_name());
+  ShmFrame f;
   ASSERT_TRUE(reader.read_latest(0, f));
   EXPECT_EQ(f.info.frame_number, 1u);
   EXPECT_EQ(f.info.lat_deg, 47.45);

@@ -103,7 +103,7 @@ TEST_F(ServiceProtocolLive, SetTimeMovesTheSun) {
     c.send(p);
     const auto ready = c.receive_until<protocol::FrameReady>(60s);
     EXPECT_FALSE(ready.pose.utc_unix_s.has_value());
-    client::ShmFrame f;
+    ShmFrame f;
     EXPECT_TRUE(read_frame(svc_->shm_name(), ready.frame_number, f));
     const FrameStats s = stats_of(f);
     EXPECT_EQ(s.nonfinite, 0u);

@@ -43,13 +43,13 @@ std::int64_t realtime_ns() {
 
 // Renders a pose and reads its frame; the slot's publish time lies between sending the
 // pose and receiving FrameReady (the service publishes before announcing).
-client::ShmFrame render(ServiceConnection& c, const ServiceProcess& svc, double lat) {
+ShmFrame render(ServiceConnection& c, const ServiceProcess& svc, double lat) {
   const std::int64_t sent = realtime_ns();
   c.send(day_pose(lat));
   const auto ready = c.receive_until<protocol::FrameReady>(60s);
   const std::int64_t received = realtime_ns();
   EXPECT_TRUE(ready.shm_slot.has_value());
-  client::ShmFrame f;
+  ShmFrame f;
   EXPECT_TRUE(read_frame(svc.shm_name(), ready.frame_number, f));
   EXPECT_EQ(f.info.lat_deg, lat);
   EXPECT_GT(f.info.publish_unix_ns, sent);
@@ -62,7 +62,7 @@ TEST(ServiceShmOutput, SetViewChoosesRgba8SrgbAndBackToRgba16f) {
   ASSERT_TRUE(svc.running());
   ServiceConnection c(svc.address(), "rgba8");
   c.send(shm_view(protocol::ShmPixelFormat::Rgba8Srgb));
-  const client::ShmFrame f = render(c, svc, 47.45);
+  const ShmFrame f = render(c, svc, 47.45);
   EXPECT_EQ(f.info.pixel_format, CLOUDSVC_SHM_RGBA8_SRGB);
   EXPECT_EQ(f.info.width, 64u);
   EXPECT_EQ(f.info.height, 36u);
@@ -94,7 +94,7 @@ TEST(ServiceShmOutput, SetViewChoosesRgba8SrgbAndBackToRgba16f) {
   EXPECT_GT(top_b, top_r) << "the sky is not blue";
 
   c.send(shm_view(protocol::ShmPixelFormat::Rgba16fLinear));
-  const client::ShmFrame g = render(c, svc, 47.46);
+  const ShmFrame g = render(c, svc, 47.46);
   EXPECT_EQ(g.info.pixel_format, CLOUDSVC_SHM_RGBA16F_LINEAR);
   EXPECT_EQ(g.info.row_bytes, 64u * 8u);
   EXPECT_EQ(g.info.pixel_bytes, 64u * 36u * 8u);

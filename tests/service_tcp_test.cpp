@@ -62,7 +62,7 @@ TEST(ServiceTcp, ReplayOfAShortPoseListGivesOneFramePerPoseInOrderWithEchoes) {
     EXPECT_EQ(ready.width, 64u);
     EXPECT_EQ(ready.height, 36u);
     ASSERT_TRUE(ready.shm_slot.has_value());
-    client::ShmFrame f;
+    ShmFrame f;
     ASSERT_TRUE(read_frame(svc.shm_name(), ready.frame_number, f));
     EXPECT_EQ(f.info.lat_deg, sent.lat_deg);
     EXPECT_EQ(f.info.lon_deg, sent.lon_deg);

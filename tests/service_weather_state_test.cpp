@@ -43,10 +43,10 @@ protocol::Pose pose_at(double utc_s) {
 }
 
 // Renders `p` and reads the frame back from the ring.
-client::ShmFrame render(ServiceConnection& c, const ServiceProcess& svc, const protocol::Pose& p) {
+ShmFrame render(ServiceConnection& c, const ServiceProcess& svc, const protocol::Pose& p) {
   c.send(p);
   const auto ready = c.receive_until<protocol::FrameReady>(60s);
-  client::ShmFrame f;
+  ShmFrame f;
   EXPECT_TRUE(read_frame(svc.shm_name(), ready.frame_number, f)) << "frame " << ready.frame_number;
   return f;
 }
@@ -116,7 +116,7 @@ TEST(ServiceWeatherState, RejectedTileOrLayersLeaveTheFrameAsBeforeAndAnAccepted
   ServiceConnection c(svc.address(), "weather-state");
   expect_accepted(c, cumulus_layer());
   render(c, svc, pose_at(kT));
-  const client::ShmFrame before = render(c, svc, pose_at(kT + 600.0));
+  const ShmFrame before = render(c, svc, pose_at(kT + 600.0));
   const FrameStats s0 = stats_of(before);
   RecordProperty("cloud_fraction_before", std::to_string(s0.cloud_fraction));
   RecordProperty("mean_luminance_before", std::to_string(s0.mean_luminance));
@@ -145,13 +145,13 @@ TEST(ServiceWeatherState, RejectedTileOrLayersLeaveTheFrameAsBeforeAndAnAccepted
                     protocol::CloudLayer{8, 1400.0, 3000.0, 1.0, 2.0, 20.0, 0.0, 0.0}};
   overlap.map_seed = 99;
   EXPECT_EQ(expect_rejected(c, overlap).code, protocol::ErrorCode::InvalidField);
-  const client::ShmFrame after_rejects = render(c, svc, pose_at(kT + 600.0));
+  const ShmFrame after_rejects = render(c, svc, pose_at(kT + 600.0));
   expect_as_before(stats_of(after_rejects), s0, "after the rejected tiles and layers");
 
   // A valid tile clearing the area (coverage 0) is applied: the layer is gone from the view.
   render(c, svc, pose_at(kT));
   expect_accepted(c, coverage_tile(0.0f));
-  const client::ShmFrame cleared = render(c, svc, pose_at(kT + 600.0));
+  const ShmFrame cleared = render(c, svc, pose_at(kT + 600.0));
   const FrameStats s1 = stats_of(cleared);
   RecordProperty("cloud_fraction_cleared", std::to_string(s1.cloud_fraction));
   RecordProperty("mean_luminance_cleared", std::to_string(s1.mean_luminance));

@@ -1,4 +1,4 @@
-/* The shared-memory reader's C ABI (sim_client/cloudsvc_shm.h, layout protocol/shm_layout.h)
+/* The shared-memory reader's C ABI (protocol/shm/cloudsvc_shm.h, layout protocol/shm/shm_layout.h)
  * compiled as C99, not C++: this program lays out a two-slot ring itself, following only
  * the C header, and reads it back through cloudsvc_shm_open / cloudsvc_shm_read_latest /
  * cloudsvc_shm_close. Exit code 0 when every check passes; each failure prints one line. */
@@ -10,7 +10,7 @@
 #include <sys/mman.h>
 #include <unistd.h>
 
-#include "sim_client/cloudsvc_shm.h"
+#include "protocol/shm/cloudsvc_shm.h"
 
 static int failures = 0;
 #define CHECK(cond)                                              \

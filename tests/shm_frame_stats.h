@@ -7,7 +7,7 @@
 #include <cstring>
 #include <string>
 
-#include "sim_client/shm_frame_reader.h"
+#include "protocol/shm/shm_frame_reader.h"
 
 namespace cloudsvc::test {
 
@@ -28,7 +28,7 @@ struct FrameStats {
 };
 
 // Statistics of an RGBA16F linear frame (pixel_format CLOUDSVC_SHM_RGBA16F_LINEAR).
-inline FrameStats stats_of(const client::ShmFrame& f) {
+inline FrameStats stats_of(const ShmFrame& f) {
   FrameStats s;
   const std::size_t n = static_cast<std::size_t>(f.info.width) * f.info.height;
   if (n == 0 || f.info.pixel_format != CLOUDSVC_SHM_RGBA16F_LINEAR) return s;
@@ -55,8 +55,8 @@ inline FrameStats stats_of(const client::ShmFrame& f) {
 
 // Reads frame `frame_number` from ring `shm` (the newest frame must be that one, as it is
 // right after its FrameReady when one client drives the service). False if it is not.
-inline bool read_frame(const std::string& shm, std::uint64_t frame_number, client::ShmFrame& out) {
-  client::ShmFrameReader reader(shm);
+inline bool read_frame(const std::string& shm, std::uint64_t frame_number, ShmFrame& out) {
+  ShmFrameReader reader(shm);
   return reader.read_latest(frame_number - 1, out) && out.info.frame_number == frame_number;
 }
 

@@ -12,9 +12,9 @@
 #include <thread>
 #include <vector>
 
-#include "service/shm_frame_writer.h"
-#include "sim_client/cloudsvc_shm.h"
-#include "sim_client/shm_frame_reader.h"
+#include "protocol/shm/cloudsvc_shm.h"
+#include "protocol/shm/shm_frame_reader.h"
+#include "protocol/shm/shm_frame_writer.h"
 
 namespace cloudsvc {
 namespace {
@@ -26,7 +26,7 @@ std::string unique_name(const char* tag) { return std::string("cloudsvc-test-") 
 TEST(ShmRing, ConcurrentReaderNeverSeesATornFrame) {
   const std::string name = unique_name("torn");
   const int w = 256, h = 128;
-  ShmFrameWriter writer(name, w, h, 3);
+  ShmFrameWriter writer(name, w, h, 0600, 3);  // owner read+write, 3 slots
   std::atomic<bool> done{false};
   std::atomic<int> frames_read{0}, torn{0};
   std::thread reader_thread([&] {
@@ -72,7 +72,7 @@ TEST(ShmRing, ConcurrentReaderNeverSeesATornFrame) {
 
 TEST(ShmRing, ReaderThatDiesHoldsNothing) {
   const std::string name = unique_name("die");
-  ShmFrameWriter writer(name, 64, 32, 3);
+  ShmFrameWriter writer(name, 64, 32, 0600, 3);  // owner read+write, 3 slots
   std::vector<std::uint8_t> px(64 * 32 * 4, 7);
   ShmFrameMeta meta;
   meta.frame_number = 1;
@@ -80,8 +80,8 @@ TEST(ShmRing, ReaderThatDiesHoldsNothing) {
   const pid_t child = ::fork();
   ASSERT_GE(child, 0);
   if (child == 0) {  // a reader that spins until killed
-    client::ShmFrameReader r(name);
-    client::ShmFrame f;
+    ShmFrameReader r(name);
+    ShmFrame f;
     for (;;) r.read_latest(0, f);
   }
   std::this_thread::sleep_for(std::chrono::milliseconds(50));
@@ -91,8 +91,8 @@ TEST(ShmRing, ReaderThatDiesHoldsNothing) {
     meta.frame_number = n;
     writer.write(meta, CLOUDSVC_SHM_RGBA8_SRGB, 64, 32, px.data(), 64 * 4);
   }
-  client::ShmFrameReader r(name);
-  client::ShmFrame f;
+  ShmFrameReader r(name);
+  ShmFrame f;
   ASSERT_TRUE(r.read_latest(0, f));
   EXPECT_EQ(f.info.frame_number, 9u);
   EXPECT_EQ(f.info.width, 64u);
@@ -103,9 +103,9 @@ TEST(ShmRing, OwnerRemovesSegmentAndLiveOwnerIsProtected) {
   const std::string name = unique_name("own");
   {
     ShmFrameWriter writer(name, 16, 16);
-    EXPECT_NO_THROW(client::ShmFrameReader r(name));
+    EXPECT_NO_THROW(ShmFrameReader r(name));
   }
-  EXPECT_THROW(client::ShmFrameReader r(name), std::runtime_error) << "segment must be removed";
+  EXPECT_THROW(ShmFrameReader r(name), std::runtime_error) << "segment must be removed";
 
   int ready[2];
   ASSERT_EQ(::pipe(ready), 0);
@@ -128,6 +128,7 @@ TEST(ShmRing, OwnerRemovesSegmentAndLiveOwnerIsProtected) {
 
 TEST(ShmRing, RejectsOversizeFramesAndBadNames) {
   EXPECT_THROW(ShmFrameWriter("bad/name", 16, 16), std::runtime_error);
+  EXPECT_THROW(ShmFrameWriter("..", 16, 16), std::runtime_error);
   ShmFrameWriter writer(unique_name("size"), 16, 16);
   std::vector<std::uint8_t> px(32 * 32 * 8);
   EXPECT_THROW(writer.write({}, CLOUDSVC_SHM_RGBA16F_LINEAR, 32, 32, px.data(), 32 * 8), std::runtime_error);
@@ -145,7 +146,7 @@ std::int64_t realtime_ns() {
 TEST(ShmRing, SlotCarriesItsPublishTime) {
   const std::string name = unique_name("publish");
   ShmFrameWriter writer(name, 16, 8);
-  client::ShmFrameReader reader(name);
+  ShmFrameReader reader(name);
   char err[256] = {};
   cloudsvc_shm_reader* c = cloudsvc_shm_open(name.c_str(), err, sizeof err);
   ASSERT_NE(c, nullptr) << err;
@@ -157,7 +158,7 @@ TEST(ShmRing, SlotCarriesItsPublishTime) {
     const std::int64_t before = realtime_ns();
     writer.write(meta, CLOUDSVC_SHM_RGBA8_SRGB, 16, 8, px.data(), 16 * 4);
     const std::int64_t after = realtime_ns();
-    client::ShmFrame f;
+    ShmFrame f;
     ASSERT_TRUE(reader.read_latest(n - 1, f));
     EXPECT_EQ(f.info.frame_number, n);
     EXPECT_GE(f.info.publish_unix_ns, before);

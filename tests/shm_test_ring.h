@@ -1,4 +1,4 @@
-// A shared-memory frame ring laid out by a test itself (protocol/shm_layout.h), so that the
+// A shared-memory frame ring laid out by a test itself (protocol/shm/shm_layout.h), so that the
 // readers can be fed well-formed and hostile headers: a POSIX shm object with a name unique
 // to the test process, mapped read-write, unlinked when the TestRing goes away.
 #pragma once
@@ -12,7 +12,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "protocol/shm_layout.h"
+#include "protocol/shm/shm_layout.h"
 
 namespace cloudsvc::test {
 

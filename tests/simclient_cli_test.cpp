@@ -1,6 +1,7 @@
 // The pieces of the sim_client command line that need no service: sweep files (JSON
 // poses, grids, CSV, errors), frame statistics on a synthetic EXR, weather-map tiles,
-// progress text, manifest rows, flag values, replay poses and watch counters.
+// progress text, manifest rows, weather-map flag values, replay poses and watch counters.
+// The flag value parsers shared with cloudsvc are tested in option_values_test.cpp.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -14,18 +15,20 @@
 #include <set>
 #include <sstream>
 
+#include "common/option_values.h"
 #include "protocol/validate.h"
-#include "sim_client/cli_values.h"
 #include "sim_client/commands.h"
 #include "sim_client/contact_sheet.h"
 #include "sim_client/image_stats.h"
 #include "sim_client/manifest.h"
+#include "sim_client/map_flags.h"
 #include "sim_client/map_image.h"
 #include "sim_client/map_tiles.h"
 #include "sim_client/progress.h"
 #include "sim_client/replay_poses.h"
 #include "sim_client/run_summary.h"
 #include "sim_client/sweep_plan.h"
+#include "sim_client/usage_errors.h"
 #include "sim_client/watch_stats.h"
 
 namespace cloudsvc::sim {
@@ -51,12 +54,14 @@ class TempDir {
   fs::path path_;
 };
 
-// The UsageError message of f(), or "" when it does not throw one.
+// The UsageError or cli::FlagError message of f(), or "" when it throws neither.
 template <class F>
 std::string usage_error(F&& f) {
   try {
     f();
   } catch (const UsageError& e) {
+    return e.what();
+  } catch (const cli::FlagError& e) {
     return e.what();
   }
   return "";
@@ -536,20 +541,9 @@ TEST(Manifest, HeaderAndRowWithQuotedText) {
             "/tmp/f/frame_000042.exr");
 }
 
-// ---- flag values ----------------------------------------------------------------------------
+// ---- weather-map flag values ----------------------------------------------------------------
 
-TEST(FlagValues, ParseAndRejectWithOneLineNamingTheFlag) {
-  EXPECT_EQ(parse_flag_size("--size", "64x36"), (std::pair<std::uint32_t, std::uint32_t>{64, 36}));
-  EXPECT_EQ(usage_error([] { parse_flag_size("--size", "640"); }),
-            "--size 640: expected WxH in pixels, each side in [1, 8192], e.g. 640x360");
-  EXPECT_EQ(usage_error([] { parse_flag_size("--size", "8193x10"); }), "--size 8193x10: width 8193 out of range [1, 8192] (pixels)");
-  EXPECT_EQ(parse_flag_number("--fps", "2.5", NumberRange{0, 1000, true, "Hz"}), 2.5);
-  EXPECT_EQ(usage_error([] { parse_flag_number("--fps", "nan", NumberRange{0, 1000, true, "Hz"}); }),
-            "--fps nan: expected a finite number in (0, 1000] (Hz)");
-  EXPECT_EQ(usage_error([] { parse_flag_number("--fps", "0", NumberRange{0, 1000, true, "Hz"}); }),
-            "--fps 0: out of range (0, 1000] (Hz)");
-  EXPECT_EQ(usage_error([] { parse_flag_integer("--max-frames", "-3", 1, 10, "frames"); }),
-            "--max-frames -3: expected a whole number in [1, 10] (frames)");
+TEST(FlagValues, MapBoundsAndChannelsWithOneLineNamingTheFlag) {
   const GeoBounds b = parse_flag_bounds("--bounds", "40,0,50,20");
   EXPECT_EQ(b.lat_min_deg, 40.0);
   EXPECT_EQ(b.lon_max_deg, 20.0);
@@ -560,13 +554,8 @@ TEST(FlagValues, ParseAndRejectWithOneLineNamingTheFlag) {
             (std::vector<std::uint8_t>{protocol::tile_channel::kDensity, protocol::tile_channel::kCoverage}));
   EXPECT_EQ(usage_error([] { parse_flag_channels("--channels", "coverage,coverage"); }),
             "--channels coverage,coverage: channel coverage listed twice");
-  EXPECT_EQ(parse_flag_time("--valid-at", "2026-06-21T12:00Z"), 1782043200.0);
-  EXPECT_NO_THROW(check_address("--connect", "tcp://127.0.0.1:7420"));
-  EXPECT_NO_THROW(check_address("--connect", "tcp://[::1]:7420"));
-  EXPECT_NO_THROW(check_address("--connect", "unix:/tmp/x.sock"));
-  EXPECT_NE(usage_error([] { check_address("--connect", "tcp://127.0.0.1:0"); }), "");
-  EXPECT_NE(usage_error([] { check_address("--connect", "127.0.0.1:7420"); }), "");
-  EXPECT_NE(usage_error([] { check_address("--connect", "tcp://example.com:7420"); }), "");
+  EXPECT_EQ(usage_error([] { parse_flag_bounds("--bounds", "40, 0,50,20"); }),
+            "--bounds 40, 0,50,20: expected lat_min,lon_min,lat_max,lon_max in degrees, e.g. 40,0,50,20");
 }
 
 // ---- replay poses, contact-sheet picks, watch counters -----------------------------------

@@ -1,5 +1,5 @@
-// The parts of `sim_client soak` that need no service: the clients' track, the --duration
-// values, VmRSS from /proc, and the report (key=value lines, JSON, failure verdict) of a
+// The parts of `sim_client soak` that need no service: the clients' track,
+// VmRSS from /proc, and the report (key=value lines, JSON, failure verdict) of a
 // run laid out by hand.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -12,7 +12,6 @@
 
 #include "geodesy/geodetic.h"
 #include "protocol/validate.h"
-#include "sim_client/cli_values.h"
 #include "sim_client/process_rss.h"
 #include "sim_client/soak_summary.h"
 #include "sim_client/soak_track.h"
@@ -62,22 +61,6 @@ TEST(SoakTrack, EveryClientFliesAValidSmoothCoordinatedTurn) {
       same += at_1s[a].lat_deg == at_1s[b].lat_deg && at_1s[a].lon_deg == at_1s[b].lon_deg &&
               at_1s[a].alt_m == at_1s[b].alt_m;
   EXPECT_EQ(same, 0u);
-}
-
-TEST(SoakFlags, DurationInSecondsMinutesOrHours) {
-  EXPECT_DOUBLE_EQ(parse_flag_duration("--duration", "90", 604800.0), 90.0);
-  EXPECT_DOUBLE_EQ(parse_flag_duration("--duration", "2.5s", 604800.0), 2.5);
-  EXPECT_DOUBLE_EQ(parse_flag_duration("--duration", "10m", 604800.0), 600.0);
-  EXPECT_DOUBLE_EQ(parse_flag_duration("--duration", "1.5h", 604800.0), 5400.0);
-  for (const char* bad : {"", "0", "-1m", "10x", "m", "1e400", "nan", "169h", " 5"}) {
-    try {
-      parse_flag_duration("--duration", bad, 604800.0);
-      ADD_FAILURE() << "accepted '" << bad << "'";
-    } catch (const UsageError& e) {
-      EXPECT_EQ(std::string(e.what()).rfind("--duration ", 0), 0u) << e.what();
-      EXPECT_NE(std::string(e.what()).find("minutes (10m)"), std::string::npos) << e.what();
-    }
-  }
 }
 
 TEST(SoakRss, VmRssOfAStatusTextAndOfLiveAndGoneProcesses) {

@@ -1,7 +1,7 @@
 // Overflow-safe checks of a frame ring's declared sizes (shm_ring_geometry.h).
-#include "sim_client/shm_ring_geometry.h"
+#include "protocol/shm/shm_ring_geometry.h"
 
-namespace cloudsvc::client {
+namespace cloudsvc {
 
 namespace {
 
@@ -89,4 +89,4 @@ std::optional<std::string> slot_problem(const cloudsvc_shm_slot& s, const RingGe
   return std::nullopt;
 }
 
-}  // namespace cloudsvc::client
+}  // namespace cloudsvc

@@ -1,4 +1,5 @@
-#include "service/shm_frame_writer.h"
+// The ring writer (shm_frame_writer.h); the publishing sequence is in shm_layout.h.
+#include "protocol/shm/shm_frame_writer.h"
 
 #include <fcntl.h>
 #include <signal.h>
@@ -12,18 +13,13 @@
 #include <ctime>
 #include <stdexcept>
 
+#include "protocol/shm/shm_name.h"
+
 namespace cloudsvc {
 
 namespace {
 
 std::string shm_path(const std::string& name) { return "/" + name; }
-
-bool valid_name(const std::string& name) {
-  if (name.empty() || name.size() > 200) return false;
-  for (char c : name)
-    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.')) return false;
-  return true;
-}
 
 // A segment left by a process that no longer runs may be replaced; a live owner may not.
 void remove_stale_segment(const std::string& path) {
@@ -44,7 +40,7 @@ void remove_stale_segment(const std::string& path) {
 
 ShmFrameWriter::ShmFrameWriter(const std::string& name, int max_width, int max_height, unsigned mode, int slot_count)
     : name_(name), max_width_(max_width), max_height_(max_height), slot_count_(static_cast<std::uint32_t>(slot_count)) {
-  if (!valid_name(name)) throw std::runtime_error("--shm " + name + ": use letters, digits, '-', '_', '.'");
+  if (!valid_shm_name(name)) throw std::runtime_error("shared memory name " + name + ": expected " + shm_name_rule());
   if (max_width < 1 || max_height < 1 || slot_count < 2) throw std::runtime_error("shm: bad ring size");
   const std::string path = shm_path(name);
   remove_stale_segment(path);

@@ -1,4 +1,4 @@
-// Reads frames from the service's shared-memory ring (protocol/shm_layout.h). Lock-free:
+// Reads frames from the service's shared-memory ring (protocol/shm/shm_layout.h). Lock-free:
 // copies a slot between two reads of its seqlock and retries on a concurrent write, so it
 // never returns a torn frame and never slows the writer. Every size the ring declares is
 // checked against the mapped segment (shm_ring_geometry.h) before any byte is read through
@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "protocol/shm_layout.h"
-#include "sim_client/shm_ring_geometry.h"
+#include "protocol/shm/shm_layout.h"
+#include "protocol/shm/shm_ring_geometry.h"
 
-namespace cloudsvc::client {
+namespace cloudsvc {
 
 struct ShmFrame {
   cloudsvc_shm_slot info{};          // slot header copy (frame number, pose echo, size, format)
@@ -57,4 +57,4 @@ class ShmFrameReader {
   RingGeometry geometry_;     // checked at open; the header's sizes are not re-read
 };
 
-}  // namespace cloudsvc::client
+}  // namespace cloudsvc

@@ -1,4 +1,5 @@
-#include "sim_client/shm_frame_reader.h"
+// The ring reader (shm_frame_reader.h); the reading sequence is in shm_layout.h.
+#include "protocol/shm/shm_frame_reader.h"
 
 #include <fcntl.h>
 #include <sys/mman.h>
@@ -10,7 +11,7 @@
 #include <cstring>
 #include <stdexcept>
 
-namespace cloudsvc::client {
+namespace cloudsvc {
 
 namespace {
 
@@ -115,4 +116,4 @@ bool ShmFrameReader::read_latest_header(std::uint64_t after_frame, cloudsvc_shm_
   return copy_latest(after_frame, out, nullptr);
 }
 
-}  // namespace cloudsvc::client
+}  // namespace cloudsvc

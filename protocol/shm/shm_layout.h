@@ -1,25 +1,53 @@
-/* Shared-memory frame ring: the layout shared by the service (writer,
- * service/shm_frame_writer.*) and readers (sim_client/shm_frame_reader.*, C ABI in
- * sim_client/cloudsvc_shm.h). C-compatible, little-endian, fixed-size fields.
- * Documented in docs/PROTOCOL.md ("Shared-memory frames").
+/* Shared-memory frame ring: the module protocol/shm/ (CMake target cloudsvc_shm, GL-free,
+ * POSIX only) and the ring's binary layout, shared by the writer (the service) and every
+ * reader (sim_client, the C ABI for hosts). C-compatible, little-endian, fixed-size
+ * fields. Documented in docs/PROTOCOL.md ("Shared-memory frames").
  *
- * Segment (POSIX shm, name "/<name>"):
+ * Files of the module:
+ *   shm_layout.h           this layout (C and C++)
+ *   shm_name.h             the rule for ring names (NAME of "/NAME")
+ *   shm_frame_writer.*     ShmFrameWriter: creates the segment, publishes frames (service)
+ *   shm_ring_geometry.*    overflow-checked validation of the sizes a ring declares
+ *   shm_frame_reader.*     ShmFrameReader: maps a ring read-only, copies the newest frame
+ *   cloudsvc_shm.h         C ABI of the reader (cloudsvc_shm_c.cpp), for C hosts
+ *
+ * Segment (POSIX shm, name "/<name>", created by the writer with permissions it is given,
+ * owner-only by default; removed by the writer when it stops):
  *   offset 0:                 cloudsvc_shm_header (padded to CLOUDSVC_SHM_HEADER_BYTES)
  *   offset header_bytes + i * slot_stride, i < slot_count:
  *                             cloudsvc_shm_slot (padded to CLOUDSVC_SHM_SLOT_HEADER_BYTES)
  *                             followed by the pixels: height rows of row_bytes, top row first
+ * The writer sizes every slot for its largest frame in the larger format (RGBA16F):
+ * slot_stride = 256 + (max_width x max_height x 8 bytes rounded up to a multiple of 4096).
  *
- * Consistency: every slot is a seqlock. The writer makes `seq` odd, writes the slot,
- * then makes `seq` even (release). A reader copies the slot between two acquire loads of
- * `seq` and keeps the copy only if both are equal and even: it never returns a torn
- * frame and never blocks the writer (a reader that dies holds nothing). The writer fills
- * slots round-robin and then publishes `latest_slot` / `latest_frame`.
+ * Opening (writer): a segment of that name whose header names a live writer_pid is refused
+ * (another service owns it); a stale one (its writer is dead) is unlinked and replaced. The
+ * writer fills the header and stores `magic` last (release): a reader that sees the magic
+ * sees the whole header.
+ *
+ * Publishing one frame (writer), slots used round-robin, never waiting for a reader:
+ *   1. seq = seq + 1 (odd: being written), then a release fence;
+ *   2. write the slot header (frame number, pose echo, size, format) and the pixels;
+ *   3. publish_unix_ns = CLOCK_REALTIME now;
+ *   4. seq = seq + 1 (even: complete), release store;
+ *   5. latest_slot = the slot, then latest_frame = its frame number (release stores).
+ *
+ * Reading the newest frame (reader), lock-free: every slot is a seqlock.
+ *   1. acquire latest_frame; nothing newer than the caller's last frame: done;
+ *   2. acquire latest_slot (must be < slot_count), then the slot's seq s1; odd: retry;
+ *   3. copy the slot header and, if its sizes agree with the ring, the pixels;
+ *   4. acquire fence, reload seq; different from s1: the writer lapped the reader, retry.
+ * A copy is kept only when seq was even and unchanged around it: a reader never returns a
+ * torn frame and never blocks the writer (a reader that dies holds nothing). A reader trusts
+ * none of the sizes in the segment: the header's sizes are checked once against the mapped
+ * segment (shm_ring_geometry.h) and every complete slot header against the ring before its
+ * pixels are copied; a disagreement is reported as a corrupt ring, never read through.
  *
  * Versions: 2 added cloudsvc_shm_slot.publish_unix_ns (version 1 readers refuse a version
  * 2 ring and vice versa: the reader checks `version`).
  */
-#ifndef CLOUDSVC_PROTOCOL_SHM_LAYOUT_H
-#define CLOUDSVC_PROTOCOL_SHM_LAYOUT_H
+#ifndef CLOUDSVC_PROTOCOL_SHM_SHM_LAYOUT_H
+#define CLOUDSVC_PROTOCOL_SHM_SHM_LAYOUT_H
 
 #include <stdint.h>
 
@@ -75,4 +103,4 @@ static_assert(sizeof(cloudsvc_shm_header) <= CLOUDSVC_SHM_HEADER_BYTES, "shm hea
 static_assert(sizeof(cloudsvc_shm_slot) <= CLOUDSVC_SHM_SLOT_HEADER_BYTES, "shm slot header");
 #endif
 
-#endif /* CLOUDSVC_PROTOCOL_SHM_LAYOUT_H */
+#endif /* CLOUDSVC_PROTOCOL_SHM_SHM_LAYOUT_H */

@@ -1,5 +1,5 @@
 /* C ABI of the shared-memory frame reader, for hosts written in C or other languages
- * (link libcloudsvc_sim_client.a and the C++ runtime). Layout: protocol/shm_layout.h.
+ * (link libcloudsvc_shm.a and the C++ runtime). Layout and protocol: protocol/shm/shm_layout.h.
  *
  *   char err[256];
  *   cloudsvc_shm_reader* r = cloudsvc_shm_open("cloudsvc-frames", err, sizeof err);
@@ -10,13 +10,13 @@
  *   // delivery latency, ns: own CLOCK_REALTIME now - info.publish_unix_ns (same machine)
  *   cloudsvc_shm_close(r);
  */
-#ifndef CLOUDSVC_SIM_CLIENT_CLOUDSVC_SHM_H
-#define CLOUDSVC_SIM_CLIENT_CLOUDSVC_SHM_H
+#ifndef CLOUDSVC_PROTOCOL_SHM_CLOUDSVC_SHM_H
+#define CLOUDSVC_PROTOCOL_SHM_CLOUDSVC_SHM_H
 
 #include <stddef.h>
 #include <stdint.h>
 
-#include "protocol/shm_layout.h"
+#include "protocol/shm/shm_layout.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -50,4 +50,4 @@ void cloudsvc_shm_close(cloudsvc_shm_reader* reader);
 }
 #endif
 
-#endif /* CLOUDSVC_SIM_CLIENT_CLOUDSVC_SHM_H */
+#endif /* CLOUDSVC_PROTOCOL_SHM_CLOUDSVC_SHM_H */

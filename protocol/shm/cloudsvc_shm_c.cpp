@@ -1,6 +1,6 @@
-// C ABI wrapper of ShmFrameReader (sim_client/cloudsvc_shm.h). No C++ exception crosses
+// C ABI wrapper of ShmFrameReader (protocol/shm/cloudsvc_shm.h). No C++ exception crosses
 // the C boundary: each becomes a return code and a message.
-#include "sim_client/cloudsvc_shm.h"
+#include "protocol/shm/cloudsvc_shm.h"
 
 #include <cstdio>
 #include <cstring>
@@ -8,11 +8,11 @@
 #include <stdexcept>
 #include <string>
 
-#include "sim_client/shm_frame_reader.h"
+#include "protocol/shm/shm_frame_reader.h"
 
 struct cloudsvc_shm_reader {
-  cloudsvc::client::ShmFrameReader reader;
-  cloudsvc::client::ShmFrame frame;
+  cloudsvc::ShmFrameReader reader;
+  cloudsvc::ShmFrame frame;
   std::string last_error;  // of the last -3
   explicit cloudsvc_shm_reader(const char* name) : reader(name) {}
 };

@@ -1,11 +1,11 @@
 // Writes rendered frames into the POSIX shared-memory ring described in
-// protocol/shm_layout.h (seqlocked slots, round-robin, never blocks on readers).
+// protocol/shm/shm_layout.h (seqlocked slots, round-robin, never blocks on readers).
 #pragma once
 
 #include <cstdint>
 #include <string>
 
-#include "protocol/shm_layout.h"
+#include "protocol/shm/shm_layout.h"
 
 namespace cloudsvc {
 
@@ -19,7 +19,7 @@ struct ShmFrameMeta {
 
 class ShmFrameWriter {
  public:
-  // Creates (or takes over a stale) segment "/name" able to hold frames up to
+  // Creates (or takes over a stale) segment "/name" (name: shm_name.h) able to hold frames up to
   // max_width x max_height in either pixel format, with permissions `mode` (exactly:
   // created owner-only, then set). Throws std::runtime_error if the name is invalid, the
   // segment belongs to another live cloudsvc, or memory cannot be had.

@@ -1,5 +1,5 @@
-// The shared-memory reader (sim_client/shm_frame_reader.h and the C ABI of
-// sim_client/cloudsvc_shm.h) against rings this test lays out itself: a well-formed ring is
+// The shared-memory reader (protocol/shm/shm_frame_reader.h and the C ABI of
+// protocol/shm/cloudsvc_shm.h) against rings this test lays out itself: a well-formed ring is
 // read, and every size field of the ring header and of a slot header that disagrees with
 // the mapped segment (products that wrap around 64 bits included) is refused with an
 // error naming the field, never by reading outside the mapping.
@@ -11,15 +11,14 @@
 #include <string>
 #include <vector>
 
+#include "protocol/shm/cloudsvc_shm.h"
+#include "protocol/shm/shm_frame_reader.h"
+#include "protocol/shm/shm_name.h"
 #include "shm_test_ring.h"
-#include "sim_client/cloudsvc_shm.h"
-#include "sim_client/shm_frame_reader.h"
 
 namespace cloudsvc {
 namespace {
 
-using client::ShmFrame;
-using client::ShmFrameReader;
 using test::TestRing;
 
 // What opening the ring reports: the exception text of ShmFrameReader, "" when it opens.
@@ -217,6 +216,16 @@ TEST(ShmReader, ReadsEveryFrameSizeUpToTheSlotsMaximum) {
   ASSERT_TRUE(reader.read_latest(5, f));
   EXPECT_EQ(f.info.width, 3u);
   EXPECT_EQ(f.pixels.size(), 32u);
+}
+
+// One naming rule for the writer, `cloudsvc serve --shm` and `sim_client watch --shm`.
+TEST(ShmName, LettersDigitsDashUnderscoreDotUpTo200) {
+  for (const std::string& ok :
+       std::vector<std::string>{"cloudsvc-frames", "Cloud_svc-1.frames", "a", "...", std::string(200, 'x')})
+    EXPECT_TRUE(valid_shm_name(ok)) << ok;
+  for (const std::string& bad :
+       std::vector<std::string>{"", ".", "..", "a/b", "/a", "a b", "a\nb", "caf\xc3\xa9", std::string(201, 'x')})
+    EXPECT_FALSE(valid_shm_name(bad)) << bad;
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// Checks of the sizes a shared-memory frame ring declares (protocol/shm_layout.h) against
+// Checks of the sizes a shared-memory frame ring declares (protocol/shm/shm_layout.h) against
 // the segment a reader actually mapped. The header and slot headers live in memory another
 // process writes, so a reader trusts none of their sizes: every product and sum is computed
 // with overflow checks, and a reader keeps a checked copy of the ring's geometry (taken once
@@ -9,9 +9,9 @@
 #include <optional>
 #include <string>
 
-#include "protocol/shm_layout.h"
+#include "protocol/shm/shm_layout.h"
 
-namespace cloudsvc::client {
+namespace cloudsvc {
 
 // The ring's sizes, checked: slot i (i < slot_count) lies entirely inside the mapping, its
 // pixels at most pixel_capacity bytes.
@@ -45,4 +45,4 @@ std::uint32_t shm_bytes_per_pixel(std::uint32_t pixel_format);
 // pixel; pixel_bytes == row_bytes x height; pixel_bytes <= the slot's pixel capacity.
 std::optional<std::string> slot_problem(const cloudsvc_shm_slot& s, const RingGeometry& g);
 
-}  // namespace cloudsvc::client
+}  // namespace cloudsvc

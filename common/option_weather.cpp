@@ -1,0 +1,66 @@
+// Weather flag values (option_weather.h).
+#include "common/option_weather.h"
+
+#include <exception>
+#include <filesystem>
+#include <optional>
+#include <system_error>
+
+#include "common/option_values.h"
+#include "weather/presets.h"
+#include "weather/weather_json.h"
+
+namespace cloudsvc::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// A weather file's error message usually starts with the file name, which the flag
+// line already shows: drop that prefix.
+std::string without_path_prefix(std::string message, const std::string& path) {
+  const std::string prefix = path + ": ";
+  if (message.rfind(prefix, 0) == 0) message.erase(0, prefix.size());
+  return message;
+}
+
+std::string preset_list() { return join(weather::preset_names(), ", "); }
+
+}  // namespace
+
+weather::Weather weather_preset(std::string_view flag, const std::string& name) {
+  if (std::optional<weather::Weather> w = weather::preset(name)) return *w;
+  fail(flag, name, "unknown weather preset (expected one of " + preset_list() + ")");
+}
+
+weather::Weather load_weather_file(std::string_view flag, const std::string& path) {
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (!fs::exists(status)) fail(flag, path, "weather file not found");
+  if (!fs::is_regular_file(status)) fail(flag, path, "not a regular file");
+  weather::Weather w;
+  try {
+    w = weather::load_weather_json(path);
+  } catch (const weather::WeatherFileError& e) {
+    fail(flag, path, without_path_prefix(e.what(), path));
+  } catch (const std::exception& e) {
+    fail(flag, path, std::string("cannot read weather file: ") + e.what());
+  }
+  const std::string problem = weather::validate(w);
+  if (!problem.empty()) fail(flag, path, problem);
+  return w;
+}
+
+weather::Weather resolve_weather(std::string_view flag, const std::string& arg) {
+  if (ends_with_ci(arg, ".json")) return load_weather_file(flag, arg);
+  if (std::optional<weather::Weather> w = weather::preset(arg)) return *w;
+  fail(flag, arg,
+       "unknown weather preset (expected one of " + preset_list() + ", or a path to a .json weather file)");
+}
+
+std::string weather_help(const std::string& default_arg, std::string_view what) {
+  return std::string(what) + ": a preset name (" + preset_list() +
+         ") or a path to a weather file ending in .json (docs/WEATHER.md); default " + default_arg;
+}
+
+}  // namespace cloudsvc::cli

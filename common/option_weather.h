@@ -1,0 +1,25 @@
+// Flag values that name a weather: a preset (weather/presets.h) or a weather file
+// (weather/weather_json.h, docs/WEATHER.md). FlagError (option_values.h) names the flag.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "weather/cloud_layer.h"
+
+namespace cloudsvc::cli {
+
+// The preset called `name`, or FlagError listing the presets.
+weather::Weather weather_preset(std::string_view flag, const std::string& name);
+
+// The weather file at `path`, read and validated; FlagError names the problem (not found,
+// not a regular file, the file's first error).
+weather::Weather load_weather_file(std::string_view flag, const std::string& path);
+
+// A preset name, or a path ending in .json (any case) read as a weather file.
+weather::Weather resolve_weather(std::string_view flag, const std::string& arg);
+
+// "<what>: a preset name (...) or a path to a weather file ending in .json ...; default X".
+std::string weather_help(const std::string& default_arg, std::string_view what = "Weather");
+
+}  // namespace cloudsvc::cli

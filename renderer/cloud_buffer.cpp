@@ -20,24 +20,24 @@ void CloudBuffer::ensure_size(int w, int h, int divisor) {
   }
   w_ = c.x;
   h_ = c.y;
-  prev_view_.reset();
+  prev_frame_.reset();
 }
 
 std::size_t CloudBuffer::gpu_bytes() const { return 6 * static_cast<std::size_t>(w_) * h_ * 16; }
 
-TemporalPlan CloudBuffer::start_frame(const ViewRequest& view, const RenderQuality& quality,
-                                      const weather::Weather& weather, const WindAnchor& anchor) {
-  const bool history = prev_view_ && history_usable(*prev_view_, prev_quality_, view, quality);
+TemporalPlan CloudBuffer::start_frame(const FrameContext& frame, const RenderQuality& quality) {
+  const ViewRequest& view = frame.view;
+  const bool history = prev_frame_ && history_usable(prev_frame_->view, prev_quality_, view, quality);
   std::optional<Reprojection> rep;
-  if (history) rep = make_reprojection(*prev_view_, view, weather, anchor);
+  if (history) rep = make_reprojection(*prev_frame_, frame);
   const bool fast = fast_motion_.update(rep && fast_cloud_motion(*rep, quality), history);
-  const ViewRequest* prev = history ? &*prev_view_ : nullptr;
+  const ViewRequest* prev = history ? &prev_frame_->view : nullptr;
   const TemporalPlan plan = plan_temporal_frame(view, quality, history, prev, fast);
   const TemporalUniforms tu = pack_temporal_uniforms(plan, quality, rep ? &*rep : nullptr, prev);
   glNamedBufferSubData(uniforms_.id(), 0, sizeof(TemporalUniforms), &tu);
   current_ = 1 - current_;
-  prev_view_ = view;
-  prev_view_->reset_history = false;
+  prev_frame_ = frame;
+  prev_frame_->view.reset_history = false;
   prev_quality_ = quality;
   return plan;
 }
@@ -47,7 +47,7 @@ void CloudBuffer::clear_current() {
   const float empty_radiance[4] = {0.0f, 0.0f, 0.0f, 1.0f}, empty_depth[4] = {1e7f, 0.0f, -1.0f, 0.0f};
   glClearTexImage(radiance_[current_].id(), 0, GL_RGBA, GL_FLOAT, empty_radiance);
   glClearTexImage(depth_[current_].id(), 0, GL_RGBA, GL_FLOAT, empty_depth);
-  prev_view_.reset();
+  prev_frame_.reset();
 }
 
 void CloudBuffer::take_fresh_as_current() {

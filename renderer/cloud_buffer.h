@@ -11,6 +11,7 @@
 
 #include "renderer/api/render_quality.h"
 #include "renderer/api/view_request.h"
+#include "renderer/frame_context.h"
 #include "renderer/gl/gl_objects.h"
 #include "renderer/temporal_reprojection.h"
 #include "renderer/temporal_uniforms.h"
@@ -29,15 +30,14 @@ class CloudBuffer {
 
   // Decides this frame's temporal plan (history usable, stride, offset), uploads the
   // temporal uniforms, and makes the other resolved buffer the one this frame writes.
-  TemporalPlan start_frame(const ViewRequest& view, const RenderQuality& quality, const weather::Weather& weather,
-                           const WindAnchor& anchor);
+  TemporalPlan start_frame(const FrameContext& frame, const RenderQuality& quality);
   // This frame marches nothing: its resolved buffer holds no cloud, and the next frame
   // starts a new history.
   void clear_current();
   // Every pixel marched, no history: the fresh samples become this frame's resolved buffer
   // (what the resolve would copy).
   void take_fresh_as_current();
-  void reset_history() { prev_view_.reset(); }
+  void reset_history() { prev_frame_.reset(); }
 
   // Binds the temporal uniforms at gpu::ubo::TEMPORAL.
   void bind_uniforms() const;
@@ -55,7 +55,7 @@ class CloudBuffer {
   int current_ = 0;  // index of this frame's resolved buffer
   int w_ = 0, h_ = 0;
   gl::Buffer uniforms_;
-  std::optional<ViewRequest> prev_view_;  // the last frame, while its buffer may be reused
+  std::optional<FrameContext> prev_frame_;  // the last frame, while its buffer may be reused
   RenderQuality prev_quality_;
   FastMotionHold fast_motion_;  // 1/4 px instead of 1/16 while the clouds move fast
 };

@@ -77,9 +77,9 @@ void CloudRenderer::cull_layers_without_cloud_in_view(FrameContext& frame, const
   culled_layers_ = mask;
 }
 
-TemporalPlan CloudRenderer::march_and_resolve(const ViewRequest& view, const RenderQuality& quality,
+TemporalPlan CloudRenderer::march_and_resolve(const FrameContext& frame, const RenderQuality& quality,
                                               bool meets_a_layer, const CloudPassInputs& inputs) {
-  TemporalPlan plan = cloud_buffer_.start_frame(view, quality, weather_, *wind_anchor_);
+  TemporalPlan plan = cloud_buffer_.start_frame(frame, quality);
   if (weather_.layers.empty() || !meets_a_layer) {
     // No cloud layer, or none that any ray of this frame meets (above a deck looking up:
     // renderer/layers_in_view.h): no march and nothing to resolve; the next frame starts
@@ -130,11 +130,10 @@ FrameImage CloudRenderer::render(const ViewRequest& view, const RenderQuality& q
   // The map serves the ground's pixels (and the light volume built with it, the march's):
   // not updated while no ray sees the ground and none that needs the volume is marched.
   const bool shadow_needed = rays.sees_ground || (quality.light_volume && rays.meets_a_layer);
-  const bool shadow_rebuilt = shadow_map_.update(frame, inputs, weather_, *wind_anchor_, weather_generation_,
-                                                 quality.light_steps, !quality.ground_shadow_map,
-                                                 quality.light_volume, shadow_needed);
+  const bool shadow_rebuilt = shadow_map_.update(frame, inputs, weather_generation_, quality.light_steps,
+                                                 !quality.ground_shadow_map, quality.light_volume, shadow_needed);
   timer_.end();
-  const TemporalPlan plan = march_and_resolve(view, quality, rays.meets_a_layer, inputs);  // 4., 5.
+  const TemporalPlan plan = march_and_resolve(frame, quality, rays.meets_a_layer, inputs);  // 4., 5.
   timer_.begin(kCompositePass);  // 6.
   composite_.run(inputs, shadow_map_, cloud_buffer_);
   timer_.end();

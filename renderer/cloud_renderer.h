@@ -59,7 +59,7 @@ class CloudRenderer {
  private:
   void cull_layers_without_cloud_in_view(FrameContext& frame, const weather::WeatherTimeline::Blend& blend);
   // Steps 4-5; returns the frame's temporal plan (stride 0: nothing marched).
-  TemporalPlan march_and_resolve(const ViewRequest& view, const RenderQuality& quality, bool meets_a_layer,
+  TemporalPlan march_and_resolve(const FrameContext& frame, const RenderQuality& quality, bool meets_a_layer,
                                  const CloudPassInputs& inputs);
   FrameStats frame_stats(const FrameContext& frame, const AtmosphereLuts::ViewLutUpdate& view_luts,
                          const TemporalPlan& plan, bool shadow_rebuilt, const FrameCounters& counters) const;

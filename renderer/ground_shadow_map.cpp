@@ -11,9 +11,9 @@ namespace cloudsvc {
 
 namespace {
 
-double horizontal_distance(const ViewRequest& a, const ViewRequest& b) {
-  const glm::dvec3 d = geo::geodetic_to_ecef(b.position) - geo::geodetic_to_ecef(a.position);
-  const glm::dvec3 up = geo::enu_to_ecef(a.position.lat_deg, a.position.lon_deg)[2];
+double horizontal_distance(const FrameContext& a, const FrameContext& b) {
+  const glm::dvec3 d = b.camera_ecef - a.camera_ecef;
+  const glm::dvec3 up = a.enu_to_ecef[2];
   return glm::length(d - glm::dot(d, up) * up);
 }
 
@@ -21,19 +21,18 @@ double horizontal_distance(const ViewRequest& a, const ViewRequest& b) {
 
 double shadow_map_warp(double alt_m) { return std::max(kMinWarpM, 2.0 * alt_m); }
 
-std::string shadow_map_stale_reason(const ShadowMapKey& key, const ViewRequest& view, const glm::dvec3& sun_ecef,
-                                    std::uint64_t weather_generation, const weather::Weather& weather,
-                                    const WindAnchor& wind_anchor) {
+std::string shadow_map_stale_reason(const ShadowMapKey& key, const FrameContext& frame,
+                                    std::uint64_t weather_generation) {
   if (weather_generation != key.weather_generation) return "weather changed";
-  const double sun_deg = std::acos(std::clamp(glm::dot(sun_ecef, key.sun_ecef), -1.0, 1.0)) * 180.0 / M_PI;
+  const double sun_deg = std::acos(std::clamp(glm::dot(frame.sun_ecef, key.anchor.sun_ecef), -1.0, 1.0)) * 180.0 / M_PI;
   if (sun_deg > kSunTolDeg) return "sun moved";
-  if (horizontal_distance(key.anchor, view) > kReachFraction * key.warp_m) return "camera left the core";
-  const double k = shadow_map_warp(view.position.alt_m);
+  if (horizontal_distance(key.anchor, frame) > kReachFraction * key.warp_m) return "camera left the core";
+  const double k = shadow_map_warp(frame.camera_altitude_m);
   if (k > 1.5 * key.warp_m || k < key.warp_m / 1.5) return "altitude changed";
   // drift of each layer's field under the camera since the build
-  const Reprojection r = make_reprojection(key.anchor, view, weather, wind_anchor);
-  const glm::dvec3 under_camera(0.0, 0.0, -view.position.alt_m);
-  for (std::size_t i = 0; i < std::min<std::size_t>(weather.layers.size(), gpu::kMaxLayers); ++i) {
+  const Reprojection r = make_reprojection(key.anchor, frame);
+  const glm::dvec3 under_camera(0.0, 0.0, -frame.camera_altitude_m);
+  for (int i = 0; i < frame.layer_count; ++i) {
     const glm::dvec3 with_wind = glm::dvec3(r.transform[i] * glm::dvec4(under_camera, 1.0));
     const glm::dvec3 without = glm::dvec3(r.transform[kGroundTransform] * glm::dvec4(under_camera, 1.0));
     if (glm::length(with_wind - without) > kReachFraction * key.warp_m) return "wind drift";
@@ -61,9 +60,8 @@ GroundShadowMap::GroundShadowMap()
 }
 
 bool GroundShadowMap::update(const FrameContext& frame, const CloudPassInputs& inputs,
-                             const weather::Weather& weather, const WindAnchor& wind_anchor, std::uint64_t weather_generation, int light_steps,
-                             bool per_pixel, bool light_volume, bool needed) {
-  const ViewRequest& view = frame.view;
+                             std::uint64_t weather_generation, int light_steps, bool per_pixel, bool light_volume,
+                             bool needed) {
   ShadowMapUniforms su{};
   for (auto& m : su.to_anchor) m = glm::mat4(1.0f);
   const auto upload = [&] { glNamedBufferSubData(uniforms_.id(), 0, sizeof(ShadowMapUniforms), &su); };
@@ -73,16 +71,15 @@ bool GroundShadowMap::update(const FrameContext& frame, const CloudPassInputs& i
   }
   const bool night = frame.sun_enu.z < std::sin(kNightDeg * M_PI / 180.0);
   bool rebuilt = false;
-  if (night || weather.layers.empty()) {
+  if (night || frame.layer_count == 0) {
     key_.reset();
   } else if (per_pixel) {
     su.march_per_pixel = 1;
   } else {
     const bool volume_missing = light_volume && key_ && (!key_->light_volume || key_->light_steps != light_steps);
     if (!key_ || volume_missing ||
-        !shadow_map_stale_reason(*key_, view, frame.sun_ecef, weather_generation, weather, wind_anchor).empty()) {
-      key_ = ShadowMapKey{view, frame.sun_ecef, weather_generation, shadow_map_warp(view.position.alt_m), light_volume,
-                          light_steps};
+        !shadow_map_stale_reason(*key_, frame, weather_generation).empty()) {
+      key_ = ShadowMapKey{frame, weather_generation, shadow_map_warp(frame.camera_altitude_m), light_volume, light_steps};
       su.warp_m = static_cast<float>(key_->warp_m);
       su.map_texels = kSize;
       su.map_valid = 1;
@@ -91,7 +88,7 @@ bool GroundShadowMap::update(const FrameContext& frame, const CloudPassInputs& i
       upload();
       inputs.bind();
       glBindBufferBase(GL_UNIFORM_BUFFER, gpu::ubo::SHADOW_MAP, uniforms_.id());
-      const int layers = static_cast<int>(std::min<std::size_t>(weather.layers.size(), gpu::kMaxLayers));
+      const int layers = frame.layer_count;
       build_prog_.use();  // (the light volume pass does not read the map it is built with)
       glBindImageTexture(gpu::img::SHADOW_MAP_OUT, map_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
       gl::dispatch_2d(kSize, kSize, layers);
@@ -102,7 +99,7 @@ bool GroundShadowMap::update(const FrameContext& frame, const CloudPassInputs& i
       }
       rebuilt = true;
     }
-    const Reprojection r = make_reprojection(key_->anchor, view, weather, wind_anchor);
+    const Reprojection r = make_reprojection(key_->anchor, frame);
     for (int i = 0; i < gpu::kMaxLayers; ++i) su.to_anchor[i] = glm::mat4(r.transform[i]);
     su.warp_m = static_cast<float>(key_->warp_m);
     su.map_texels = kSize;

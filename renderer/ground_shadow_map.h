@@ -39,8 +39,7 @@ namespace cloudsvc {
 
 // What the map was built for.
 struct ShadowMapKey {
-  ViewRequest anchor;          // camera view at the build
-  glm::dvec3 sun_ecef{0.0};    // unit vector to the sun (ECEF) at the build
+  FrameContext anchor;         // the frame of the build (its camera is the anchor)
   std::uint64_t weather_generation = 0;
   double warp_m = 0.0;         // K
   bool light_volume = false;   // the light volume was built too
@@ -55,10 +54,9 @@ constexpr double kMinWarpM = 8000.0;
 // Warp scale K for a camera at altitude alt_m: max(kMinWarpM, 2 altitude).
 double shadow_map_warp(double alt_m);
 
-// Why the map must be rebuilt for this view ("" = it need not be).
-std::string shadow_map_stale_reason(const ShadowMapKey& key, const ViewRequest& view, const glm::dvec3& sun_ecef,
-                                    std::uint64_t weather_generation, const weather::Weather& weather,
-                                    const WindAnchor& wind_anchor);
+// Why the map must be rebuilt for this frame ("" = it need not be).
+std::string shadow_map_stale_reason(const ShadowMapKey& key, const FrameContext& frame,
+                                    std::uint64_t weather_generation);
 
 class GroundShadowMap {
  public:
@@ -70,13 +68,11 @@ class GroundShadowMap {
   // `frame`), then uploads the lookup uniforms for this view. Returns true if it rebuilt.
   // per_pixel: no map; the composite marches the shadows of every ground pixel.
   // light_volume: also build the light volume (with the map, light_steps light steps;
-  // not with per_pixel). needed = false (no ground in
-  // view and no march that reads the volume): nothing is built or marched, the lookups
+  // not with per_pixel). needed = false (no ground in view and no march that reads the
+  // volume): nothing is built or marched, the lookups
   // are switched off for this frame, and the map kept for a later frame that needs it.
-  bool update(const FrameContext& frame, const CloudPassInputs& inputs, const weather::Weather& weather,
-              const WindAnchor& wind_anchor,
-              std::uint64_t weather_generation, int light_steps, bool per_pixel, bool light_volume,
-              bool needed = true);
+  bool update(const FrameContext& frame, const CloudPassInputs& inputs, std::uint64_t weather_generation,
+              int light_steps, bool per_pixel, bool light_volume, bool needed = true);
 
   // Binds the lookup uniforms (gpu::ubo::SHADOW_MAP), the map (gpu::tex::GROUND_SHADOW_MAP)
   // and the light volume (gpu::tex::LIGHT_VOLUME) for the passes that read them.

@@ -30,10 +30,11 @@ bool same_march(const RenderQuality& a, const RenderQuality& b) {
 
 // current local -> previous local for a field that moves by the ECEF rotation q (the
 // position X' at the previous time of the material now at X is q X).
-glm::dmat4 local_transform(const glm::dmat3& q, const ViewRequest& prev, const ViewRequest& cur) {
-  const glm::dvec3 cam_cur = geo::geodetic_to_ecef(cur.position), cam_prev = geo::geodetic_to_ecef(prev.position);
-  const glm::dmat3 e_cur = geo::enu_to_ecef(cur.position.lat_deg, cur.position.lon_deg);
-  const glm::dmat3 e_prev = geo::enu_to_ecef(prev.position.lat_deg, prev.position.lon_deg);
+glm::dmat4 local_transform(const glm::dmat3& q, const FrameContext& prev, const FrameContext& cur) {
+  const glm::dvec3& cam_cur = cur.camera_ecef;
+  const glm::dvec3& cam_prev = prev.camera_ecef;
+  const glm::dmat3& e_cur = cur.enu_to_ecef;
+  const glm::dmat3& e_prev = prev.enu_to_ecef;
   const glm::dmat3 a = glm::transpose(e_prev) * q * e_cur;
   // q cam_cur - cam_prev without cancellation: (cam_cur - cam_prev) + (q - I) cam_cur
   const glm::dvec3 b = glm::transpose(e_prev) * ((cam_cur - cam_prev) + (q - glm::dmat3(1.0)) * cam_cur);
@@ -75,41 +76,41 @@ bool history_usable(const ViewRequest& prev, const RenderQuality& prev_quality, 
   return glm::dot(a.forward, b.forward) >= std::cos(kMaxHistoryTurnDeg * M_PI / 180.0);
 }
 
-Reprojection make_reprojection(const ViewRequest& prev, const ViewRequest& cur, const weather::Weather& weather,
-                               const WindAnchor& anchor) {
+Reprojection make_reprojection(const FrameContext& prev, const FrameContext& cur) {
   Reprojection r;
   const glm::dmat4 ground = local_transform(glm::dmat3(1.0), prev, cur);
   for (auto& t : r.transform) t = ground;
-  const int n = std::min<int>(static_cast<int>(weather.layers.size()), kGroundTransform);
+  const int n = std::min(cur.layer_count, prev.layer_count);
   for (int i = 0; i < n; ++i) {
-    const weather::Wind& w = weather.layers[static_cast<size_t>(i)].wind;
     // The field is sampled at rot(t) X: material at X now sat at rot(prev)^T rot(cur) X.
-    const glm::dmat3 q = glm::transpose(wind_rotation(w, anchor, prev.unix_time_s)) *
-                         wind_rotation(w, anchor, cur.unix_time_s);
+    const glm::dmat3 q = glm::transpose(prev.layers[static_cast<size_t>(i)].field_rotation) *
+                         cur.layers[static_cast<size_t>(i)].field_rotation;
     r.transform[i] = local_transform(q, prev, cur);
   }
-  r.prev_axes = geo::body_axes_enu(prev.attitude);
-  r.cloud_motion_px = cloud_motion_px(prev, cur, weather);
+  r.prev_axes = prev.axes;
+  r.cloud_motion_px = cloud_motion_px(prev, cur);
   return r;
 }
 
-double cloud_motion_px(const ViewRequest& prev, const ViewRequest& cur, const weather::Weather& weather) {
-  if (weather.layers.empty()) return 0.0;
-  const geo::BodyAxes a = geo::body_axes_enu(prev.attitude), b = geo::body_axes_enu(cur.attitude);
+double cloud_motion_px(const FrameContext& prev, const FrameContext& cur) {
+  if (cur.layer_count == 0) return 0.0;
+  const geo::BodyAxes& a = prev.axes;
+  const geo::BodyAxes& b = cur.axes;
   // both sets of axes in ECEF (the local frames of the two positions differ)
-  const glm::dmat3 ea = geo::enu_to_ecef(prev.position.lat_deg, prev.position.lon_deg);
-  const glm::dmat3 eb = geo::enu_to_ecef(cur.position.lat_deg, cur.position.lon_deg);
+  const glm::dmat3& ea = prev.enu_to_ecef;
+  const glm::dmat3& eb = cur.enu_to_ecef;
   const auto angle = [](glm::dvec3 u, glm::dvec3 v) { return std::atan2(glm::length(glm::cross(u, v)), glm::dot(u, v)); };
   const double turn = std::max(angle(ea * a.forward, eb * b.forward), angle(ea * a.up, eb * b.up));
   double nearest_m = 1e30;
-  for (const weather::CloudLayer& l : weather.layers) {
-    const double alt = cur.position.alt_m;
+  for (int i = 0; i < cur.layer_count; ++i) {
+    const weather::CloudLayer& l = cur.layers[static_cast<size_t>(i)].layer;
+    const double alt = cur.camera_altitude_m;
     const double d = alt < l.base_m ? l.base_m - alt : (alt > l.top_m ? alt - l.top_m : 0.0);
     nearest_m = std::min(nearest_m, d);
   }
-  const double moved_m = glm::length(geo::geodetic_to_ecef(cur.position) - geo::geodetic_to_ecef(prev.position));
+  const double moved_m = glm::length(cur.camera_ecef - prev.camera_ecef);
   const double parallax = std::atan(moved_m / std::max(nearest_m, 1.0));
-  const double pixel_rad = cur.fov_deg * kDegToRad / static_cast<double>(std::max(cur.width, 1));
+  const double pixel_rad = cur.view.fov_deg * kDegToRad / static_cast<double>(std::max(cur.view.width, 1));
   return (turn + parallax) / pixel_rad;
 }
 

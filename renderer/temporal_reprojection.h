@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include "renderer/api/frame_image.h"
+#include "renderer/frame_context.h"
 #include "renderer/api/render_quality.h"
 #include "renderer/api/view_request.h"
 #include "renderer/temporal_uniforms.h"
@@ -58,9 +59,10 @@ struct Reprojection {
 // layer (0 inside a layer: there clouds can be as close as the camera is to them, and the
 // estimate is the displacement over 1 m), divided by the horizontal angle of a pixel.
 // The layers' wind is left out (tens of m/s against the camera's hundreds).
-double cloud_motion_px(const ViewRequest& prev, const ViewRequest& cur, const weather::Weather& weather);
-Reprojection make_reprojection(const ViewRequest& prev, const ViewRequest& cur, const weather::Weather& weather,
-                               const WindAnchor& anchor);
+double cloud_motion_px(const FrameContext& prev, const FrameContext& cur);
+// From the two frames' contexts (renderer/frame_context.h): their camera frames and each
+// layer's wind rotation at its time (the same wind anchor).
+Reprojection make_reprojection(const FrameContext& prev, const FrameContext& cur);
 
 // Whether the clouds move by more than quality.fast_motion_px per frame (0 = never).
 bool fast_cloud_motion(const Reprojection& r, const RenderQuality& quality);

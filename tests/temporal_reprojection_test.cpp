@@ -12,6 +12,17 @@
 namespace cloudsvc {
 namespace {
 
+// make_reprojection and cloud_motion_px of the two views' frame contexts, built as
+// CloudRenderer builds them (one wind anchor).
+Reprojection reprojection_of(const ViewRequest& prev, const ViewRequest& cur, const weather::Weather& w,
+                             const WindAnchor& anchor) {
+  return make_reprojection(make_frame_context(prev, w, anchor), make_frame_context(cur, w, anchor));
+}
+double motion_px(const ViewRequest& prev, const ViewRequest& cur, const weather::Weather& w) {
+  const WindAnchor anchor{prev.position, prev.unix_time_s};
+  return cloud_motion_px(make_frame_context(prev, w, anchor), make_frame_context(cur, w, anchor));
+}
+
 ViewRequest view_at(double lat, double lon, double alt, double heading, double pitch, double roll, double t) {
   ViewRequest v;
   v.position = {lat, lon, alt};
@@ -32,7 +43,7 @@ glm::dvec3 apply(const glm::dmat4& m, const glm::dvec3& p) { return glm::dvec3(m
 TEST(TemporalReprojection, GroundTransformMapsTheSameWorldPointBetweenCameras) {
   const ViewRequest prev = view_at(47.45, 8.56, 1800.0, 250.0, 3.0, 1.0, 1000.0);
   const ViewRequest cur = view_at(47.4503, 8.5592, 1795.0, 250.1, 3.0, 1.5, 1000.0 + 1.0 / 30.0);
-  const Reprojection r = make_reprojection(prev, cur, weather::Weather{}, WindAnchor{prev.position, prev.unix_time_s});
+  const Reprojection r = reprojection_of(prev, cur, weather::Weather{}, WindAnchor{prev.position, prev.unix_time_s});
   for (const glm::dvec3 p : {glm::dvec3(100.0, 2000.0, -50.0), glm::dvec3(-30000.0, 80000.0, 1500.0)}) {
     const glm::dvec3 world = to_ecef(cur, p);
     const glm::dvec3 expected = glm::transpose(geo::enu_to_ecef(prev.position.lat_deg, prev.position.lon_deg)) *
@@ -51,7 +62,7 @@ TEST(TemporalReprojection, LayerTransformFollowsTheWind) {
   const ViewRequest prev = view_at(47.45, 8.56, 1000.0, 0.0, 0.0, 0.0, 5000.0);
   const ViewRequest cur = view_at(47.45, 8.56, 1000.0, 0.0, 0.0, 0.0, 5002.0);  // 2 s later, same camera
   const WindAnchor anchor{prev.position, 4000.0};
-  const Reprojection r = make_reprojection(prev, cur, w, anchor);
+  const Reprojection r = reprojection_of(prev, cur, w, anchor);
   // Material now 5 km north of the camera sat 2 s of wind upwind: (-60, +20) m in ENU.
   const glm::dvec3 p(0.0, 5000.0, 500.0);
   const glm::dvec3 was = apply(r.transform[0], p);
@@ -131,37 +142,37 @@ TEST(TemporalReprojection, FastCloseMotionMarchesMorePixels) {
   w.layers.push_back(l);
   const double pixel_rad = 60.0 * M_PI / 180.0 / 160.0;  // view_at: 160 px, 60 deg
   const ViewRequest a = view_at(47.45, 8.56, 2500.0, 90.0, 0.0, 0.0, 100.0);
-  EXPECT_EQ(cloud_motion_px(a, a, w), 0.0);
+  EXPECT_EQ(motion_px(a, a, w), 0.0);
   ViewRequest turned = a;
   turned.attitude.heading_deg += 1.0;
-  EXPECT_NEAR(cloud_motion_px(a, turned, w), (M_PI / 180.0) / pixel_rad, 1e-6);
+  EXPECT_NEAR(motion_px(a, turned, w), (M_PI / 180.0) / pixel_rad, 1e-6);
   turned.attitude.roll_deg += 2.0;  // the up axis turns by 2 deg about forward
-  EXPECT_NEAR(cloud_motion_px(a, turned, w), 2.0 * (M_PI / 180.0) / pixel_rad, 0.01);
+  EXPECT_NEAR(motion_px(a, turned, w), 2.0 * (M_PI / 180.0) / pixel_rad, 0.01);
   // 250 m/s at 30 frames/s, 500 m above the layer top
   const glm::dvec3 step = geo::enu_to_ecef(a.position.lat_deg, a.position.lon_deg) * glm::dvec3(250.0 / 30.0, 0.0, 0.0);
   ViewRequest flown = a;
   flown.position = geo::ecef_to_geodetic(geo::geodetic_to_ecef(a.position) + step);
   flown.unix_time_s += 1.0 / 30.0;
-  EXPECT_NEAR(cloud_motion_px(a, flown, w), std::atan(250.0 / 30.0 / 500.0) / pixel_rad, 0.01);
+  EXPECT_NEAR(motion_px(a, flown, w), std::atan(250.0 / 30.0 / 500.0) / pixel_rad, 0.01);
   // the same speed at 10 km: slow across the image
   ViewRequest high_a = a, high_b = flown;
   high_a.position.alt_m = high_b.position.alt_m = 10000.0;
-  EXPECT_LT(cloud_motion_px(high_a, high_b, w), 0.2);
+  EXPECT_LT(motion_px(high_a, high_b, w), 0.2);
   // inside the layer: clouds may be metres away
   ViewRequest in_a = a, in_b = flown;
   in_a.position.alt_m = in_b.position.alt_m = 1500.0;
-  EXPECT_GT(cloud_motion_px(in_a, in_b, w), 100.0);
-  EXPECT_EQ(cloud_motion_px(a, flown, weather::Weather{}), 0.0);  // no clouds, nothing moves
+  EXPECT_GT(motion_px(in_a, in_b, w), 100.0);
+  EXPECT_EQ(motion_px(a, flown, weather::Weather{}), 0.0);  // no clouds, nothing moves
 
   RenderQuality q;
   q.temporal_reuse = true;
   q.temporal_stride = 4;
   q.fast_motion_px = 1.0;
   const WindAnchor anchor{a.position, a.unix_time_s};
-  const Reprojection fast = make_reprojection(a, flown, w, anchor);
+  const Reprojection fast = reprojection_of(a, flown, w, anchor);
   EXPECT_TRUE(fast_cloud_motion(fast, q));
   EXPECT_EQ(plan_temporal_frame(flown, q, true, &a, true).stride, 2);
-  const Reprojection slow = make_reprojection(high_a, high_b, w, anchor);
+  const Reprojection slow = reprojection_of(high_a, high_b, w, anchor);
   EXPECT_FALSE(fast_cloud_motion(slow, q));
   EXPECT_EQ(plan_temporal_frame(high_b, q, true, &high_a, false).stride, 4);
   EXPECT_EQ(plan_temporal_frame(flown, q, false, nullptr, true).stride, 1);  // no history: all

@@ -1,6 +1,6 @@
 // Monte Carlo slab radiative transfer (renderer/model/slab_monte_carlo.h) and the
 // renderer's light model for the same slab (renderer/model/slab_renderer_model.h):
-// building blocks, physical limits with known answers, the seed-001 sanity band, and
+// building blocks, physical limits with known answers, the Bouthors et al. 2008 transmittance band, and
 // a printed error table of the renderer model against the Monte Carlo.
 #include <gtest/gtest.h>
 
@@ -348,7 +348,7 @@ TEST(SlabMc, DiffuseTransmittanceFollowsTwoStreamTrend) {
 //  - With the renderer's Q_ext = 2 the slab is twice as thick optically, so T must be
 //    lower, but not by more than the factor 2 that halving 1/(1 + k tau) can give at
 //    most (observed 0.55-0.8): assert 0.45 < T / T_fit < 1.
-TEST(SlabMc, Seed001TransmittanceBand) {
+TEST(SlabMc, BouthorsTransmittanceBand) {
   struct Row {
     double sun, H, fit;
   };
@@ -366,7 +366,7 @@ TEST(SlabMc, Seed001TransmittanceBand) {
       o.photons = s.optical_depth() > 50.0 ? 3000 : 6000;
       const SlabMcResult r = run_slab_monte_carlo(s, o);
       const double ratio = r.transmitted.mean / row.fit;
-      std::printf("seed 001: sun %2.0f H %5.0f m Q_ext %.0f (tau %5.1f): MC T %.4f ± %.4f, fit %.4f, ratio %.3f\n",
+      std::printf("Bouthors 2008: sun %2.0f H %5.0f m Q_ext %.0f (tau %5.1f): MC T %.4f ± %.4f, fit %.4f, ratio %.3f\n",
                   row.sun, row.H, q_ext, s.optical_depth(), r.transmitted.mean, r.transmitted.std_error, row.fit, ratio);
       if (q_ext == 1.0) {
         EXPECT_NEAR(ratio, 1.0, 0.12);

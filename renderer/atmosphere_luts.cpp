@@ -48,7 +48,7 @@ bool AtmosphereLuts::same_sky(const ViewKey& a, const ViewKey& b) {
 
 bool AtmosphereLuts::froxels_serve(const ViewKey& a, const FrameContext& c) {
   if (!(std::abs(a.camera_altitude_m - c.camera_altitude_m) < 1.0 && glm::length(a.sun_enu - c.sun_enu) < 1e-4 &&
-        std::abs(std::max(a.march_reach_m, 1000.0) - std::max(c.march_reach_m, 1000.0)) < 1.0))
+        std::abs(a.ap_max_distance_m - c.ap_max_distance_m()) < 1.0))
     return false;
   const double tx = c.tan_half_fov_x, ty = c.tan_half_fov_y;
   const ApFrustum& v = a.frustum;
@@ -71,7 +71,7 @@ AtmosphereLuts::ViewLutUpdate AtmosphereLuts::plan_view_dependent(FrameContext& 
   // a volume built now: the camera's frustum kApMargin wider per axis
   const ViewKey camera{ApFrustum{c.axes.forward, c.axes.right, c.axes.up, c.tan_half_fov_x * (1.0 + kApMargin),
                                  c.tan_half_fov_y * (1.0 + kApMargin)},
-                       c.camera_altitude_m, c.march_reach_m, c.sun_enu};
+                       c.camera_altitude_m, c.ap_max_distance_m(), c.sun_enu};
   plan.sky_view = !(last_sky_ && same_sky(*last_sky_, camera));
   if (plan.sky_view) last_sky_ = camera;
   plan.aerial_perspective = !(last_froxels_ && froxels_serve(*last_froxels_, c));

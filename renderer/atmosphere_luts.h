@@ -63,7 +63,7 @@ class AtmosphereLuts {
   // volume's frustum, not the camera's.
   struct ViewKey {
     ApFrustum frustum;
-    double camera_altitude_m = 0.0, march_reach_m = 0.0;
+    double camera_altitude_m = 0.0, ap_max_distance_m = 0.0;
     glm::dvec3 sun_enu{0.0};
   };
   static bool same_sky(const ViewKey& a, const ViewKey& b);

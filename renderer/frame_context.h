@@ -66,6 +66,9 @@ struct FrameContext {
   ApFrustum ap;  // set by AtmosphereLuts::plan_view_dependent
 
   unsigned culled_mask() const;  // bit i: layer i culled
+  // Depth of the aerial-perspective volume: the farthest visible ground or cloud (hundreds
+  // of km), at least 1 km.
+  double ap_max_distance_m() const { return march_reach_m > 1000.0 ? march_reach_m : 1000.0; }
 };
 
 // Builds the context of `view` (the layers not culled; the AP frustum the camera's).

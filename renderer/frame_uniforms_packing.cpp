@@ -63,8 +63,7 @@ FrameUniforms pack_frame_uniforms(const FrameContext& c, const RenderQuality& qu
   u.march_reach_m = static_cast<float>(c.march_reach_m);
   u.sun_direction = glm::vec3(c.sun_enu);
 
-  // Aerial perspective reaches the farthest visible ground or cloud (hundreds of km).
-  u.ap_max_distance_m = static_cast<float>(std::max(c.march_reach_m, 1000.0));
+  u.ap_max_distance_m = static_cast<float>(c.ap_max_distance_m());
   u.ap_forward = glm::vec3(c.ap.forward);
   u.ap_right = glm::vec3(c.ap.right);
   u.ap_up = glm::vec3(c.ap.up);

@@ -59,6 +59,21 @@ GroundShadowMap::GroundShadowMap()
   volume_ = make(GL_TEXTURE_3D, kVolumeSize, kVolumeSize, kVolumeLevels * gpu::kMaxLayers);
 }
 
+void GroundShadowMap::build(const FrameContext& frame, const CloudPassInputs& inputs, const ShadowMapUniforms& su,
+                            bool light_volume) {
+  glNamedBufferSubData(uniforms_.id(), 0, sizeof(ShadowMapUniforms), &su);
+  inputs.bind();
+  glBindBufferBase(GL_UNIFORM_BUFFER, gpu::ubo::SHADOW_MAP, uniforms_.id());
+  build_prog_.use();
+  glBindImageTexture(gpu::img::SHADOW_MAP_OUT, map_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
+  gl::dispatch_2d(kSize, kSize, frame.layer_count);
+  if (light_volume) {
+    volume_prog_.use();
+    glBindImageTexture(gpu::img::LIGHT_VOLUME_OUT, volume_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
+    gl::dispatch_2d(kVolumeSize, kVolumeSize, frame.layer_count * kVolumeLevels);
+  }
+}
+
 bool GroundShadowMap::update(const FrameContext& frame, const CloudPassInputs& inputs,
                              std::uint64_t weather_generation, int light_steps, bool per_pixel, bool light_volume,
                              bool needed) {
@@ -77,35 +92,20 @@ bool GroundShadowMap::update(const FrameContext& frame, const CloudPassInputs& i
     su.march_per_pixel = 1;
   } else {
     const bool volume_missing = light_volume && key_ && (!key_->light_volume || key_->light_steps != light_steps);
-    if (!key_ || volume_missing ||
-        !shadow_map_stale_reason(*key_, frame, weather_generation).empty()) {
+    const bool stale = !key_ || volume_missing || !shadow_map_stale_reason(*key_, frame, weather_generation).empty();
+    if (stale)
       key_ = ShadowMapKey{frame, weather_generation, shadow_map_warp(frame.camera_altitude_m), light_volume, light_steps};
-      su.warp_m = static_cast<float>(key_->warp_m);
-      su.map_texels = kSize;
-      su.map_valid = 1;
-      su.volume_levels = kVolumeLevels;
-      su.volume_texels = kVolumeSize;
-      upload();
-      inputs.bind();
-      glBindBufferBase(GL_UNIFORM_BUFFER, gpu::ubo::SHADOW_MAP, uniforms_.id());
-      const int layers = frame.layer_count;
-      build_prog_.use();  // (the light volume pass does not read the map it is built with)
-      glBindImageTexture(gpu::img::SHADOW_MAP_OUT, map_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
-      gl::dispatch_2d(kSize, kSize, layers);
-      if (light_volume) {
-        volume_prog_.use();
-        glBindImageTexture(gpu::img::LIGHT_VOLUME_OUT, volume_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
-        gl::dispatch_2d(kVolumeSize, kVolumeSize, layers * kVolumeLevels);
-      }
-      rebuilt = true;
-    }
-    const Reprojection r = make_reprojection(key_->anchor, frame);
-    for (int i = 0; i < gpu::kMaxLayers; ++i) su.to_anchor[i] = glm::mat4(r.transform[i]);
     su.warp_m = static_cast<float>(key_->warp_m);
     su.map_texels = kSize;
     su.map_valid = 1;
     su.volume_levels = kVolumeLevels;
     su.volume_texels = kVolumeSize;
+    if (stale) {
+      build(frame, inputs, su, light_volume);  // this frame is the anchor: identity transforms, no volume read
+      rebuilt = true;
+    }
+    const Reprojection r = make_reprojection(key_->anchor, frame);
+    for (int i = 0; i < gpu::kMaxLayers; ++i) su.to_anchor[i] = glm::mat4(r.transform[i]);
     su.volume_valid = light_volume ? 1 : 0;
   }
   upload();

@@ -87,6 +87,9 @@ class GroundShadowMap {
   }
 
  private:
+  // Builds the map (and the light volume) with the lookup uniforms su of the build frame.
+  void build(const FrameContext& frame, const CloudPassInputs& inputs, const ShadowMapUniforms& su, bool light_volume);
+
   gl::ShaderProgram build_prog_;
   gl::ShaderProgram volume_prog_;
   gl::Texture map_;

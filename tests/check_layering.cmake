@@ -1,9 +1,10 @@
 # Folder layering of the GL-free code (run by ctest as Layering.GlFreeFoldersIncludeNoGlHeaders):
-# the physical model (renderer/model), the CPU reference (renderer/reference), the renderer's
+# the physical model (renderer/model), the CPU reference (renderer/reference), the ground
+# truth (renderer/truth), the renderer's
 # plain-data API (renderer/api), weather/, geodesy/ and protocol/ include no header of the
 # GL renderer (renderer/*.h at its top level, renderer/gl/), of the service, and no GL,
 # EGL or GLFW header. Usage: cmake -DSOURCE_DIR=<repo> -P check_layering.cmake
-set(gl_free_dirs renderer/model renderer/reference renderer/api weather geodesy protocol)
+set(gl_free_dirs renderer/model renderer/reference renderer/truth renderer/api weather geodesy protocol)
 set(violations "")
 foreach(dir ${gl_free_dirs})
   file(GLOB_RECURSE files ${SOURCE_DIR}/${dir}/*.h ${SOURCE_DIR}/${dir}/*.cpp)

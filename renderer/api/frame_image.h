@@ -32,6 +32,9 @@ struct FrameImage {
   int width = 0;
   int height = 0;
   std::vector<float> rgba;
+  // Standard error of the mean of rgb per pixel (3 floats per pixel, same order), for
+  // images that are Monte Carlo estimates (the path-traced ground truth); empty otherwise.
+  std::vector<float> std_error;
   FrameStats stats;
 
   const float* pixel(int x, int y) const { return &rgba[(static_cast<size_t>(y) * width + x) * 4]; }

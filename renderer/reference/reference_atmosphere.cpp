@@ -9,18 +9,26 @@ namespace cloudsvc::reference::atmo {
 
 namespace {
 constexpr double kPi = std::numbers::pi;
+constexpr double kOzonePeak_m = 25.0e3, kOzoneHalfWidth_m = 15.0e3;  // tent 10-25-40 km
+double ozone_tent(double a) { return std::max(0.0, 1.0 - std::abs(a - kOzonePeak_m) / kOzoneHalfWidth_m); }
 }  // namespace
 
 Medium medium_at(double altitude_m) {
   const double a = std::max(altitude_m, 0.0);
   const double rayleigh_density = std::exp(-a / kRayleighScaleHeight);
   const double mie_density = std::exp(-a / kMieScaleHeight);
-  const double ozone_density = std::max(0.0, 1.0 - std::abs(a - 25.0e3) / 15.0e3);  // tent 10-25-40 km
+  const double ozone_density = ozone_tent(a);
   Medium m;
   m.rayleigh_scattering = kRayleighScattering * rayleigh_density;
   m.mie_scattering = kMieScattering * mie_density;
   m.extinction = m.rayleigh_scattering + glm::dvec3(kMieExtinction * mie_density) + kOzoneAbsorption * ozone_density;
   return m;
+}
+
+glm::dvec3 max_extinction(double a0, double a1) {
+  const double lo = std::max(a0, 0.0), hi = std::max(a1, lo);
+  const Medium m = medium_at(lo);  // the exponentials decrease with altitude
+  return m.extinction + kOzoneAbsorption * (ozone_tent(std::clamp(kOzonePeak_m, lo, hi)) - ozone_tent(lo));
 }
 
 double rayleigh_phase(double nu) { return 3.0 / (16.0 * kPi) * (1.0 + nu * nu); }

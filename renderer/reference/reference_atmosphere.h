@@ -43,6 +43,10 @@ struct Medium {
   glm::dvec3 extinction{0.0};           // Rayleigh + Mie extinction + ozone absorption, 1/m
 };
 Medium medium_at(double altitude_m);
+// The largest extinction (rgb, 1/m) of medium_at over altitudes [a0, a1] (a0 <= a1): the
+// exponentials at max(a0, 0), the ozone tent at its highest point in the interval. A
+// rigorous bound, for majorants.
+glm::dvec3 max_extinction(double a0, double a1);
 
 // Phase functions (sr^-1) of the cosine nu between the view and sun directions.
 double rayleigh_phase(double nu);  // 3 / (16 pi) (1 + nu^2)

@@ -1,0 +1,70 @@
+// Band-by-band ray walk of the ground truth (see band_walker.h).
+#include "renderer/truth/band_walker.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "renderer/reference/shell_crossings.h"
+
+namespace cloudsvc::truth {
+
+BandWalker::BandWalker(const TruthWorld& world, const glm::dvec3& x0, const glm::dvec3& w, double air_scale)
+    : world_(world), air_scale_(air_scale) {
+  const double r = glm::length(x0);
+  h0_ = r - world.radius_m;
+  mu_ = std::clamp(glm::dot(x0, w) / r, -1.0, 1.0);
+  const int bands = static_cast<int>(world.band_majorant.size());
+  if (h0_ >= world.top_alt_m) {
+    // Above the medium: enter through the top sphere if the ray reaches it.
+    const auto top = reference::sphere_crossings(world.radius_m, h0_, world.top_alt_m, mu_);
+    if (!top || top->t0 <= 0.0) {
+      band_ = bands;
+      end_ = End::Top;
+      return;
+    }
+    t_ = top->t0;
+    band_ = bands - 1;
+    return;
+  }
+  const auto it = std::upper_bound(world.band_edges.begin(), world.band_edges.end(), h0_);
+  band_ = std::clamp(static_cast<int>(it - world.band_edges.begin()) - 1, 0, bands - 1);
+}
+
+void BandWalker::find_segment() {
+  const double outer = world_.band_edges[static_cast<std::size_t>(band_ + 1)];
+  const double inner = world_.band_edges[static_cast<std::size_t>(band_)];
+  // Leaving through the outer sphere (far root); if rounding puts the ray outside it, now.
+  const auto o = reference::sphere_crossings(world_.radius_m, h0_, outer, mu_);
+  seg_end_ = o ? std::max(o->t1, t_) : t_;
+  next_band_ = band_ + 1;
+  const auto i = reference::sphere_crossings(world_.radius_m, h0_, inner, mu_);
+  if (i && i->t0 > t_ && i->t0 < seg_end_) {
+    seg_end_ = i->t0;
+    next_band_ = band_ - 1;
+  }
+  segment_known_ = true;
+}
+
+double BandWalker::advance(double tau, double& majorant) {
+  const int bands = static_cast<int>(world_.band_majorant.size());
+  while (end_ == End::None) {
+    if (!segment_known_) find_segment();
+    const std::size_t b = static_cast<std::size_t>(band_);
+    const double m = world_.band_majorant[b] + (air_scale_ - 1.0) * world_.band_air_majorant[b];
+    const double room = seg_end_ - t_;
+    if (m > 0.0 && tau < room * m) {
+      t_ += tau / m;
+      majorant = m;
+      return t_;
+    }
+    tau -= room * m;
+    t_ = seg_end_;
+    band_ = next_band_;
+    segment_known_ = false;
+    if (band_ < 0) end_ = End::Ground;
+    if (band_ >= bands) end_ = End::Top;
+  }
+  return kInfinity;
+}
+
+}  // namespace cloudsvc::truth

@@ -1,0 +1,179 @@
+// The estimator of the ground truth: one light path per call, every order of scattering,
+// unbiased, in double precision, through a TruthWorld (truth_world.h).
+//
+// Estimator (Novak et al. 2018, "Monte Carlo methods for volumetric light transport
+// simulation", CGF 37(2); Kutz et al. 2017, "Spectral and decomposition tracking for
+// rendering heterogeneous volumes", ACM TOG 36(4); Veach 1997, PhD thesis, ch. 9, for
+// multiple importance sampling):
+//   - free flights by delta tracking against the band majorant (band_walker.h), all three
+//     channels at once by spectral tracking: at a tentative collision with majorant m and
+//     path throughput beta (rgb), a real scattering, a null collision or absorption is
+//     chosen with probability <beta sigma> / (<beta> m) (<.> = mean over the channels)
+//     and beta_c multiplied so that every channel's expectation is its own delta
+//     tracking's (Kutz et al. 2017, §4, "history-aware" weights); at a real scattering the
+//     new direction comes from one component's phase function, the component picked in
+//     proportion to <beta sigma_k>, and beta_c *= f_c / (s pdf) with f the scattering
+//     kernel sum_k sigma_k p_k and s = <beta sigma_s> / <beta>;
+//   - the sun is the model's disk (angular radius sun_angular_radius_rad; 0 = collimated,
+//     reached by next-event estimation alone). Sunlight scattered at a point y is
+//     estimated two ways, combined by the balance heuristic: (A) next-event estimation at
+//     tentative collisions (with probability q = min(1, nee_boost max_c sigma_s,c / m):
+//     a point of the disk, the transmittance by ratio tracking, weight 1 / (m q); over a
+//     flight this estimates int T(0, t) f T_sun dt by Campbell's theorem, so the real
+//     collision a flight ends in gets no second estimate; in clear air inside a cloud
+//     layer's band q is small, in cloud and in the air bands it is 1); (B) a path leaving
+//     a real scattering in a direction inside the disk and escaping through the top;
+//   - sun-guided copies (the droplets' forward peak, g_HG ~ 0.99 and ~0.5 deg wide, makes
+//     (A) heavy-tailed: a path whose direction happens to lie within the peak about the
+//     sun multiplies the sun by p ~ 1e3 /sr; detector-directional importance sampling of
+//     Buras & Mayer 2011, JQSRT 112, 434, turned towards the sun): at a real scattering on
+//     a cloud component, with probability sun_guiding, a copy of the path is made whose
+//     direction is drawn from a Henyey-Greenstein lobe h about the sun (g = the largest
+//     cloud g_HG). Path and copy are the two samples of a multi-sample MIS of everything
+//     arriving at the vertex (balance heuristic, densities p and sun_guiding h): both
+//     continue with weight beta f / (s (p + sun_guiding h)), which is <= the plain
+//     weight, so nothing grows over the thousands of scatterings inside a thick cloud.
+//     Copies are paths like the camera's (they make copies too) until the camera path
+//     has made max_copies, after which no vertex of it guides (a rule of the path's
+//     history, which MIS weights may depend on). (B) counts both directions' densities;
+//     measured on a slab of optical depth 4 (sun 60 deg, view up from below) the
+//     per-path standard deviation falls from 2.6 to 0.21 at 1.8x the work;
+//   - camera rays multiply the air's part of the majorant by camera_air_scale: more
+//     tentative collisions, hence more next-event estimates of the thin sky;
+//   - sun transmittance by ratio tracking (Novak et al. 2018, §4.3), 0 when the ray hits
+//     the ground (the planet's shadow), with Russian roulette below shadow_roulette;
+//   - ground: Lambertian; next event albedo / pi (n . w_sun) L_sun T_sun over the disk
+//     (MIS against the cosine-weighted bounce), then a cosine-weighted bounce with
+//     beta *= albedo;
+//   - escape through the top: beta times the sky radiance; an unscattered camera ray
+//     inside the disk adds beta L_sun (the disk the model draws);
+//   - Russian roulette on the path once its importance, max_c beta_c times
+//     max(1, 4 pi h(w . w_sun)), falls below path_roulette (a path heading into the sun's
+//     forward peak is kept at its small weight rather than boosted).
+// Light reaching the camera after k scattering events (ground bounces included) is
+// "order k"; max_order limits the orders counted (1 = single scattering only).
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "renderer/model/slab_monte_carlo.h"  // model::Pcg32
+#include "renderer/truth/truth_world.h"
+
+namespace cloudsvc::truth {
+
+struct TracerSettings {
+  double camera_air_scale = 8.0;  // >= 1
+  double nee_boost = 16.0;        // > 0
+  double sun_guiding = 0.3;       // probability of a sun-guided copy at a cloud scattering, [0, 1)
+  int max_copies = 64;            // per camera path; beyond it no vertex makes copies
+  // Russian roulette thresholds on max_c of the weight: paths, and the transmittance of
+  // shadow rays.
+  double path_roulette = 0.05;
+  double shadow_roulette = 0.1;
+  int max_order = 1 << 30;
+  // Safety cap of tentative collisions per path (a path beyond it is dropped and counted
+  // as lost: a bias the stats report; none expected: a path through 100 km of cloud at a
+  // majorant of 0.3 /m has ~3e4).
+  std::uint64_t max_collisions = 100'000'000;
+};
+
+// Work and health counters of a set of paths (summed per pixel, then per image).
+struct TracerCounters {
+  std::uint64_t density_evals = 0;        // medium evaluations (TruthMedium::at calls)
+  std::uint64_t majorant_violations = 0;  // points where an extinction exceeded the majorant
+  std::uint64_t lost_paths = 0;           // paths dropped at max_collisions
+  std::uint64_t scattering_events = 0;    // real collisions + ground bounces
+
+  void add(const TracerCounters& o) {
+    density_evals += o.density_evals;
+    majorant_violations += o.majorant_violations;
+    lost_paths += o.lost_paths;
+    scattering_events += o.scattering_events;
+  }
+};
+
+class PathTracer {
+ public:
+  PathTracer(const TruthWorld& world, const TracerSettings& settings, model::Pcg32& rng, TracerCounters& counters);
+
+  // One estimate of the radiance arriving at x from direction -w (i.e. seen looking
+  // along w), x in the centred frame, w unit.
+  glm::dvec3 radiance(const glm::dvec3& x, const glm::dvec3& w);
+
+  // One unbiased estimate of the transmittance of the cloud components alone from x along
+  // w to the ground or the top (ratio tracking): the cloud opacity of a pixel is 1 minus
+  // its mean.
+  double cloud_transmittance(const glm::dvec3& x, const glm::dvec3& w);
+
+  // One unbiased estimate of the transmittance (rgb) from x along w to the top (0 if the
+  // ray hits the ground), by ratio tracking.
+  glm::dvec3 transmittance(const glm::dvec3& x, const glm::dvec3& w);
+
+ private:
+  // A real scattering vertex (what the MIS weights of the paths leaving it need).
+  struct Vertex {
+    glm::dvec3 y{0.0}, w_in{0.0}, beta{1.0};  // position, arriving direction, weight before it
+    MediumPoint medium;
+    double s_bar = 0.0;        // <beta sigma_s> / <beta>, 1/m
+    double nee_density = 0.0;  // density of the next-event sample: m q / Omega, 1/(m sr)
+    double guiding = 0.0;      // sun_guiding if a copy may be made here, else 0
+  };
+  enum class VertexKind { None, Medium, Ground };
+  // A path (the camera's or a guided copy) between flights.
+  struct PathState {
+    glm::dvec3 x{0.0}, w{0.0}, beta{1.0};
+    int order = 0;
+    VertexKind vertex = VertexKind::None;  // of the last scattering
+    Vertex last;
+    glm::dvec3 last_normal{0.0};
+  };
+  glm::dvec3 trace(PathState s, std::vector<PathState>& copies, std::uint64_t& collisions);
+  // Weights of a sample leaving vertex v in direction w_out.
+  double direction_density(const Vertex& v, const glm::dvec3& w_out) const;  // p + guiding h, 1/sr
+  double escape_weight(const Vertex& v, const glm::dvec3& w_out) const;
+
+  double uniform() { return rng_.uniform(); }
+  double exponential() { return -std::log1p(-uniform()); }
+  void medium_at(const glm::dvec3& y, double altitude_m, double majorant, MediumPoint& m);
+  glm::dvec3 scattering_kernel(const MediumPoint& m, double nu) const;  // sum_k sigma_k p_k(nu), 1/(m sr)
+  double phase_pdf(const MediumPoint& m, const glm::dvec3& beta, double nu) const;  // 1/sr
+  glm::dvec3 sample_phase(const MediumPoint& m, const glm::dvec3& beta, double s_bar, const glm::dvec3& w);
+  glm::dvec3 sample_sun_direction();  // uniform over the sun's disk
+  double guiding_at(const MediumPoint& m, double q) const;
+  // Next-event estimate (A) at a tentative collision (the caller has drawn it with
+  // probability q): the sun's contribution scattered at y towards -w, MIS-weighted
+  // against (B) when the path continues from a real collision there (a guided copy does
+  // not: weight 1).
+  glm::dvec3 sun_at_collision(const glm::dvec3& y, const glm::dvec3& w, const MediumPoint& m, double majorant,
+                              double q, const glm::dvec3& beta, bool path_continues);
+  // ... at a ground point with normal n (MIS against the cosine-weighted bounce's escape).
+  glm::dvec3 sun_at_ground(const glm::dvec3& n, const glm::dvec3& y, const glm::dvec3& beta, bool path_continues);
+
+  const TruthWorld& world_;
+  const TracerSettings& settings_;
+  model::Pcg32& rng_;
+  TracerCounters& counters_;
+  bool sun_on_ = false, disk_ = false;
+  glm::dvec3 sun_radiance_{0.0};  // E_sun / Omega
+  double sun_cos_radius_ = 1.0, sun_solid_angle_ = 0.0;
+  double guide_g_ = 0.0;
+  int copies_made_ = 0;  // by the current camera path
+};
+
+// Mean and standard error of `paths` radiance estimates from x along w, in chunks of
+// kPathsPerChunk paths, chunk k drawing from model::chunk_stream(seed, k), summed in
+// chunk order on `threads` threads (0 = all cores): the result does not depend on the
+// thread count. For tests and single-direction measurements.
+struct RadianceEstimate {
+  glm::dvec3 mean{0.0}, std_error{0.0};
+  TracerCounters counters;
+};
+inline constexpr long long kPathsPerChunk = 256;
+RadianceEstimate estimate_radiance(const TruthWorld& world, const TracerSettings& settings, const glm::dvec3& x,
+                                   const glm::dvec3& w, long long paths, std::uint64_t seed, int threads = 0);
+
+}  // namespace cloudsvc::truth

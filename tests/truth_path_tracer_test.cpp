@@ -1,0 +1,338 @@
+// The path-traced ground truth (renderer/truth/) on cases with known answers: the band
+// walk, the majorant of the scene's density field, a white furnace, the single-scattering
+// limit (clear sky against the reference's integration, a thin slab against the slab
+// Monte Carlo's first order), every order in a slab against the slab Monte Carlo,
+// convergence with spp and thread-count independence.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "geodesy/utc_time.h"
+#include "renderer/model/scene_constants.h"
+#include "renderer/model/slab_monte_carlo.h"
+#include "renderer/reference/cloud_field.h"
+#include "renderer/reference/reference_atmosphere.h"
+#include "renderer/reference/reference_inputs.h"
+#include "renderer/reference/reference_scene.h"
+#include "renderer/truth/band_walker.h"
+#include "renderer/truth/path_tracer.h"
+#include "renderer/truth/scene_world.h"
+#include "renderer/truth/truth_renderer.h"
+#include "weather/presets.h"
+
+namespace cloudsvc::truth {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kSunRadius = model::kSunAngularRadiusDeg * kPi / 180.0;
+
+// A world of bands with the given edges and majorants and nothing else.
+TruthWorld banded_world(std::vector<double> edges, std::vector<double> majorants, double radius = 6.371e6) {
+  TruthWorld w;
+  w.radius_m = radius;
+  w.ground_alt_m = edges.front();
+  w.top_alt_m = edges.back();
+  w.band_edges = std::move(edges);
+  w.band_majorant = majorants;
+  w.band_air_majorant.assign(majorants.size(), 0.0);
+  return w;
+}
+
+TEST(TruthBandWalker, CrossesBandsAtTheirMajorants) {
+  const TruthWorld w = banded_world({0.0, 1000.0, 2000.0, 3000.0}, {1e-3, 2e-3, 0.0});
+  const glm::dvec3 x(0.0, 0.0, w.radius_m + 500.0), up(0.0, 0.0, 1.0);
+  BandWalker walk(w, x, up);
+  double m = 0.0;
+  EXPECT_NEAR(walk.advance(0.25, m), 250.0, 1e-6);  // 0.25 / 1e-3 within the first band
+  EXPECT_EQ(m, 1e-3);
+  // 0.5 more: 0.25 to the band edge (250 m), then 0.25 / 2e-3 = 125 m into the second band
+  EXPECT_NEAR(walk.advance(0.5, m), 625.0, 1e-6);
+  EXPECT_EQ(m, 2e-3);
+  // The third band is empty: the ray leaves through the top at 2500 m.
+  EXPECT_EQ(walk.advance(10.0, m), kInfinity);
+  EXPECT_EQ(walk.end(), BandWalker::End::Top);
+  EXPECT_NEAR(walk.distance(), 2500.0, 1e-6);
+
+  BandWalker down(w, x, -up);
+  EXPECT_EQ(down.advance(1.0, m), kInfinity);  // 500 m at 1e-3: optical depth 0.5 < 1
+  EXPECT_EQ(down.end(), BandWalker::End::Ground);
+  EXPECT_NEAR(down.distance(), 500.0, 1e-6);
+}
+
+TEST(TruthBandWalker, GrazingRayReentersTheBandItLeft) {
+  // A horizontal ray at 1500 m stays in band 1 (curvature only raises it): 1000..2000 m
+  // is left through the 2000 m sphere at sqrt((R+2000)^2 - (R+1500)^2).
+  const TruthWorld w = banded_world({0.0, 1000.0, 2000.0, 3000.0}, {0.0, 1e-6, 0.0});
+  const double R = w.radius_m;
+  BandWalker walk(w, glm::dvec3(0.0, 0.0, R + 1500.0), glm::dvec3(1.0, 0.0, 0.0));
+  double m = 0.0;
+  EXPECT_EQ(walk.advance(1e9, m), kInfinity);
+  const double t_edge = std::sqrt((R + 2000.0) * (R + 2000.0) - (R + 1500.0) * (R + 1500.0));
+  const double t_top = std::sqrt((R + 3000.0) * (R + 3000.0) - (R + 1500.0) * (R + 1500.0));
+  EXPECT_EQ(walk.end(), BandWalker::End::Top);
+  EXPECT_NEAR(walk.distance(), t_top, 1e-3);
+  BandWalker walk2(w, glm::dvec3(0.0, 0.0, R + 1500.0), glm::dvec3(1.0, 0.0, 0.0));
+  const double tau = 0.5 * t_edge * 1e-6;
+  EXPECT_NEAR(walk2.advance(tau, m), 0.5 * t_edge, 1e-3);
+}
+
+// The scene's majorant bounds the density field: random points in every layer of the
+// presets, extinction <= the band's majorant.
+TEST(TruthMajorant, BoundsTheDensityFieldOfEveryPreset) {
+  ViewRequest v;
+  v.position = {47.45, 8.56, 2500.0};
+  v.attitude = {270.0, 5.0, 0.0};
+  v.unix_time_s = *geo::parse_utc_iso8601("2026-06-21T12:00:00Z");
+  v.width = 64;
+  v.height = 36;
+  for (const std::string& name : weather::preset_names()) {
+    const weather::Weather wx = *weather::preset(name);
+    if (wx.layers.empty()) continue;
+    const auto inputs = reference::reference_inputs({}, wx.map_seed);
+    const reference::ReferenceScene scene = reference::make_reference_scene(v, wx);
+    const reference::CloudField field(scene, *inputs);
+    const SceneMedium medium(scene, field);
+    const TruthWorld world = make_scene_world(scene, *inputs, true, medium);
+    model::Pcg32 rng(7, 1);
+    double ratio_sum = 0.0;
+    int inside = 0;
+    for (int i = 0; i < 100000; ++i) {
+      const reference::ReferenceLayer& L = scene.layers[static_cast<std::size_t>(i) % scene.layers.size()];
+      const double alt = L.base_m + rng.uniform() * (L.top_m - L.base_m);
+      // within 60 km of the camera
+      const double e = (rng.uniform() - 0.5) * 1.2e5, n = (rng.uniform() - 0.5) * 1.2e5;
+      const glm::dvec3 dir = glm::normalize(glm::dvec3(e, n, world.radius_m + scene.shell.camera_alt_m));
+      const glm::dvec3 x = dir * (world.radius_m + alt);
+      MediumPoint m;
+      medium.at(x, alt, m);
+      const auto it = std::upper_bound(world.band_edges.begin(), world.band_edges.end(), alt);
+      const double maj = world.band_majorant[static_cast<std::size_t>(it - world.band_edges.begin() - 1)];
+      const glm::dvec3 ext = m.extinction();
+      ASSERT_LE(std::max({ext.r, ext.g, ext.b}), maj) << name << " at altitude " << alt;
+      if (m.cloud_total() > 0.0) {
+        ratio_sum += m.cloud_total() / maj;
+        ++inside;
+      }
+    }
+    std::printf("%-20s mean extinction / majorant in cloud: %.3f (%d points in cloud)\n", name.c_str(),
+                inside ? ratio_sum / inside : 0.0, inside);
+  }
+}
+
+// Test media.
+struct HomogeneousLayer final : TruthMedium {
+  double base = 0.0, top = 0.0, sigma = 0.0;  // cloud component 0
+  glm::dvec3 rayleigh{0.0};                   // everywhere below the top of the world
+  void at(const glm::dvec3&, double alt, MediumPoint& out) const override {
+    out.rayleigh = rayleigh;
+    if (alt > base && alt < top) out.cloud[0] = sigma;
+  }
+};
+
+struct ClearAir final : TruthMedium {
+  void at(const glm::dvec3&, double alt, MediumPoint& out) const override {
+    const reference::atmo::Medium a = reference::atmo::medium_at(alt);
+    out.rayleigh = a.rayleigh_scattering;
+    out.aerosol = a.mie_scattering;
+    out.absorption = a.extinction - a.rayleigh_scattering - glm::dvec3(a.mie_scattering);
+  }
+};
+
+// A slab world: a flat-enough planet (R = 1e9 m), black ground at 0, the slab between
+// 1000 m and 1000 m + H, nothing else; sun irradiance 1.
+TruthWorld slab_world(const HomogeneousLayer& medium, double sun_zenith_deg, double diameter_um, double sun_radius_rad) {
+  TruthWorld w = banded_world({0.0, medium.base, medium.top, 20000.0}, {0.0, medium.sigma * (1.0 + 1e-9), 0.0}, 1e9);
+  w.sun = model::sun_direction(sun_zenith_deg);
+  w.sun_irradiance = glm::dvec3(1.0);
+  w.sun_angular_radius_rad = sun_radius_rad;
+  w.cloud_phase[0] = model::jdd_params(diameter_um);
+  w.medium = &medium;
+  return w;
+}
+
+// Ratio of two estimates agrees within k combined standard errors plus a relative slack.
+void expect_agree(double a, double se_a, double b, double se_b, double rel, const char* what) {
+  const double tol = 4.0 * std::hypot(se_a, se_b) + rel * std::abs(b);
+  EXPECT_NEAR(a, b, tol) << what << ": truth " << a << " +- " << se_a << ", expected " << b << " +- " << se_b;
+  std::printf("%-40s truth %.5f +- %.5f  expected %.5f +- %.5f\n", what, a, se_a, b, se_b);
+}
+
+// White furnace: a conservative medium (cloud droplets and spectral Rayleigh, nothing
+// absorbs) over a white ground, lit only by an isotropic radiance L0 through the top: the
+// radiance everywhere, in every direction, is L0.
+TEST(TruthTracer, WhiteFurnaceGivesBackTheBoundaryRadiance) {
+  HomogeneousLayer medium;
+  medium.base = 1000.0;
+  medium.top = 3000.0;
+  medium.sigma = 0.005;                                 // optical thickness 10
+  medium.rayleigh = glm::dvec3(5.8e-6, 1.35e-5, 3.31e-5);  // spectral: exercises spectral tracking
+  TruthWorld w = banded_world({0.0, 1000.0, 3000.0, 20000.0}, {4e-5, 0.005 + 4e-5, 4e-5});
+  w.band_air_majorant = {4e-5, 4e-5, 4e-5};
+  w.ground_albedo = glm::dvec3(1.0);
+  w.sky_radiance = glm::dvec3(1.0);
+  w.cloud_phase[0] = model::jdd_params(14.0);
+  w.medium = &medium;
+  const glm::dvec3 dirs[] = {{0, 0, 1}, {0, 0, -1}, glm::normalize(glm::dvec3(1, 0, 0.05)),
+                             glm::normalize(glm::dvec3(0, 1, -0.3))};
+  const double alts[] = {500.0, 2000.0, 5000.0};
+  for (double alt : alts)
+    for (const glm::dvec3& d : dirs) {
+      const RadianceEstimate e =
+          estimate_radiance(w, {}, glm::dvec3(0.0, 0.0, w.radius_m + alt), d, 4096, 11);
+      for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(e.mean[c], 1.0, 4.0 * e.std_error[c] + 1e-9) << "alt " << alt << " channel " << c;
+        EXPECT_LT(e.std_error[c], 0.02);
+      }
+      EXPECT_EQ(e.counters.majorant_violations, 0u);
+      EXPECT_EQ(e.counters.lost_paths, 0u);
+    }
+}
+
+// Every order of scattering in a homogeneous slab against the slab Monte Carlo
+// (renderer/model/slab_monte_carlo.h, an independent photon tracer): radiance reflected
+// from the top and transmitted through the base, views 0 and 60 degrees, towards and away
+// from the sun. Also the single-scattering limit: max_order = 1 against the slab Monte
+// Carlo's first order.
+TEST(TruthTracer, SlabMatchesTheSlabMonteCarlo) {
+  struct Case {
+    double tau, sun_zenith;
+  };
+  for (const Case& cs : {Case{1.0, 30.0}, Case{4.0, 60.0}}) {
+    const model::SlabSpec spec = model::slab_from_optical_depth(cs.tau, cs.sun_zenith);
+    HomogeneousLayer medium;
+    medium.base = 1000.0;
+    medium.top = 1000.0 + spec.thickness_m;
+    medium.sigma = spec.sigma_t_per_m;
+    // The sun as the model's disk (0.53 deg across): phase sampling reaches it, which
+    // next-event estimation alone cannot do for the droplets' ~0.5 deg forward peak.
+    const TruthWorld w = slab_world(medium, cs.sun_zenith, spec.droplet_diameter_um, kSunRadius);
+    model::SlabMcOptions o;
+    o.photons = 400000;
+    o.seed = 5;
+    o.views = {{0.0, 0.0}, {60.0, 0.0}, {60.0, 180.0}};
+    const model::SlabMcResult ref = model::run_slab_monte_carlo(spec, o);
+    for (std::size_t i = 0; i < o.views.size(); ++i)
+      for (bool top : {true, false}) {
+        const glm::dvec3 travel = model::view_travel_direction(o.views[i], top);
+        if (!top && glm::dot(-travel, w.sun) > 0.999) continue;
+        // Camera 2 km above the top or 500 m below the base, looking against the light.
+        const double alt = top ? medium.top + 2000.0 : 500.0;
+        const glm::dvec3 x(0.0, 0.0, w.radius_m + alt);
+        for (int order : {1, 1 << 30}) {
+          TracerSettings ts;
+          ts.max_order = order;
+          const RadianceEstimate e = estimate_radiance(w, ts, x, -travel, order == 1 ? 8192 : 32768, 3 + i);
+          const model::Estimate& r = order == 1 ? (top ? ref.radiance_top_single[i] : ref.radiance_bottom_single[i])
+                                                : (top ? ref.radiance_top[i] : ref.radiance_bottom[i]);
+          char what[128];
+          std::snprintf(what, sizeof what, "tau %.0f sun %.0f %s view %.0f/%.0f %s", cs.tau, cs.sun_zenith,
+                        top ? "top" : "base", o.views[i].zenith_deg, o.views[i].rel_azimuth_deg,
+                        order == 1 ? "single" : "all");
+          expect_agree(e.mean.g, e.std_error.g, r.mean, r.std_error, 0.03, what);
+          EXPECT_EQ(e.counters.majorant_violations, 0u);
+        }
+      }
+  }
+}
+
+// Single scattering of the clear sky against the reference's integration
+// (reference::atmo::integrate_inscatter with the multiple-scattering term off) in the
+// atmosphere's own geometry (ground sphere 6360 km, top 100 km above it).
+TEST(TruthTracer, ClearSkySingleScatteringMatchesTheReferenceIntegration) {
+  namespace atmo = reference::atmo;
+  const ClearAir medium;
+  TruthWorld w;
+  w.radius_m = atmo::kBottomRadius;
+  w.ground_alt_m = 0.0;
+  w.top_alt_m = atmo::kThickness;
+  for (int b = 0; b <= 40; ++b) w.band_edges.push_back(b < 20 ? 500.0 * b : 10000.0 + 4500.0 * (b - 20));
+  for (std::size_t i = 0; i + 1 < w.band_edges.size(); ++i) {
+    const glm::dvec3 m = atmo::max_extinction(w.band_edges[i], w.band_edges[i + 1]);
+    w.band_majorant.push_back(std::max({m.r, m.g, m.b}) * (1.0 + 1e-9));
+    w.band_air_majorant.push_back(w.band_majorant.back());
+  }
+  const double sun_elev = 20.0 * kPi / 180.0;
+  w.sun = glm::dvec3(0.0, std::cos(sun_elev), std::sin(sun_elev));
+  w.sun_irradiance = glm::dvec3(1.0);
+  w.sun_angular_radius_rad = kSunRadius;
+  w.medium = &medium;
+  const double alt = 1000.0;
+  const double r0 = atmo::kBottomRadius + alt;
+  const auto sun_t = [](double a, double mu) { return atmo::transmittance_to_space(a, mu, 20.0); };
+  const auto no_ms = [](double, double) { return glm::dvec3(0.0); };
+  TracerSettings ts;
+  ts.max_order = 1;
+  const glm::dvec3 views[] = {{0, 0, 1}, glm::normalize(glm::dvec3(0, -1, 0.1)), glm::normalize(glm::dvec3(1, 0, 0.3)),
+                              glm::normalize(glm::dvec3(0, 1, 0.05))};
+  for (const glm::dvec3& d : views) {
+    const atmo::RayInscatter ref =
+        atmo::integrate_inscatter(r0, d, w.sun, atmo::path_length(r0, d.z), false, 20.0, 2000.0, sun_t, no_ms);
+    const RadianceEstimate e = estimate_radiance(w, ts, glm::dvec3(0.0, 0.0, r0), d, 8192, 9);
+    for (int c = 0; c < 3; ++c) {
+      char what[96];
+      std::snprintf(what, sizeof what, "clear sky SS view (%.2f %.2f %.2f) ch %d", d.x, d.y, d.z, c);
+      expect_agree(e.mean[c], e.std_error[c], ref.radiance[c], 0.0, 0.01, what);
+    }
+  }
+}
+
+// A view of a cloud scene: finite, no majorant violation or lost path, clouds seen; the
+// standard error halves from 16 to 64 paths per pixel, and the two agree; the image does
+// not depend on the thread count.
+TEST(TruthRenderer, ConvergesWithSppAndIsThreadCountIndependent) {
+  ViewRequest v;
+  v.position = {47.45, 8.56, 600.0};  // below the cumulus bases (1200 m): cloud and sky pixels
+  v.attitude = {270.0, 15.0, 0.0};
+  v.unix_time_s = *geo::parse_utc_iso8601("2026-06-21T14:00:00Z");
+  v.width = 8;
+  v.height = 5;
+  v.fov_deg = 60.0;
+  const weather::Weather wx = *weather::preset("scattered-cumulus");
+  TruthSettings s16;
+  s16.spp = 16;
+  s16.seed = 3;
+  TruthSettings s64 = s16;
+  s64.spp = 64;
+  s64.seed = 4;
+  const TruthImage a = render_truth(v, wx, s16);
+  const TruthImage b = render_truth(v, wx, s64);
+  EXPECT_EQ(a.counters.majorant_violations, 0u);
+  EXPECT_EQ(a.counters.lost_paths, 0u);
+  EXPECT_EQ(a.image.stats.nonfinite_pixels, 0);
+  // Per pixel and channel: the ratio of the standard errors (expected sqrt(64 / 16) = 2)
+  // and the squared difference of the means in units of their combined error.
+  std::vector<double> ratios;
+  double chi2 = 0.0;
+  for (std::size_t i = 0; i < a.image.std_error.size(); ++i) {
+    const std::size_t px = i / 3, c = i % 3;
+    const double sa = a.image.std_error[i], sb = b.image.std_error[i];
+    if (sb <= 0.0) continue;
+    ratios.push_back(sa / sb);
+    const double d = a.image.rgba[px * 4 + c] - b.image.rgba[px * 4 + c];
+    chi2 += d * d / (sa * sa + sb * sb);
+  }
+  ASSERT_GT(ratios.size(), 30u);
+  std::sort(ratios.begin(), ratios.end());
+  const double median = ratios[ratios.size() / 2];
+  const double n = static_cast<double>(ratios.size());
+  std::printf("truth 8x5: median s.e. ratio 16/64 spp = %.3f, chi2/n = %.3f, %.0f evals/px at 64 spp, %.0f ms\n",
+              median, chi2 / n, b.image.stats.density_evals_per_pixel, b.image.stats.render_ms);
+  // s.e. ~ 1/sqrt(spp); the median, because a few pixels' errors are heavy-tailed (the
+  // droplets' forward peak) and their 16-path estimates of the error scatter widely
+  EXPECT_NEAR(median, 2.0, 0.3);
+  EXPECT_LT(chi2 / n, 3.0);  // the 16- and 64-path images agree within their errors
+  EXPECT_GT(b.image.stats.cloud_pixels, 0);
+
+  TruthSettings one = s16, three = s16;
+  one.threads = 1;
+  three.threads = 3;
+  const TruthImage t1 = render_truth(v, wx, one), t3 = render_truth(v, wx, three);
+  EXPECT_EQ(t1.image.rgba, t3.image.rgba);
+  EXPECT_EQ(t1.image.std_error, t3.image.std_error);
+}
+
+}  // namespace
+}  // namespace cloudsvc::truth

@@ -34,13 +34,29 @@ std::vector<unsigned char> encode_image(const std::string& path, const std::stri
   if (!out->supports("ioproxy")) throw std::runtime_error(path + ": the image writer cannot write to memory");
   bool ok = false;
   if (ext == ".exr") {
-    OIIO::ImageSpec spec(img.width, img.height, 4, OIIO::TypeDesc::HALF);
+    // A Monte Carlo image (the path-traced truth) adds its standard error as se.R/G/B.
+    const bool with_error = img.std_error.size() == img.rgba.size() / 4 * 3 && !img.std_error.empty();
+    const int channels = with_error ? 7 : 4;
+    OIIO::ImageSpec spec(img.width, img.height, channels, OIIO::TypeDesc::HALF);
     spec.channelnames = {"R", "G", "B", "A"};
     spec.attribute("compression", "zip");
     spec.attribute("cloudsvc:radiance_units", "W m^-2 sr^-1 nm^-1 at 680/550/440 nm; A = cloud opacity");
+    std::vector<float> pixels;
+    const float* data = img.rgba.data();
+    if (with_error) {
+      spec.channelnames.insert(spec.channelnames.end(), {"se.R", "se.G", "se.B"});
+      spec.attribute("cloudsvc:std_error", "se.R/G/B = standard error of the mean radiance of R/G/B, same units");
+      const std::size_t n = img.rgba.size() / 4;
+      pixels.resize(n * 7);
+      for (std::size_t i = 0; i < n; ++i) {
+        for (int c = 0; c < 4; ++c) pixels[i * 7 + c] = img.rgba[i * 4 + c];
+        for (int c = 0; c < 3; ++c) pixels[i * 7 + 4 + c] = img.std_error[i * 3 + c];
+      }
+      data = pixels.data();
+    }
     OIIO::Filesystem::IOProxy* p = &proxy;
     spec.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &p);
-    ok = out->open(path, spec) && out->write_image(OIIO::TypeDesc::FLOAT, img.rgba.data());
+    ok = out->open(path, spec) && out->write_image(OIIO::TypeDesc::FLOAT, data);
   } else {
     const std::vector<std::uint8_t> px = tone_map_srgb8(img.rgba, 4, exposure_ev);  // FrameImage: RGBA
     OIIO::ImageSpec spec(img.width, img.height, 4, OIIO::TypeDesc::UINT8);

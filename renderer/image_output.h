@@ -1,5 +1,6 @@
 // Writing frames to files with OpenImageIO: EXR = linear radiance as half float RGBA
-// (A = cloud opacity); PNG = tone-mapped 8-bit sRGB for people (common/tone_map.h, which
+// (A = cloud opacity), plus se.R, se.G, se.B (the standard error of R, G, B) when the
+// frame carries one (FrameImage::std_error: the path-traced truth); PNG = tone-mapped 8-bit sRGB for people (common/tone_map.h, which
 // also gives luminance()). The image is encoded in
 // memory, written to a fresh temporary of unpredictable name created exclusively in the
 // same folder, and renamed into place: a failed write leaves no partial file, and a file or

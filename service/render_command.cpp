@@ -11,6 +11,7 @@
 #include "renderer/image_output.h"
 #include "renderer/quality_presets.h"
 #include "renderer/reference/reference_renderer.h"
+#include "renderer/truth/truth_renderer.h"
 #include "service/commands.h"
 #include "service/demo_scenes.h"
 #include "service/window_viewer.h"
@@ -64,6 +65,21 @@ int run_render(const RenderOptions& opt) {
   ViewRequest view = view_from(opt);
   std::vector<double> frame_ms;
   FrameImage img;
+  if (opt.quality == "truth") {  // CPU path tracer, double precision: no GL context needed
+    truth::TruthSettings settings;
+    settings.spp = opt.spp;
+    settings.seed = opt.seed;
+    const truth::TruthImage t = truth::render_truth(view, opt.weather, settings);
+    img = t.image;
+    frame_ms.push_back(img.stats.render_ms);
+    char suffix[160];
+    std::snprintf(suffix, sizeof suffix, " spp=%d seed=%llu lost_paths=%llu majorant_violations=%llu", t.spp,
+                  static_cast<unsigned long long>(opt.seed), static_cast<unsigned long long>(t.counters.lost_paths),
+                  static_cast<unsigned long long>(t.counters.majorant_violations));
+    write_image(opt.out_path, img, opt.exposure_ev);
+    print_stats(opt.out_path, img, timing_suffix(frame_ms, img) + suffix);
+    return img.stats.nonfinite_pixels == 0 && t.counters.majorant_violations == 0 ? 0 : 1;
+  }
   if (opt.quality == "reference") {  // CPU, double precision: no GL context needed
     if (static_cast<long>(opt.width) * opt.height > kReferenceWarnPixels) {
       std::fprintf(stderr, "cloudsvc render: warning: --quality reference at %dx%d is slow (minutes above 320x180)\n",

@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <tuple>
@@ -56,11 +57,14 @@ const Range kExposure{-20.0, 20.0, false, "EV"};
 constexpr const char* kProgram = "cloudsvc";  // prefix of every error line
 constexpr int kMaxFrames = 100000;  // --frames upper bound (a benchmark, not a stream)
 constexpr const char* kReferenceQuality = "reference";
+constexpr const char* kTruthQuality = "truth";
+constexpr int kMaxSpp = 1 << 20;  // --spp upper bound
 
-// "naive, low, medium, high, ultra, default, reference": the values of --quality.
+// "naive, low, medium, high, ultra, default, reference, truth": the values of --quality.
 std::string quality_names_text() {
   std::vector<std::string> names = quality_preset_names();
   names.emplace_back(kReferenceQuality);
+  names.emplace_back(kTruthQuality);
   return cli::join(names, ", ");
 }
 
@@ -78,7 +82,7 @@ double wrap_heading_deg(double heading_deg) {
 struct RenderArgs {
   CLI::App* command = nullptr;
   std::string lat, lon, alt, heading, pitch, roll, time, fov, size, weather, out, frames, exposure;
-  std::string quality, render_frames;  // --quality, --frames
+  std::string quality, render_frames, spp, seed;  // --quality, --frames, --spp, --seed
   bool window = false;
 };
 
@@ -153,8 +157,18 @@ void add_quality_flags(CLI::App& cmd, RenderArgs& args, const RenderOptions& def
   cmd.add_option("--quality", args.quality,
                  "Ray-march quality preset: one of " + quality_names_text() +
                      " (docs/ACCURACY.md: measured error and cost of each; reference = the CPU "
-                     "reference renderer, slow: minutes above 320x180); default " + defaults.quality)
+                     "reference renderer, slow: minutes above 320x180; truth = the path-traced ground "
+                     "truth, every order of scattering, with its standard error as EXR channels "
+                     "se.R/G/B: slower still, use small sizes); default " + defaults.quality)
       ->type_name("PRESET");
+  cmd.add_option("--spp", args.spp,
+                 "With --quality truth: paths per pixel (integer in [2, " + std::to_string(kMaxSpp) +
+                     "]; the standard error falls as 1/sqrt(N)); default " + std::to_string(defaults.spp))
+      ->type_name("N");
+  cmd.add_option("--seed", args.seed,
+                 "With --quality truth: random seed (integer in [0, 2147483647]); the image depends on it, "
+                 "not on the thread count; default " + std::to_string(defaults.seed))
+      ->type_name("N");
   cmd.add_option("--frames", args.render_frames,
                  "Render the same view N times (frame_index 0..N-1, integer in [1, " +
                      std::to_string(kMaxFrames) + "]) and write the last frame; the stats line's "
@@ -243,7 +257,7 @@ void apply_image(const RenderArgs& a, RenderOptions& opt) {
 void apply_quality(const RenderArgs& a, RenderOptions& opt) {
   const CLI::App& cmd = *a.command;
   if (given(cmd, "--quality")) {
-    if (a.quality != kReferenceQuality && !quality_preset(a.quality)) {
+    if (a.quality != kReferenceQuality && a.quality != kTruthQuality && !quality_preset(a.quality)) {
       fail("--quality", a.quality, "expected one of " + quality_names_text());
     }
     if (opt.window) fail("--quality", a.quality, "not valid with --window (file output only)");
@@ -252,6 +266,16 @@ void apply_quality(const RenderArgs& a, RenderOptions& opt) {
   if (given(cmd, "--frames")) {
     opt.frames = parse_integer("--frames", a.render_frames, 1, kMaxFrames, "frames");
     if (opt.window) fail("--frames", a.render_frames, "not valid with --window (use --window-frames)");
+    if (opt.quality == kTruthQuality) fail("--frames", a.render_frames, "not valid with --quality truth (use --spp)");
+  }
+  const bool truth = opt.quality == kTruthQuality;
+  if (given(cmd, "--spp")) {
+    opt.spp = parse_integer("--spp", a.spp, 2, kMaxSpp, "paths per pixel");
+    if (!truth) fail("--spp", a.spp, "only valid with --quality truth");
+  }
+  if (given(cmd, "--seed")) {
+    opt.seed = static_cast<std::uint64_t>(parse_integer("--seed", a.seed, 0, std::numeric_limits<int>::max(), "seed"));
+    if (!truth) fail("--seed", a.seed, "only valid with --quality truth");
   }
 }
 

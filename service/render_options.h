@@ -3,6 +3,7 @@
 // range, exit code 2, no output file).
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -28,7 +29,10 @@ struct RenderOptions {
   int window_frames = 0;                         // --window-frames N: close after N frames (0 = run until closed)
   double exposure_ev = 0.0;                      // --exposure: EV offset for PNG tone mapping
   std::string quality = "default";               // --quality: a renderer/quality_presets.h name,
-                                                 // or "reference" (the CPU reference renderer)
+                                                 // "reference" (the CPU reference renderer) or
+                                                 // "truth" (the path-traced ground truth)
+  int spp = 64;                                  // --spp N: paths per pixel of --quality truth
+  std::uint64_t seed = 1;                        // --seed N: random seed of --quality truth
   int frames = 1;                                // --frames N >= 1: render the view N times
                                                  // (frame_index 0..N-1), write the last frame
 };

@@ -78,6 +78,10 @@ TEST_F(CliBinary, BadInputGivesOneLineExitTwoAndNoFile) {
       {{"--time", "2026-13-01T00:00:00Z"}, "--time"},
       {{"--weather", (dir_ / "missing.json").string()}, "missing.json"},
       {{"--weather", bad_json}, "bad.json"},
+      {{"--spp", "16"}, "--spp"},                              // only with --quality truth
+      {{"--quality", "truth", "--spp", "1"}, "--spp"},         // needs two for a standard error
+      {{"--quality", "truth", "--frames", "2"}, "--frames"},
+      {{"--quality", "truth", "--seed", "-3"}, "--seed"},
   };
   for (const Case& c : cases) {
     std::vector<std::string> args = {"render", "--size", "32x18", "--out", out};
@@ -120,6 +124,32 @@ TEST_F(CliBinary, RenderWritesExrAndPngAndPrintsStats) {
   int files = 0;
   for (const auto& e : fs::directory_iterator(dir_)) files += e.path().extension() == ".exr" || e.path().extension() == ".png";
   EXPECT_EQ(files, 2);
+}
+
+// `cloudsvc render --quality truth`: the path-traced ground truth writes an EXR with the
+// standard error as three extra channels, all finite and non-negative; its stats line
+// names spp, seed and the tracer's health counters (0 lost paths, 0 majorant violations).
+TEST_F(CliBinary, TruthRenderWritesStandardErrorChannels) {
+  const std::string exr = (dir_ / "truth.exr").string();
+  const RunResult r = run_cloudsvc({"render", "--quality", "truth", "--spp", "4", "--seed", "7", "--size", "12x7",
+                                    "--alt", "600", "--pitch", "15", "--weather", "scattered-cumulus", "--out", exr},
+                                   dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("spp=4 seed=7 lost_paths=0 majorant_violations=0"), std::string::npos) << r.out;
+  auto in = OIIO::ImageInput::open(exr);
+  ASSERT_TRUE(in);
+  const OIIO::ImageSpec& spec = in->spec();
+  ASSERT_EQ(spec.nchannels, 7);
+  EXPECT_EQ(spec.channelnames[4], "se.R");
+  EXPECT_EQ(spec.channelnames[6], "se.B");
+  std::vector<float> px(static_cast<std::size_t>(12 * 7 * 7));
+  ASSERT_TRUE(in->read_image(0, 0, 0, 7, OIIO::TypeDesc::FLOAT, px.data()));
+  int positive_error = 0;
+  for (std::size_t i = 0; i < px.size(); i += 7) {
+    for (int c = 0; c < 7; ++c) EXPECT_TRUE(std::isfinite(px[i + c]) && px[i + c] >= 0.0f) << "pixel " << i / 7;
+    positive_error += px[i + 5] > 0.0f;
+  }
+  EXPECT_GT(positive_error, 12 * 7 / 2);  // a 4-path estimate is uncertain almost everywhere
 }
 
 // `cloudsvc demo` at a tiny size: every documented scene is written as PNG and EXR at the

@@ -79,46 +79,69 @@ TEST(TruthBandWalker, GrazingRayReentersTheBandItLeft) {
   EXPECT_NEAR(walk2.advance(tau, m), 0.5 * t_edge, 1e-3);
 }
 
-// The scene's majorant bounds the density field: random points in every layer of the
-// presets, extinction <= the band's majorant.
+// The scene's majorants bound the density field: the band majorant at random points in
+// every layer of every preset, and the local majorant along random 250 m stretches, at a
+// mid latitude, next to the north pole and on the antimeridian.
 TEST(TruthMajorant, BoundsTheDensityFieldOfEveryPreset) {
-  ViewRequest v;
-  v.position = {47.45, 8.56, 2500.0};
-  v.attitude = {270.0, 5.0, 0.0};
-  v.unix_time_s = *geo::parse_utc_iso8601("2026-06-21T12:00:00Z");
-  v.width = 64;
-  v.height = 36;
-  for (const std::string& name : weather::preset_names()) {
-    const weather::Weather wx = *weather::preset(name);
-    if (wx.layers.empty()) continue;
-    const auto inputs = reference::reference_inputs({}, wx.map_seed);
-    const reference::ReferenceScene scene = reference::make_reference_scene(v, wx);
-    const reference::CloudField field(scene, *inputs);
-    const SceneMedium medium(scene, field);
-    const TruthWorld world = make_scene_world(scene, *inputs, true, medium);
-    model::Pcg32 rng(7, 1);
-    double ratio_sum = 0.0;
-    int inside = 0;
-    for (int i = 0; i < 100000; ++i) {
-      const reference::ReferenceLayer& L = scene.layers[static_cast<std::size_t>(i) % scene.layers.size()];
-      const double alt = L.base_m + rng.uniform() * (L.top_m - L.base_m);
-      // within 60 km of the camera
-      const double e = (rng.uniform() - 0.5) * 1.2e5, n = (rng.uniform() - 0.5) * 1.2e5;
-      const glm::dvec3 dir = glm::normalize(glm::dvec3(e, n, world.radius_m + scene.shell.camera_alt_m));
-      const glm::dvec3 x = dir * (world.radius_m + alt);
-      MediumPoint m;
-      medium.at(x, alt, m);
-      const auto it = std::upper_bound(world.band_edges.begin(), world.band_edges.end(), alt);
-      const double maj = world.band_majorant[static_cast<std::size_t>(it - world.band_edges.begin() - 1)];
-      const glm::dvec3 ext = m.extinction();
-      ASSERT_LE(std::max({ext.r, ext.g, ext.b}), maj) << name << " at altitude " << alt;
-      if (m.cloud_total() > 0.0) {
-        ratio_sum += m.cloud_total() / maj;
-        ++inside;
+  struct Place {
+    double lat, lon;
+  };
+  for (const Place& place : {Place{47.45, 8.56}, Place{89.95, 30.0}, Place{-12.0, 179.999}}) {
+    ViewRequest v;
+    v.position = {place.lat, place.lon, 2500.0};
+    v.attitude = {270.0, 5.0, 0.0};
+    v.unix_time_s = *geo::parse_utc_iso8601("2026-06-21T12:00:00Z");
+    v.width = 64;
+    v.height = 36;
+    for (const std::string& name : weather::preset_names()) {
+      const weather::Weather wx = *weather::preset(name);
+      if (wx.layers.empty()) continue;
+      const auto inputs = reference::reference_inputs({}, wx.map_seed);
+      const reference::ReferenceScene scene = reference::make_reference_scene(v, wx);
+      const reference::CloudField field(scene, *inputs);
+      const SceneMedium medium(scene, field);
+      const SceneLocalMajorant local(scene, *inputs, true, scene_band_edges(scene));
+      const TruthWorld world = make_scene_world(scene, *inputs, true, medium, &local);
+      model::Pcg32 rng(7, 1);
+      double band_ratio = 0.0, local_ratio = 0.0;
+      int inside = 0;
+      for (int i = 0; i < 4000; ++i) {
+        const reference::ReferenceLayer& L = scene.layers[static_cast<std::size_t>(i) % scene.layers.size()];
+        // A stretch of up to local_stretch_m within one band of the layer, within 60 km.
+        const double alt = L.base_m + rng.uniform() * (L.top_m - L.base_m);
+        const auto it = std::upper_bound(world.band_edges.begin(), world.band_edges.end(), alt);
+        const int band = static_cast<int>(it - world.band_edges.begin()) - 1;
+        const double e = (rng.uniform() - 0.5) * 1.2e5, n = (rng.uniform() - 0.5) * 1.2e5;
+        const glm::dvec3 dir = glm::normalize(glm::dvec3(e, n, world.radius_m + scene.shell.camera_alt_m));
+        const glm::dvec3 a = dir * (world.radius_m + alt);
+        const double phi = 2.0 * kPi * rng.uniform();
+        const glm::dvec3 step = glm::dvec3(std::cos(phi), std::sin(phi), 0.0) * world.local_stretch_m * rng.uniform();
+        const glm::dvec3 b = a + step;  // nearly horizontal: stays in the band for the most part
+        const double band_cloud = world.band_majorant[static_cast<std::size_t>(band)] -
+                                  world.band_air_majorant[static_cast<std::size_t>(band)];
+        const double local_cloud = std::min(band_cloud, local.cloud_bound(band, a, b));
+        for (int k = 0; k <= 20; ++k) {
+          const glm::dvec3 x = a + (k / 20.0) * (b - a);
+          const double h = glm::length(x) - world.radius_m;
+          if (h < world.band_edges[static_cast<std::size_t>(band)] || h > world.band_edges[static_cast<std::size_t>(band) + 1]) continue;
+          MediumPoint m;
+          medium.at(x, h, m);
+          ASSERT_LE(m.cloud_total(), band_cloud) << name << " at altitude " << h;
+          ASSERT_LE(m.cloud_total(), local_cloud) << name << " at altitude " << h << ", place " << place.lat << " "
+                                                  << place.lon;
+          const glm::dvec3 ext = m.extinction();
+          ASSERT_LE(std::max({ext.r, ext.g, ext.b}), world.band_majorant[static_cast<std::size_t>(band)]);
+          if (m.cloud_total() > 0.0) {
+            band_ratio += m.cloud_total() / band_cloud;
+            local_ratio += m.cloud_total() / local_cloud;
+            ++inside;
+          }
+        }
       }
+      std::printf("%7.2f %8.3f %-20s cloud extinction / majorant in cloud: band %.3f, local %.3f (%d points)\n",
+                  place.lat, place.lon, name.c_str(), inside ? band_ratio / inside : 0.0,
+                  inside ? local_ratio / inside : 0.0, inside);
     }
-    std::printf("%-20s mean extinction / majorant in cloud: %.3f (%d points in cloud)\n", name.c_str(),
-                inside ? ratio_sum / inside : 0.0, inside);
   }
 }
 

@@ -9,7 +9,7 @@
 namespace cloudsvc::truth {
 
 BandWalker::BandWalker(const TruthWorld& world, const glm::dvec3& x0, const glm::dvec3& w, double air_scale)
-    : world_(world), air_scale_(air_scale) {
+    : world_(world), x0_(x0), w_(w), air_scale_(air_scale) {
   const double r = glm::length(x0);
   h0_ = r - world.radius_m;
   mu_ = std::clamp(glm::dot(x0, w) / r, -1.0, 1.0);
@@ -42,6 +42,17 @@ void BandWalker::find_segment() {
     seg_end_ = i->t0;
     next_band_ = band_ - 1;
   }
+  const std::size_t b = static_cast<std::size_t>(band_);
+  const double air = air_scale_ * world_.band_air_majorant[b];
+  double cloud = world_.band_majorant[b] - world_.band_air_majorant[b];
+  if (world_.local && world_.band_local[b] && cloud > 0.0) {
+    if (seg_end_ - t_ > world_.local_stretch_m) {
+      seg_end_ = t_ + world_.local_stretch_m;
+      next_band_ = band_;
+    }
+    cloud = std::min(cloud, world_.local->cloud_bound(band_, x0_ + t_ * w_, x0_ + seg_end_ * w_));
+  }
+  seg_majorant_ = air + cloud;
   segment_known_ = true;
 }
 
@@ -49,8 +60,7 @@ double BandWalker::advance(double tau, double& majorant) {
   const int bands = static_cast<int>(world_.band_majorant.size());
   while (end_ == End::None) {
     if (!segment_known_) find_segment();
-    const std::size_t b = static_cast<std::size_t>(band_);
-    const double m = world_.band_majorant[b] + (air_scale_ - 1.0) * world_.band_air_majorant[b];
+    const double m = seg_majorant_;
     const double room = seg_end_ - t_;
     if (m > 0.0 && tau < room * m) {
       t_ += tau / m;

@@ -9,7 +9,9 @@
 // shell_crossings.h, one band at a time: inside band b the ray leaves through the outer
 // sphere at its far root, or enters the inner sphere at its near root if that lies ahead.
 // A band is re-entered only through a root strictly beyond the current distance, so a
-// point on a boundary never re-detects the sphere it has just crossed.
+// point on a boundary never re-detects the sphere it has just crossed. Bands the world
+// refines locally (TruthWorld::local) are cut into stretches of local_stretch_m, each with
+// its own majorant.
 #pragma once
 
 #include <limits>
@@ -37,10 +39,12 @@ class BandWalker {
   double distance() const { return t_; }
 
  private:
-  void find_segment();  // sets seg_end_ and next_band_ for band_
+  void find_segment();  // sets seg_end_, next_band_ and seg_majorant_ for band_
 
   const TruthWorld& world_;
+  glm::dvec3 x0_, w_;           // the ray
   double h0_ = 0.0, mu_ = 0.0;  // start altitude and zenith cosine of the ray
+  double seg_majorant_ = 0.0;
   double air_scale_ = 1.0;
   int band_ = 0;                 // current band; -1 = ground, size = above the top
   double t_ = 0.0;               // current distance

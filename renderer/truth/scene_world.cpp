@@ -80,23 +80,118 @@ double cloud_extinction_bound(const reference::ReferenceLayer& L, const FieldMax
   return d * L.density_scale * std::exp2(2.0 * (maxima.map_density - 0.5)) * L.sigma_max_per_m;
 }
 
+std::vector<double> scene_band_edges(const reference::ReferenceScene& scene) {
+  const double ground = scene.shell.ground_alt_m, top = reference::atmo::kThickness;
+  std::vector<double> e = {ground, top};
+  for (int b = 1; b < reference::mc::majorant_band_count(); ++b) e.push_back(reference::mc::majorant_band_bottom(b));
+  for (const reference::ReferenceLayer& L : scene.layers)
+    for (int k = 0; k <= kCloudSubBands; ++k) e.push_back(L.base_m + (L.top_m - L.base_m) * k / kCloudSubBands);
+  std::sort(e.begin(), e.end());
+  e.erase(std::remove_if(e.begin(), e.end(), [&](double a) { return a < ground || a > top; }), e.end());
+  e.erase(std::unique(e.begin(), e.end()), e.end());
+  return e;
+}
+
+SceneLocalMajorant::SceneLocalMajorant(const reference::ReferenceScene& scene,
+                                       const reference::ReferenceInputs& inputs, bool honour_stratiform,
+                                       const std::vector<double>& band_edges)
+    : scene_(scene), inputs_(inputs), edges_(band_edges) {
+  for (std::size_t i = 0; i + 1 < edges_.size(); ++i) {
+    std::vector<double> row;
+    for (const reference::ReferenceLayer& L : scene.layers) {
+      const double f0 = (edges_[i] - L.base_m) / (L.top_m - L.base_m), f1 = (edges_[i + 1] - L.base_m) / (L.top_m - L.base_m);
+      const double fv_min = (honour_stratiform && L.stratiform) ? 1.0 : 0.3;
+      row.push_back(edges_[i + 1] <= L.base_m || edges_[i] >= L.top_m ? 0.0 : profile_bound(L, f0, f1 / fv_min));
+    }
+    profile_.push_back(std::move(row));
+  }
+  if (!inputs.base_noise.data.empty()) base_ = NoiseMaxPyramid(inputs.base_noise);
+  const weather::WeatherMap& map = inputs.weather_map;
+  polar_[0] = glm::dvec2(inputs.pole_south.r, inputs.pole_south.b);
+  polar_[1] = glm::dvec2(inputs.pole_north.r, inputs.pole_north.b);
+  for (int j = 0; j < std::min(4, map.height); ++j)
+    for (int i = 0; i < map.width; ++i)
+      for (int pole = 0; pole < 2; ++pole) {
+        const int row = pole == 0 ? j : map.height - 1 - j;
+        const float* t = &map.rgba[(static_cast<std::size_t>(row) * map.width + i) * 4];
+        polar_[pole] = glm::max(polar_[pole], glm::dvec2(t[0], t[2]));
+      }
+}
+
+glm::dvec2 SceneLocalMajorant::map_maxima(const glm::dvec3& a, const glm::dvec3& b) const {
+  const weather::WeatherMap& map = inputs_.weather_map;
+  if (map.rgba.empty()) return glm::dvec2(1.0);
+  const double W = map.width, H = map.height;
+  double x[2], y[2];
+  const glm::dvec3 ends[2] = {a, b};
+  for (int k = 0; k < 2; ++k) {
+    const glm::dvec3 q = scene_.shell.enu_to_ecef * ends[k];  // from the shell centre, ECEF axes
+    const double lat = std::atan2(q.z, std::sqrt(q.x * q.x + q.y * q.y));
+    const double lon = std::atan2(q.y, q.x);
+    x[k] = (lon / (2.0 * std::numbers::pi) + 0.5) * W - 0.5;
+    y[k] = (lat / std::numbers::pi + 0.5) * H - 0.5;
+  }
+  const double y_lo = std::min(y[0], y[1]), y_hi = std::max(y[0], y[1]);
+  if (y_lo < 2.0) return polar_[0];  // near the south pole: any longitude, the pole blend
+  if (y_hi > H - 3.0) return polar_[1];
+  if (std::abs(x[0] - x[1]) > 0.5 * W) (x[0] < x[1] ? x[0] : x[1]) += W;  // across the antimeridian
+  const int i0 = static_cast<int>(std::floor(std::min(x[0], x[1]))) - 1, i1 = static_cast<int>(std::floor(std::max(x[0], x[1]))) + 2;
+  const int j0 = std::max(0, static_cast<int>(std::floor(y_lo)) - 1);
+  const int j1 = std::min(map.height - 1, static_cast<int>(std::floor(y_hi)) + 2);
+  glm::dvec2 m(0.0);
+  for (int j = j0; j <= j1; ++j)
+    for (int i = i0; i <= i1; ++i) {
+      const int iw = ((i % map.width) + map.width) % map.width;
+      const float* t = &map.rgba[(static_cast<std::size_t>(j) * map.width + iw) * 4];
+      m = glm::max(m, glm::dvec2(t[0], t[2]));
+    }
+  return m;
+}
+
+double SceneLocalMajorant::cloud_bound(int band, const glm::dvec3& a, const glm::dvec3& b) const {
+  const std::vector<double>& prof = profile_[static_cast<std::size_t>(band)];
+  const double R = scene_.shell.radius_m;
+  const glm::dvec3 to_local(0.0, 0.0, R + scene_.shell.camera_alt_m);
+  const double band_height = edges_[static_cast<std::size_t>(band) + 1] - edges_[static_cast<std::size_t>(band)];
+  const double band_top = edges_[static_cast<std::size_t>(band) + 1];
+  const double length = glm::length(b - a);
+  glm::dvec2 map_max(-1.0);
+  double bound = 0.0;
+  for (std::size_t li = 0; li < scene_.layers.size(); ++li) {
+    if (prof[li] <= 0.0) continue;
+    const reference::ReferenceLayer& L = scene_.layers[li];
+    if (map_max.x < 0.0) map_max = map_maxima(a, b);
+    const double c = L.coverage;
+    const double c_max = std::clamp(c + 1.2 * std::min(c, 1.0 - c) * (2.0 * map_max.x - 1.0), 0.0, 1.0);
+    if (c_max <= 0.0) continue;
+    // Noise-space box of the stretch (m), then texture units.
+    glm::dvec3 f[2];
+    const glm::dvec3 ends[2] = {a, b};
+    for (int k = 0; k < 2; ++k) {
+      const double r = glm::length(ends[k]);
+      const glm::dvec3 p = ends[k] - to_local;
+      f[k] = L.camera_field + L.field_from_local * (p + (L.noise_vertical_scale - 1.0) * (r - R) * (ends[k] / r));
+    }
+    const double widen = std::abs(L.noise_vertical_scale - 1.0) * (band_height + band_top * length / R + 1.0);
+    const glm::dvec3 lo = (glm::min(f[0], f[1]) - widen) / L.base_period_m;
+    const glm::dvec3 hi = (glm::max(f[0], f[1]) + widen) / L.base_period_m;
+    const double noise = base_.max_over(lo, hi);
+    const double threshold = reference::interpolate_quantile(inputs_.base_quantiles, 1.0 - c_max);
+    const double d = std::clamp((noise * prof[li] - threshold) / reference::kCoverageEdge, 0.0, 1.0);
+    bound += d * L.density_scale * std::exp2(2.0 * (map_max.y - 0.5)) * L.sigma_max_per_m;
+  }
+  return bound * (1.0 + 1e-9);
+}
+
 TruthWorld make_scene_world(const reference::ReferenceScene& scene, const reference::ReferenceInputs& inputs,
-                            bool honour_stratiform, const SceneMedium& medium) {
+                            bool honour_stratiform, const SceneMedium& medium, const SceneLocalMajorant* local) {
   TruthWorld w;
   const reference::ShellFrame& s = scene.shell;
   w.radius_m = s.radius_m;
   w.ground_alt_m = s.ground_alt_m;
   w.top_alt_m = reference::atmo::kThickness;
-  // Band edges: the air's bands, every cloud layer's sub-bands, the ground and the top.
-  std::vector<double>& e = w.band_edges;
-  e.push_back(w.ground_alt_m);
-  e.push_back(w.top_alt_m);
-  for (int b = 1; b < reference::mc::majorant_band_count(); ++b) e.push_back(reference::mc::majorant_band_bottom(b));
-  for (const reference::ReferenceLayer& L : scene.layers)
-    for (int k = 0; k <= kCloudSubBands; ++k) e.push_back(L.base_m + (L.top_m - L.base_m) * k / kCloudSubBands);
-  std::sort(e.begin(), e.end());
-  e.erase(std::remove_if(e.begin(), e.end(), [&](double a) { return a < w.ground_alt_m || a > w.top_alt_m; }), e.end());
-  e.erase(std::unique(e.begin(), e.end()), e.end());
+  w.band_edges = scene_band_edges(scene);
+  const std::vector<double>& e = w.band_edges;
   const FieldMaxima maxima = field_maxima(inputs);
   for (std::size_t i = 0; i + 1 < e.size(); ++i) {
     const glm::dvec3 air = reference::atmo::max_extinction(e[i], e[i + 1]);
@@ -106,6 +201,13 @@ TruthWorld make_scene_world(const reference::ReferenceScene& scene, const refere
     const double air_bound = std::max({air.r, air.g, air.b}) * (1.0 + 1e-9);
     w.band_air_majorant.push_back(air_bound);
     w.band_majorant.push_back(air_bound + cloud * (1.0 + 1e-9));
+    w.band_local.push_back(cloud > 0.0 ? 1 : 0);
+  }
+  if (local) {
+    w.local = local;
+    w.local_stretch_m = 1e9;
+    for (const reference::ReferenceLayer& L : scene.layers)  // four base-noise texels of the finest layer
+      w.local_stretch_m = std::min(w.local_stretch_m, 4.0 * L.base_period_m / std::max(1, inputs.base_noise.size));
   }
 
   w.sun = scene.sun_local;

@@ -22,6 +22,7 @@
 #include "renderer/reference/cloud_field.h"
 #include "renderer/reference/reference_inputs.h"
 #include "renderer/reference/reference_scene.h"
+#include "renderer/truth/noise_max_pyramid.h"
 #include "renderer/truth/truth_world.h"
 
 namespace cloudsvc::truth {
@@ -39,10 +40,6 @@ class SceneMedium final : public TruthMedium {
   glm::dvec3 centre_to_camera_;  // (0, 0, R + h): centred frame -> local frame offset, m
 };
 
-// The world of scene (the medium must outlive it; inputs are the field's).
-TruthWorld make_scene_world(const reference::ReferenceScene& scene, const reference::ReferenceInputs& inputs,
-                            bool honour_stratiform, const SceneMedium& medium);
-
 // The inputs' largest values the bound uses.
 struct FieldMaxima {
   double map_coverage = 1.0, map_density = 1.0;  // weather map R and B, over texels and poles
@@ -50,6 +47,39 @@ struct FieldMaxima {
   reference::Quantiles16 base_quantiles{};
 };
 FieldMaxima field_maxima(const reference::ReferenceInputs& inputs);
+
+// The local refinement of the cloud majorant (TruthWorld::local): over a stretch of ray,
+// the same formula with the weather map's coverage and density at their largest over the
+// texels around the stretch (the rows next to a pole and the pole's value near a pole)
+// and the base noise at its largest over the texels a trilinear sample anywhere on the
+// stretch can read (NoiseMaxPyramid; the stretch's noise-space bounding box, widened by
+// |k - 1| (band height + altitude x stretch / R + 1 m) for the vertical noise scale k).
+class SceneLocalMajorant final : public LocalCloudMajorant {
+ public:
+  SceneLocalMajorant(const reference::ReferenceScene& scene, const reference::ReferenceInputs& inputs,
+                     bool honour_stratiform, const std::vector<double>& band_edges);
+  double cloud_bound(int band, const glm::dvec3& a, const glm::dvec3& b) const override;
+  // Largest R and B of the weather map that a bilinear sample on the segment (centred
+  // frame) can read.
+  glm::dvec2 map_maxima(const glm::dvec3& a, const glm::dvec3& b) const;
+
+ private:
+  const reference::ReferenceScene& scene_;
+  const reference::ReferenceInputs& inputs_;
+  std::vector<double> edges_;
+  std::vector<std::vector<double>> profile_;  // [band][layer]: height-profile bound
+  NoiseMaxPyramid base_;
+  glm::dvec2 polar_[2];  // largest R, B of the 4 rows next to the south / north pole and the pole
+};
+
+// The world of scene (medium and local must outlive it; inputs are the field's); local
+// may be nullptr (band majorants only).
+TruthWorld make_scene_world(const reference::ReferenceScene& scene, const reference::ReferenceInputs& inputs,
+                            bool honour_stratiform, const SceneMedium& medium,
+                            const SceneLocalMajorant* local = nullptr);
+
+// The band edges make_scene_world uses (for SceneLocalMajorant).
+std::vector<double> scene_band_edges(const reference::ReferenceScene& scene);
 
 // The bound of layer L's extinction over the altitudes [a0, a1] (1/m), as described above;
 // exposed for the tests.

@@ -26,7 +26,9 @@ TruthImage render_truth(const ViewRequest& view, const weather::Weather& weather
   const reference::ReferenceScene scene = reference::make_reference_scene(view, weather, wind_anchor);
   const reference::CloudField field(scene, *inputs, settings.honour_stratiform);
   const SceneMedium medium(scene, field);
-  const TruthWorld world = make_scene_world(scene, *inputs, settings.honour_stratiform, medium);
+  const SceneLocalMajorant local(scene, *inputs, settings.honour_stratiform, scene_band_edges(scene));
+  const TruthWorld world = make_scene_world(scene, *inputs, settings.honour_stratiform, medium,
+                                            scene.layers.empty() ? nullptr : &local);
   const glm::dvec3 camera(0.0, 0.0, scene.shell.radius_m + scene.shell.camera_alt_m);  // centred frame
 
   const int pixels = view.width * view.height;

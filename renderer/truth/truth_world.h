@@ -55,6 +55,16 @@ class TruthMedium {
   virtual void at(const glm::dvec3& x, double altitude_m, MediumPoint& out) const = 0;
 };
 
+// A tighter, local bound of the cloud part of a band's majorant over a stretch of ray
+// (optional): for the straight segment a -> b (centred frame) inside band `band`, a bound
+// of the cloud extinction at every point of the segment, 1/m. Must be safe to call
+// concurrently.
+class LocalCloudMajorant {
+ public:
+  virtual ~LocalCloudMajorant() = default;
+  virtual double cloud_bound(int band, const glm::dvec3& a, const glm::dvec3& b) const = 0;
+};
+
 struct TruthWorld {
   double radius_m = 6.371e6;      // sphere of altitude 0
   double ground_alt_m = 0.0;      // Lambertian ground sphere
@@ -64,6 +74,12 @@ struct TruthWorld {
   std::vector<double> band_edges;
   std::vector<double> band_majorant;      // 1/m, >= every channel's extinction in the band
   std::vector<double> band_air_majorant;  // the part of band_majorant that bounds the air (>= 0)
+  // Optional local refinement of the rest of band_majorant (the clouds): bands with
+  // band_local[i] != 0 are walked in stretches of at most local_stretch_m, each with the
+  // majorant air + min(band's cloud part, local->cloud_bound(...)).
+  const LocalCloudMajorant* local = nullptr;
+  std::vector<char> band_local;
+  double local_stretch_m = 250.0;
 
   glm::dvec3 sun{0.0, 0.0, 1.0};        // unit, towards the sun (the same everywhere)
   glm::dvec3 sun_irradiance{0.0};       // collimated, perpendicular to the beam; 0 = no sun

@@ -1,9 +1,11 @@
 // cloudbench: error vs cost of the ray-march knobs against the CPU reference (issue
-// "Accuracy", part 2; docs/ACCURACY.md). For each scene of tests/fixtures/accuracy_scenes.h (the eight
-// "core" ones) it renders the CPU reference once (cached as EXR under OUT/ref/, keyed by
-// scene and size), then for each march configuration renders a warm-up frame
-// (frame_index 0, whose error is measured) and N timed frames (frame_index 1..N, median
-// render_ms) with the GPU renderer.
+// "Accuracy", part 2; docs/ACCURACY.md). For each scene of the scene set (--scenes, see
+// bench/bench_scenes.h: by default the eight "core" scenes of tests/fixtures/accuracy_scenes.h;
+// random:SEED:N draws N unseen scenes from tests/fixtures/random_scenes.h) it renders the CPU
+// reference once (cached as EXR under OUT/ref/, keyed by the full scene: view, size, weather
+// and reference rays per pixel, bench_scenes.h reference_key), then for each march
+// configuration renders the still view (the last frame's error is measured) and N timed
+// frames (median render_ms) with the GPU renderer.
 //
 // Sweep (not the full product): one knob at a time around the centre (the RenderQuality
 // defaults: 64 log steps, t_ref 1000 m, 6 light steps, 3 octaves) over
@@ -18,8 +20,16 @@
 // channels (checked on every row; the largest relative disagreement is reported), but its
 // PSNR uses a peak of 1.0, so it is not used for PSNR.
 //
-// Outputs in --out DIR (default bench-out): report.csv, report.md, pareto_<scene>.png
-// (log-log RMSE vs median ms, Pareto front joined).
+// Over the scene set (issue 14; bench/scene_statistics.h), per configuration: the mean and
+// the 90th percentile over scenes of the per-scene RMSE relative to the naive march's RMSE
+// on that scene, of the absolute RMSE, of the opacity RMSE, of the mean relative error over
+// cloud pixels (|gpu - ref| / ref per rgb channel where the reference opacity > 0.01), and
+// the mean and 10th percentile of the PSNR; and whether the default preset is at or below
+// the naive march for the mean and the 90th percentile.
+//
+// Outputs in --out DIR (default bench-out): report.csv (one row per scene x configuration),
+// scenes.csv (one row per scene: its parameters), report.md, pareto_<scene>.png (log-log RMSE
+// vs median ms, Pareto front joined).
 //
 // The error is measured at --size (the CPU reference costs ~40 ms per pixel on 2 cores
 // at 8000+ density evaluations per pixel), the cost at --time-size (larger, so that the
@@ -27,6 +37,7 @@
 //
 // Usage: cloudbench [--size WxH (96x54)] [--time-size WxH (160x90)] [--out DIR] [--frames N (5)] [--quick]
 //                   [--ref-samples N (3: N x N sub-pixel rays per reference pixel; 1: the pixel centre)]
+//                   [--scenes core|random:SEED:N (core)]
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 
@@ -43,8 +54,10 @@
 #include <string>
 #include <vector>
 
+#include "bench/bench_scenes.h"
 #include "bench/bench_util.h"
 #include "bench/cost_command.h"
+#include "bench/scene_statistics.h"
 #include "bench/sequence_command.h"
 #include "bench/stability_command.h"
 #include "renderer/atmosphere_luts.h"
@@ -53,7 +66,6 @@
 #include "renderer/quality_presets.h"
 #include "renderer/reference/image_metrics.h"
 #include "renderer/reference/reference_renderer.h"
-#include "tests/fixtures/accuracy_scenes.h"
 #include "weather/presets.h"
 
 namespace fs = std::filesystem;
@@ -70,6 +82,7 @@ struct Options {
   // reference rays per pixel along each axis (ReferenceSettings::pixel_samples): 3 x 3
   // stratified rays, box-averaged, i.e. the pixel's footprint (docs/ACCURACY.md)
   int ref_samples = 3;
+  bench::SceneSetSpec scenes;  // --scenes: core (default) or random:SEED:N
   std::string command;
 };
 
@@ -84,6 +97,10 @@ struct Row {
   RenderQuality q;
   double median_ms = 0, evals_px = 0, rmse = 0, rel_rmse = 0, psnr = 0, max_err = 0, oiio_rmse = 0;
   double texture_bytes = 0;
+  double opacity_rmse = 0;      // RMSE of the opacity channel
+  double cloud_rel = 0;         // mean |gpu - ref| / ref over the reference's cloud pixels (NaN: none)
+  std::int64_t cloud_px = 0;    // reference pixels with opacity > 0.01
+  double rmse_over_naive = 0;   // rmse / the naive row's rmse on the same scene
 };
 
 std::string knob_label(const RenderQuality& q) {
@@ -205,6 +222,7 @@ struct Reference {
   FrameImage img;
   double seconds = 0;  // time of the reference render (from the cache if cached)
   double evals_px = 0;
+  std::string key;  // bench::reference_key of the scene it was rendered for
   bool cached = false;
 };
 
@@ -218,6 +236,7 @@ bool read_exr(const fs::path& p, Reference& r) {
   buf.get_pixels(OIIO::ROI(0, s.width, 0, s.height, 0, 1, 0, 4), OIIO::TypeDesc::FLOAT, r.img.rgba.data());
   r.seconds = s.get_float_attribute("cloudbench:reference_s", 0.0f);
   r.evals_px = s.get_float_attribute("cloudbench:evals_per_px", 0.0f);
+  r.key = s.get_string_attribute("cloudbench:scene_key");
   r.cached = true;
   return true;
 }
@@ -226,23 +245,30 @@ void write_exr(const fs::path& p, const Reference& r) {
   OIIO::ImageSpec spec(r.img.width, r.img.height, 4, OIIO::TypeDesc::FLOAT);  // full float: it is the truth
   spec.attribute("cloudbench:reference_s", static_cast<float>(r.seconds));
   spec.attribute("cloudbench:evals_per_px", static_cast<float>(r.evals_px));
+  spec.attribute("cloudbench:scene_key", r.key);
   OIIO::ImageBuf buf(spec, const_cast<float*>(r.img.rgba.data()));
   if (!buf.write(p.string())) std::fprintf(stderr, "cloudbench: cannot write %s\n", p.string().c_str());
 }
 
-Reference reference_for(const accuracy::AccuracyScene& s, const Options& o) {
+// The scene's reference at the error size: from OUT/ref/<scene>_<W>x<H>[_ss<N>]_<key hash>.exr
+// if that file holds the same key (bench_scenes.h reference_key: the view, the size, the
+// weather, the rays per pixel), else rendered (on all cores) and written there.
+Reference reference_for(const bench::BenchScene& s, const Options& o) {
   const fs::path dir = o.out / "ref";
   fs::create_directories(dir);
+  const std::string key = bench::reference_key(s, o.ref_samples);
   const std::string samples = o.ref_samples > 1 ? "_ss" + std::to_string(o.ref_samples) : "";
-  const fs::path file =
-      dir / (slug(s.name) + "_" + std::to_string(o.width) + "x" + std::to_string(o.height) + samples + ".exr");
+  const fs::path file = dir / (slug(s.name) + "_" + std::to_string(o.width) + "x" + std::to_string(o.height) + samples +
+                               "_" + bench::key_hash(key) + ".exr");
   Reference r;
-  if (fs::exists(file) && read_exr(file, r) && r.img.width == o.width && r.img.height == o.height) return r;
-  const ViewRequest v = accuracy::accuracy_view(s, o.width, o.height);
+  if (fs::exists(file) && read_exr(file, r) && r.img.width == o.width && r.img.height == o.height && r.key == key)
+    return r;
+  r = Reference{};
+  r.key = key;
   const auto t0 = std::chrono::steady_clock::now();
   reference::ReferenceSettings settings;
   settings.pixel_samples = o.ref_samples;
-  r.img = reference::render_reference(v, *weather::preset(s.preset), settings);
+  r.img = reference::render_reference(s.view, s.weather, settings);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   r.evals_px = r.img.stats.density_evals_per_pixel;
   r.cached = false;
@@ -367,6 +393,17 @@ Options parse(int argc, char** argv) {
       if (o.frames < 1) { std::fprintf(stderr, "cloudbench: --frames expects N >= 1\n"); std::exit(2); }
     } else if (a == "--quick") {
       o.quick = true;
+    } else if (a == "--scenes") {
+      const std::string text = value();
+      const auto spec = bench::parse_scene_set(text);
+      if (!spec) {
+        std::fprintf(stderr,
+                     "cloudbench: --scenes expects core or random:SEED:N (SEED an unsigned 64-bit decimal integer, "
+                     "N in 1..%d), got '%s'\n",
+                     bench::kMaxRandomScenes, text.c_str());
+        std::exit(2);
+      }
+      o.scenes = *spec;
     } else if (a == "--ref-samples") {
       o.ref_samples = std::atoi(value().c_str());
       if (o.ref_samples < 1 || o.ref_samples > 16) {
@@ -374,7 +411,8 @@ Options parse(int argc, char** argv) {
         std::exit(2);
       }
     } else {
-      std::fprintf(stderr, "usage: cloudbench [--size WxH] [--time-size WxH] [--out DIR] [--frames N] [--quick] [--ref-samples N]\n");
+      std::fprintf(stderr, "usage: cloudbench [--size WxH] [--time-size WxH] [--out DIR] [--frames N] [--quick] [--ref-samples N] "
+                           "[--scenes core|random:SEED:N]\n");
       std::exit(a == "--help" ? 0 : 2);
     }
   }
@@ -426,25 +464,128 @@ Row measure(CloudRenderer& renderer, const ViewRequest& base, const Config& c, c
   r.max_err = d.max_error;
   r.oiio_rmse = oiio_rmse(last, ref);
   r.texture_bytes = bytes;
+  r.opacity_rmse = d.opacity_rmse;
+  const bench::CloudRelativeError ce = bench::cloud_relative_error(last, ref);
+  r.cloud_rel = ce.mean;
+  r.cloud_px = ce.pixels;
   if (last.stats.nonfinite_pixels) std::fprintf(stderr, "cloudbench: %s: non-finite pixels\n", c.label.c_str());
   return r;
 }
 
+// A CSV number; an empty field for an undefined value (NaN), which CSV readers take as missing.
+std::string csv_num(double v) {
+  if (!std::isfinite(v)) return "";
+  std::ostringstream s;
+  s.precision(9);
+  s << v;
+  return s.str();
+}
+
+// One row per scene x configuration. The columns after oiio_rmse (issue 14) are appended so
+// that readers of the earlier columns are unaffected.
 void write_csv(const fs::path& file, const std::vector<Row>& rows) {
   std::ofstream f(file);
   f << "scene,config,group,primary_steps,light_steps,ms_octaves,step_growth_ref_m,median_ms,density_evals_per_px,"
-       "texture_bytes,rmse,relative_rmse,psnr_db,max_abs_error,oiio_rmse\n";
+       "texture_bytes,rmse,relative_rmse,psnr_db,max_abs_error,oiio_rmse,opacity_rmse,rmse_over_naive,cloud_pixels,"
+       "cloud_relative_error\n";
   for (const Row& r : rows)
     f << '"' << r.scene << "\",\"" << r.label << "\"," << r.group << ',' << r.q.primary_steps << ',' << r.q.light_steps << ','
       << r.q.ms_octaves << ',' << r.q.step_growth_ref_m << ',' << r.median_ms << ',' << r.evals_px << ','
       << static_cast<long long>(r.texture_bytes) << ',' << r.rmse << ',' << r.rel_rmse << ',' << r.psnr << ','
-      << r.max_err << ',' << r.oiio_rmse << '\n';
+      << r.max_err << ',' << r.oiio_rmse << ',' << r.opacity_rmse << ',' << csv_num(r.rmse_over_naive) << ','
+      << r.cloud_px << ',' << csv_num(r.cloud_rel) << '\n';
+}
+
+// One row per scene: its parameters (the view at the error size, the sun, the weather).
+void write_scenes_csv(const fs::path& file, const std::vector<bench::BenchScene>& scenes) {
+  std::ofstream f(file);
+  f << "scene,lat_deg,lon_deg,alt_m,heading_deg,pitch_deg,roll_deg,fov_deg,time_utc,sun_elevation_deg,sun_azimuth_deg,"
+       "inside_layer,weather\n";
+  f.precision(10);
+  for (const bench::BenchScene& s : scenes) {
+    const ViewRequest& v = s.view;
+    f << '"' << s.name << "\"," << v.position.lat_deg << ',' << v.position.lon_deg << ',' << v.position.alt_m << ','
+      << v.attitude.heading_deg << ',' << v.attitude.pitch_deg << ',' << v.attitude.roll_deg << ',' << v.fov_deg << ','
+      << geo::format_utc_iso8601(v.unix_time_s) << ',' << s.sun_elevation_deg << ',' << s.sun_azimuth_deg << ','
+      << (s.inside_layer ? 1 : 0) << ",\"" << s.weather_label << "\"\n";
+  }
 }
 
 std::string num(const char* f, double v) {
   char b[64];
   std::snprintf(b, sizeof b, f, v);
   return b;
+}
+
+// The scene set: what was drawn (seed and count for random scenes) and each scene's parameters.
+std::string scenes_section(const Options& o, const std::vector<bench::BenchScene>& scenes) {
+  std::ostringstream md;
+  md << "## Scenes\n\n";
+  if (o.scenes.random)
+    md << "Random scene set: seed " << o.scenes.seed << ", N = " << o.scenes.count
+       << " (`--scenes random:" << o.scenes.seed << ":" << o.scenes.count
+       << "`; distribution in tests/fixtures/random_scenes.h: anywhere on the globe including the poles and the "
+          "antimeridian, 0-15 km, a share inside a layer, any view direction, sun -10..90 deg and never within "
+       << num("%.0f", accuracy::kSunMargin_deg) << " deg of the frame, a weather preset or random layers).\n\n";
+  else
+    md << "Core scene set (tests/fixtures/accuracy_scenes.h, the eight core scenes).\n\n";
+  md << "| scene | lat | lon | alt m | heading | pitch | roll | fov | time UTC | sun el | sun az | inside a layer | weather |\n"
+        "|---|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|---|---|\n";
+  for (const bench::BenchScene& s : scenes) {
+    const ViewRequest& v = s.view;
+    md << "| " << s.name << " | " << num("%.4f", v.position.lat_deg) << " | " << num("%.4f", v.position.lon_deg) << " | "
+       << num("%.0f", v.position.alt_m) << " | " << num("%.1f", v.attitude.heading_deg) << " | "
+       << num("%.1f", v.attitude.pitch_deg) << " | " << num("%.1f", v.attitude.roll_deg) << " | " << num("%.1f", v.fov_deg)
+       << " | " << geo::format_utc_iso8601(v.unix_time_s) << " | " << num("%.1f", s.sun_elevation_deg) << " | "
+       << num("%.1f", s.sun_azimuth_deg) << " | " << (s.inside_layer ? "yes" : "") << " | " << s.weather_label << " |\n";
+  }
+  md << "\n";
+  return md.str();
+}
+
+// Per configuration, the mean and the 90th percentile over scenes of each per-scene error
+// (bench/scene_statistics.h), and whether the default preset is at or below naive.
+std::string over_scenes_section(const std::vector<Config>& configs,
+                                std::map<std::string, std::vector<const Row*>>& by_config) {
+  auto errors_of = [&](const std::string& key) {
+    std::vector<bench::SceneError> e;
+    for (const Row* r : by_config[key]) e.push_back({r->rmse, r->rmse_over_naive, r->psnr, r->opacity_rmse, r->cloud_rel});
+    return bench::over_scenes(e);
+  };
+  const bench::OverScenes naive = errors_of("naive|" + knob_label(*quality_preset("naive")));
+  std::ostringstream md;
+  md << "\n## Over scenes (per configuration)\n\n"
+        "Per-scene errors aggregated over the scenes: mean and 90th percentile (p90, linear interpolation between "
+        "order statistics) of RMSE / naive RMSE on the same scene, of the RMSE, of the opacity RMSE and of the mean "
+        "relative error over cloud pixels (|gpu - ref| / ref per rgb channel where the reference opacity > 0.01, "
+        "over the scenes that have such pixels: n cloud); PSNR mean and p10 (the value 90 % of the scenes reach). "
+        "\"≤ naive\" = mean and p90 of RMSE / naive RMSE both ≤ 1.\n\n"
+        "| config | group | RMSE/naive mean | RMSE/naive p90 | RMSE mean | RMSE p90 | PSNR mean dB | PSNR p10 dB | "
+        "opacity RMSE mean | opacity RMSE p90 | cloud rel. err mean | cloud rel. err p90 | n cloud | ≤ naive |\n"
+        "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n";
+  for (const Config& c : configs) {
+    const bench::OverScenes a = errors_of(c.group + "|" + c.label);
+    md << "| " << c.label << " | " << c.group << " | " << num("%.3f", a.rel_mean) << " | " << num("%.3f", a.rel_p90) << " | "
+       << num("%.3e", a.rmse_mean) << " | " << num("%.3e", a.rmse_p90) << " | " << num("%.2f", a.psnr_mean) << " | "
+       << num("%.2f", a.psnr_p10) << " | " << num("%.4f", a.opacity_mean) << " | " << num("%.4f", a.opacity_p90) << " | "
+       << num("%.4f", a.cloud_mean) << " | " << num("%.4f", a.cloud_p90) << " | " << a.cloud_scenes << " | "
+       << (a.rel_mean <= 1.0 && a.rel_p90 <= 1.0 ? "yes" : "no") << " |\n";
+  }
+  const RenderQuality dq = *quality_preset("default");
+  const bench::OverScenes d = errors_of("preset:default|" + knob_label(dq));
+  auto verdict = [](double a, double b) { return std::string(a <= b ? "yes" : "NO") + " (" + num("%.4g", a) + " vs " + num("%.4g", b) + ")"; };
+  md << "\nDefault preset ≤ naive march over " << d.scenes << " scenes:\n\n"
+     << "- RMSE / naive RMSE: mean " << verdict(d.rel_mean, 1.0) << ", p90 " << verdict(d.rel_p90, 1.0) << "\n"
+     << "- RMSE: mean " << verdict(d.rmse_mean, naive.rmse_mean) << ", p90 " << verdict(d.rmse_p90, naive.rmse_p90) << "\n"
+     << "- opacity RMSE: mean " << verdict(d.opacity_mean, naive.opacity_mean) << ", p90 "
+     << verdict(d.opacity_p90, naive.opacity_p90) << "\n"
+     << "- cloud relative error: mean " << verdict(d.cloud_mean, naive.cloud_mean) << ", p90 "
+     << verdict(d.cloud_p90, naive.cloud_p90) << "\n"
+     << "- PSNR (higher is better): mean " << (d.psnr_mean >= naive.psnr_mean ? "yes" : "NO") << " ("
+     << num("%.2f", d.psnr_mean) << " vs " << num("%.2f", naive.psnr_mean) << " dB), p10 "
+     << (d.psnr_p10 >= naive.psnr_p10 ? "yes" : "NO") << " (" << num("%.2f", d.psnr_p10) << " vs "
+     << num("%.2f", naive.psnr_p10) << " dB)\n";
+  return md.str();
 }
 
 }  // namespace
@@ -476,28 +617,38 @@ int main(int argc, char** argv) {
   const std::vector<Config> configs = sweep(o.quick);
   std::vector<Row> rows;
   std::map<std::string, Reference> refs;
+  const std::vector<bench::BenchScene> scenes = bench::make_scene_set(o.scenes, o.width, o.height);
   std::vector<std::string> scene_names;
   double ref_seconds = 0;
-  for (const accuracy::AccuracyScene& s : accuracy::accuracy_scenes()) {
-    if (!s.core) continue;
+  for (const bench::BenchScene& s : scenes) {
     scene_names.push_back(s.name);
+    const auto t_scene = std::chrono::steady_clock::now();
     Reference ref = reference_for(s, o);
-    std::printf("%-32s reference %s %.1f s, %.0f evals/px\n", s.name, ref.cached ? "(cached)" : "rendered", ref.seconds,
-                ref.evals_px);
+    std::printf("%-32s reference %s %.1f s, %.0f evals/px\n", s.name.c_str(), ref.cached ? "(cached)" : "rendered",
+                ref.seconds, ref.evals_px);
     std::fflush(stdout);
     if (!ref.cached) ref_seconds += ref.seconds;
-    renderer.set_weather(*weather::preset(s.preset));
-    const ViewRequest v = accuracy::accuracy_view(s, o.width, o.height);
-    renderer.render(v);  // shader JIT and weather upload outside the timed frames
+    renderer.set_weather(s.weather);
+    renderer.render(s.view);  // shader JIT and weather upload outside the timed frames
+    const size_t first = rows.size();
     for (const Config& c : configs) {
-      Row r = measure(renderer, v, c, ref.img, o);
+      Row r = measure(renderer, s.view, c, ref.img, o);
       r.scene = s.name;
       rows.push_back(r);
     }
+    // each row's RMSE relative to the naive march's on this scene
+    double naive_rmse = NAN;
+    for (size_t i = first; i < rows.size(); ++i)
+      if (rows[i].group == "naive") naive_rmse = rows[i].rmse;
+    for (size_t i = first; i < rows.size(); ++i) rows[i].rmse_over_naive = naive_rmse > 0 ? rows[i].rmse / naive_rmse : NAN;
+    std::printf("%-32s %zu configurations in %.1f s\n", s.name.c_str(), configs.size(),
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - t_scene).count());
+    std::fflush(stdout);
     refs[s.name] = std::move(ref);
   }
   const double total_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
   write_csv(o.out / "report.csv", rows);
+  write_scenes_csv(o.out / "scenes.csv", scenes);
 
   // report.md
   std::ostringstream md;
@@ -516,7 +667,9 @@ int main(int argc, char** argv) {
   for (const Row& r : rows)
     if (r.rmse > 0) worst_oiio = std::max(worst_oiio, std::abs(r.oiio_rmse - r.rmse) / r.rmse);
   md << "OpenImageIO ImageBufAlgo::compare RMSE on rgb agrees with image_metrics RMSE to a relative "
-     << num("%.1e", worst_oiio) << " (largest over all rows).\n\n## References\n\n| scene | reference s | evals/px |\n|---|---:|---:|\n";
+     << num("%.1e", worst_oiio) << " (largest over all rows).\n\n";
+  md << scenes_section(o, scenes);
+  md << "## References\n\n| scene | reference s | evals/px |\n|---|---:|---:|\n";
   for (const auto& n : scene_names)
     md << "| " << n << " | " << num("%.1f", refs[n].seconds) << " | " << num("%.0f", refs[n].evals_px) << " |\n";
 
@@ -541,6 +694,8 @@ int main(int argc, char** argv) {
        << num("%.1f", ev / n) << " | " << num("%.2f", ps / n) << " | " << num("%.2f", pmin) << " | " << num("%.3e", rm / n)
        << " | " << num("%.1f", mib) << " |\n";
   }
+
+  md << over_scenes_section(configs, by_config);
 
   // Skips (issue 5): each against the centre configuration, per scene then summed.
   struct Totals {

@@ -57,8 +57,10 @@
 #include "bench/bench_scenes.h"
 #include "bench/bench_util.h"
 #include "bench/cost_command.h"
+#include "bench/image_cache.h"
 #include "bench/scene_statistics.h"
 #include "bench/sequence_command.h"
+#include "bench/truth_command.h"
 #include "bench/stability_command.h"
 #include "renderer/atmosphere_luts.h"
 #include "renderer/cloud_renderer.h"
@@ -210,70 +212,15 @@ std::vector<Config> sweep(bool quick) {
   return out;
 }
 
-std::string slug(const std::string& s) {
-  std::string o;
-  for (char ch : s) o += std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
-  return o;
-}
+using bench::slug;
 
-// ---- reference cache -------------------------------------------------------------------
+// ---- reference cache (bench/image_cache.h) ------------------------------------------------
 
-struct Reference {
-  FrameImage img;
-  double seconds = 0;  // time of the reference render (from the cache if cached)
-  double evals_px = 0;
-  std::string key;  // bench::reference_key of the scene it was rendered for
-  bool cached = false;
-};
+using Reference = bench::CachedImage;
 
-bool read_exr(const fs::path& p, Reference& r) {
-  OIIO::ImageBuf buf(p.string());
-  if (!buf.read(0, 0, true, OIIO::TypeDesc::FLOAT) || buf.nchannels() != 4) return false;
-  const OIIO::ImageSpec& s = buf.spec();
-  r.img.width = s.width;
-  r.img.height = s.height;
-  r.img.rgba.resize(static_cast<size_t>(s.width) * s.height * 4);
-  buf.get_pixels(OIIO::ROI(0, s.width, 0, s.height, 0, 1, 0, 4), OIIO::TypeDesc::FLOAT, r.img.rgba.data());
-  r.seconds = s.get_float_attribute("cloudbench:reference_s", 0.0f);
-  r.evals_px = s.get_float_attribute("cloudbench:evals_per_px", 0.0f);
-  r.key = s.get_string_attribute("cloudbench:scene_key");
-  r.cached = true;
-  return true;
-}
-
-void write_exr(const fs::path& p, const Reference& r) {
-  OIIO::ImageSpec spec(r.img.width, r.img.height, 4, OIIO::TypeDesc::FLOAT);  // full float: it is the truth
-  spec.attribute("cloudbench:reference_s", static_cast<float>(r.seconds));
-  spec.attribute("cloudbench:evals_per_px", static_cast<float>(r.evals_px));
-  spec.attribute("cloudbench:scene_key", r.key);
-  OIIO::ImageBuf buf(spec, const_cast<float*>(r.img.rgba.data()));
-  if (!buf.write(p.string())) std::fprintf(stderr, "cloudbench: cannot write %s\n", p.string().c_str());
-}
-
-// The scene's reference at the error size: from OUT/ref/<scene>_<W>x<H>[_ss<N>]_<key hash>.exr
-// if that file holds the same key (bench_scenes.h reference_key: the view, the size, the
-// weather, the rays per pixel), else rendered (on all cores) and written there.
+// The scene's reference at the error size, cached under OUT/ref/ (bench/image_cache.h).
 Reference reference_for(const bench::BenchScene& s, const Options& o) {
-  const fs::path dir = o.out / "ref";
-  fs::create_directories(dir);
-  const std::string key = bench::reference_key(s, o.ref_samples);
-  const std::string samples = o.ref_samples > 1 ? "_ss" + std::to_string(o.ref_samples) : "";
-  const fs::path file = dir / (slug(s.name) + "_" + std::to_string(o.width) + "x" + std::to_string(o.height) + samples +
-                               "_" + bench::key_hash(key) + ".exr");
-  Reference r;
-  if (fs::exists(file) && read_exr(file, r) && r.img.width == o.width && r.img.height == o.height && r.key == key)
-    return r;
-  r = Reference{};
-  r.key = key;
-  const auto t0 = std::chrono::steady_clock::now();
-  reference::ReferenceSettings settings;
-  settings.pixel_samples = o.ref_samples;
-  r.img = reference::render_reference(s.view, s.weather, settings);
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  r.evals_px = r.img.stats.density_evals_per_pixel;
-  r.cached = false;
-  write_exr(file, r);
-  return r;
+  return bench::reference_image(s, o.out / "ref", o.width, o.height, o.ref_samples);
 }
 
 // RMSE over the rgb channels computed by OpenImageIO, for the cross-check.
@@ -602,6 +549,12 @@ int main(int argc, char** argv) {
     std::vector<char*> rest = {argv[0]};
     for (int i = 2; i < argc; ++i) rest.push_back(argv[i]);
     return cloudsvc::cost_command::run(static_cast<int>(rest.size()), rest.data());
+  }
+  // `cloudbench --truth ...`: presets and the reference against the path-traced truth (bench/truth_command.h).
+  if (argc > 1 && std::string(argv[1]) == "--truth") {
+    std::vector<char*> rest = {argv[0]};
+    for (int i = 2; i < argc; ++i) rest.push_back(argv[i]);
+    return cloudsvc::truth_command::run(static_cast<int>(rest.size()), rest.data());
   }
   // `cloudbench --sequence ...`: temporal reuse on a flying camera (bench/sequence_command.h).
   if (argc > 1 && std::string(argv[1]) == "--sequence") {

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
+#include <algorithm>
 #include <vector>
 
 #include "common/parallel_for.h"
@@ -39,6 +40,7 @@ TruthImage render_truth(const ViewRequest& view, const weather::Weather& weather
   img.height = view.height;
   img.rgba.assign(static_cast<std::size_t>(pixels) * 4, 0.0f);
   img.std_error.assign(static_cast<std::size_t>(pixels) * 3, 0.0f);
+  out.incomplete.assign(static_cast<std::size_t>(pixels), 0);
   std::vector<TracerCounters> pixel_counters(static_cast<std::size_t>(pixels));
   std::vector<char> pixel_bad(static_cast<std::size_t>(pixels), 0);
 
@@ -50,16 +52,23 @@ TruthImage render_truth(const ViewRequest& view, const weather::Weather& weather
     glm::dvec3 sum(0.0), sum2(0.0);
     double transmittance = 0.0;
     bool bad = false;
+    int done = 0;
     for (int s = 0; s < settings.spp; ++s) {
+      const std::uint64_t lost_before = counters.lost_paths;
       const double px = x + rng.uniform(), py = y + rng.uniform();
       const glm::dvec3 dir = scene.camera.ray_at(px, py);
       const glm::dvec3 L = tracer.radiance(camera, dir);
+      if (counters.lost_paths != lost_before) {
+        out.incomplete[static_cast<std::size_t>(i)] = 1;
+        break;
+      }
       for (int c = 0; c < 3; ++c) bad |= !std::isfinite(L[c]) || L[c] < 0.0;
       sum += L;
       sum2 += L * L;
       transmittance += tracer.cloud_transmittance(camera, dir);
+      ++done;
     }
-    const double n = settings.spp;
+    const double n = std::max(done, 2);
     const glm::dvec3 mean = sum / n;
     const glm::dvec3 var = glm::max(glm::dvec3(0.0), (sum2 - n * mean * mean) / (n - 1.0));
     const glm::dvec3 se = glm::sqrt(var / n);
@@ -79,6 +88,7 @@ TruthImage render_truth(const ViewRequest& view, const weather::Weather& weather
   for (int i = 0; i < pixels; ++i) {
     out.counters.add(pixel_counters[static_cast<std::size_t>(i)]);
     img.stats.nonfinite_pixels += pixel_bad[static_cast<std::size_t>(i)];
+    out.incomplete_pixels += out.incomplete[static_cast<std::size_t>(i)];
     if (img.rgba[static_cast<std::size_t>(i) * 4 + 3] > 0.01f) ++img.stats.cloud_pixels;
   }
   evals = out.counters.density_evals;

@@ -37,6 +37,13 @@ struct TruthImage {
                              // density_evals_per_pixel (all paths of a pixel), nonfinite_pixels
   TracerCounters counters;   // over all paths
   int spp = 0;
+  // Per pixel: 1 if one of its paths exceeded tracer.max_collisions. Such a pixel stops
+  // there; its value is the mean of the paths completed before (biased low: the long
+  // paths are missing) and must not be taken as the truth. Deep inside optically thick
+  // clouds paths scatter 1e4-1e6 times (diffusion: the count grows with the square of the
+  // optical depth), which a cap per path turns into a bounded cost per pixel.
+  std::vector<std::uint8_t> incomplete;
+  int incomplete_pixels = 0;
 };
 
 TruthImage render_truth(const ViewRequest& view, const weather::Weather& weather, const TruthSettings& settings = {},

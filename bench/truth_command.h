@@ -1,0 +1,279 @@
+// `cloudbench --truth`: the presets, the naive march and the CPU model reference against the
+// path-traced ground truth (docs/TRUTH.md), side by side with their error against the model
+// reference, on a scene set (core or random:SEED:N, bench_scenes.h).
+//
+// Per scene: the truth (spp paths per pixel, with its standard error) and the reference
+// (ref-samples^2 rays per pixel: the pixel footprint), both cached under OUT/truth and
+// OUT/ref (bench/image_cache.h); every quality preset rendered as cloudbench does (the
+// view held still for 17 frames, so temporal presets have converged; the error of the
+// last frame) with its density evaluations per pixel per frame over those frames (the
+// march's work, independent of the machine). Errors on linear radiance:
+//   - against the truth, corrected for the truth's own noise: MSE_true = MSE - mean(se^2)
+//     (the truth's error is independent of the test image's, so E[MSE] adds its variance);
+//     RMSE = sqrt(max(0, MSE_true)); PSNR with the truth's largest rgb as the peak; the mean
+//     relative error over the truth's cloud pixels (opacity > 0.01), |x - t| / t per
+//     channel, with the truth's own mean relative standard error there as its noise floor;
+//   - against the reference: the same without the correction (bench/scene_statistics.h).
+// Aggregated over scenes: mean and 90th percentile (PSNR: 10th) of each per-scene error.
+//
+// Deep inside optically thick clouds a path scatters 1e4-1e6 times (the count grows with the
+// square of the optical depth); a pixel one of whose paths exceeds --max-collisions
+// tentative collisions stops there and is left out of every metric (its share is reported).
+//
+//   build/bin/cloudbench --truth [--scenes core|random:SEED:N (random:2026:32)] [--size WxH (24x14)]
+//                        [--spp N (32)] [--ref-samples N (3)] [--max-collisions N (50000)]
+//                        [--out DIR (bench-out-truth)]
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "bench/bench_scenes.h"
+#include "bench/bench_util.h"
+#include "bench/image_cache.h"
+#include "bench/scene_statistics.h"
+#include "renderer/cloud_renderer.h"
+#include "renderer/gl/egl_context.h"
+#include "renderer/quality_presets.h"
+#include "renderer/reference/image_metrics.h"
+
+namespace cloudsvc::truth_command {
+
+// Errors of one image against the truth (noise-corrected) and the reference.
+struct Errors {
+  double truth_rmse = 0, truth_psnr = 0, truth_cloud_rel = std::numeric_limits<double>::quiet_NaN();
+  double ref_rmse = 0, ref_psnr = 0, ref_cloud_rel = std::numeric_limits<double>::quiet_NaN();
+};
+
+struct TruthNoise {
+  double mean_se2 = 0;  // mean over pixels and channels of se^2
+  double cloud_rel_se = std::numeric_limits<double>::quiet_NaN();  // mean se / t over the truth's cloud pixels
+  double peak = 0;
+};
+
+// Pixels the comparison uses: those whose truth is complete (TruthImage::incomplete).
+using Mask = std::vector<std::uint8_t>;
+
+inline TruthNoise truth_noise(const FrameImage& t, const Mask& valid) {
+  TruthNoise n;
+  double rel = 0;
+  long rel_n = 0, used = 0;
+  const size_t pixels = static_cast<size_t>(t.width) * t.height;
+  for (size_t i = 0; i < pixels; ++i) {
+    if (!valid[i]) continue;
+    ++used;
+    for (int c = 0; c < 3; ++c) {
+      const double se = t.std_error[i * 3 + c], v = t.rgba[i * 4 + c];
+      n.mean_se2 += se * se;
+      n.peak = std::max(n.peak, v);
+      if (t.rgba[i * 4 + 3] > bench::kCloudOpacity && v > 0) {
+        rel += se / v;
+        ++rel_n;
+      }
+    }
+  }
+  n.mean_se2 /= static_cast<double>(std::max(1L, used * 3));
+  if (rel_n) n.cloud_rel_se = rel / static_cast<double>(rel_n);
+  return n;
+}
+
+// RMSE, PSNR (peak: the largest rgb of `ref`) and the mean relative error over ref's cloud
+// pixels of img against ref, over the valid pixels; `noise_mse` is subtracted from the MSE.
+inline void compare(const FrameImage& img, const FrameImage& ref, const Mask& valid, double noise_mse, double& rmse,
+                    double& psnr, double& cloud_rel) {
+  double mse = 0, peak = 0, rel = 0;
+  long n = 0, rel_n = 0;
+  const size_t pixels = static_cast<size_t>(img.width) * img.height;
+  for (size_t i = 0; i < pixels; ++i) {
+    if (!valid[i]) continue;
+    ++n;
+    const bool cloud = ref.rgba[i * 4 + 3] > bench::kCloudOpacity;
+    for (int c = 0; c < 3; ++c) {
+      const double r = ref.rgba[i * 4 + c], d = static_cast<double>(img.rgba[i * 4 + c]) - r;
+      mse += d * d;
+      peak = std::max(peak, r);
+      if (cloud && r > 0) {
+        rel += std::abs(d) / r;
+        ++rel_n;
+      }
+    }
+  }
+  mse = mse / static_cast<double>(std::max(1L, n * 3)) - noise_mse;
+  rmse = std::sqrt(std::max(0.0, mse));
+  psnr = rmse > 0 ? 20.0 * std::log10(peak / rmse) : std::numeric_limits<double>::infinity();
+  cloud_rel = rel_n ? rel / static_cast<double>(rel_n) : std::numeric_limits<double>::quiet_NaN();
+}
+
+inline Errors errors_of(const FrameImage& img, const FrameImage& truth, const TruthNoise& noise, const FrameImage& ref,
+                        const Mask& valid) {
+  Errors e;
+  compare(img, truth, valid, noise.mean_se2, e.truth_rmse, e.truth_psnr, e.truth_cloud_rel);
+  compare(img, ref, valid, 0.0, e.ref_rmse, e.ref_psnr, e.ref_cloud_rel);
+  return e;
+}
+
+struct Row {
+  std::string scene, config;
+  double evals_px = 0;  // per frame, mean over the 17 frames (reference: its own count)
+  Errors e;
+};
+
+inline std::string num(const char* f, double v) {
+  if (!std::isfinite(v)) return "-";
+  char b[64];
+  std::snprintf(b, sizeof b, f, v);
+  return b;
+}
+
+inline int run(int argc, char** argv) {
+  CLI::App app{"Presets and the model reference against the path-traced ground truth (cloudbench --truth)"};
+  std::string scenes_text = "random:2026:32", size = "24x14", out = "bench-out-truth";
+  int spp = 32, ref_samples = 3;
+  std::uint64_t max_collisions = 50000;
+  app.add_option("--scenes", scenes_text, "core or random:SEED:N");
+  app.add_option("--size", size, "image size WxH of every render");
+  app.add_option("--spp", spp, "paths per pixel of the truth")->check(CLI::Range(2, 1 << 20));
+  app.add_option("--ref-samples", ref_samples, "reference rays per pixel along each axis")->check(CLI::Range(1, 16));
+  app.add_option("--out", out, "output directory (report.md, report.csv, cached images)");
+  app.add_option("--max-collisions", max_collisions,
+                 "tentative collisions per truth path beyond which its pixel is left out (incomplete)")
+      ->check(CLI::Range(static_cast<std::uint64_t>(1000), static_cast<std::uint64_t>(1) << 40));
+  CLI11_PARSE(app, argc, argv);
+  int w = 0, h = 0;
+  if (!bench::parse_frame_size(size, w, h)) {
+    std::fprintf(stderr, "cloudbench --truth: --size expects WxH\n");
+    return 2;
+  }
+  const auto set = bench::parse_scene_set(scenes_text);
+  if (!set) {
+    std::fprintf(stderr, "cloudbench --truth: --scenes expects core or random:SEED:N (N in 1..%d)\n",
+                 bench::kMaxRandomScenes);
+    return 2;
+  }
+  const std::filesystem::path dir = out;
+  std::filesystem::create_directories(dir);
+  const auto t_start = std::chrono::steady_clock::now();
+  gl::EglContext context;
+  CloudRenderer renderer;
+  const std::vector<bench::BenchScene> scenes = bench::make_scene_set(*set, w, h);
+  std::vector<std::string> configs = quality_preset_names();  // naive first
+  std::vector<Row> rows;
+  std::vector<TruthNoise> noises;
+  std::vector<double> incomplete_share;
+  double truth_s = 0, ref_s = 0;
+  for (const bench::BenchScene& s : scenes) {
+    const bench::CachedImage truth = bench::truth_image(s, dir / "truth", w, h, spp, max_collisions);
+    const bench::CachedImage ref = bench::reference_image(s, dir / "ref", w, h, ref_samples);
+    truth_s += truth.seconds;
+    ref_s += ref.seconds;
+    Mask valid(static_cast<size_t>(w) * h, 1);
+    int incomplete = 0;
+    for (size_t i = 0; i < valid.size() && i < truth.incomplete.size(); ++i)
+      if (truth.incomplete[i]) {
+        valid[i] = 0;
+        ++incomplete;
+      }
+    incomplete_share.push_back(static_cast<double>(incomplete) / static_cast<double>(valid.size()));
+    const TruthNoise noise = truth_noise(truth.img, valid);
+    noises.push_back(noise);
+    std::printf("%-12s truth %s %.1f s (%.0f evals/px, %d incomplete px), reference %s %.1f s; %s\n", s.name.c_str(),
+                truth.cached ? "cached" : "rendered", truth.seconds, truth.evals_px, incomplete,
+                ref.cached ? "cached" : "rendered", ref.seconds, s.description.c_str());
+    std::fflush(stdout);
+    rows.push_back({s.name, "reference", ref.evals_px, errors_of(ref.img, truth.img, noise, ref.img, valid)});
+    renderer.set_weather(s.weather);
+    for (const std::string& name : configs) {
+      const RenderQuality q = *quality_preset(name);
+      ViewRequest v = s.view;
+      v.reset_history = true;
+      FrameImage last;
+      double evals = 0;
+      constexpr int kStillFrames = 17;  // as cloudbench: temporal presets converge over a 16-frame cycle
+      for (int f = 0; f < kStillFrames; ++f) {
+        v.frame_index = static_cast<std::uint32_t>(f);
+        last = renderer.render(v, q);
+        evals += last.stats.density_evals_per_pixel;
+        v.reset_history = false;
+      }
+      rows.push_back({s.name, name, evals / kStillFrames, errors_of(last, truth.img, noise, ref.img, valid)});
+    }
+  }
+  configs.push_back("reference");
+  const double total_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
+
+  std::ofstream csv(dir / "report.csv");
+  csv << "scene,config,density_evals_per_px,truth_rmse,truth_psnr_db,truth_cloud_relative_error,ref_rmse,ref_psnr_db,"
+         "ref_cloud_relative_error\n";
+  for (const Row& r : rows)
+    csv << '"' << r.scene << "\"," << r.config << ',' << r.evals_px << ',' << r.e.truth_rmse << ',' << r.e.truth_psnr << ','
+        << (std::isfinite(r.e.truth_cloud_rel) ? std::to_string(r.e.truth_cloud_rel) : "") << ',' << r.e.ref_rmse << ','
+        << r.e.ref_psnr << ',' << (std::isfinite(r.e.ref_cloud_rel) ? std::to_string(r.e.ref_cloud_rel) : "") << '\n';
+
+  std::map<std::string, std::vector<const Row*>> by_config;
+  for (const Row& r : rows) by_config[r.config].push_back(&r);
+  std::vector<double> floor_rel;
+  for (const TruthNoise& n : noises) floor_rel.push_back(n.cloud_rel_se);
+  std::ostringstream md;
+  md << "# cloudbench --truth report\n\nCommand: `cloudbench --truth --scenes " << scenes_text << " --size " << size
+     << " --spp " << spp << " --ref-samples " << ref_samples << " --max-collisions " << max_collisions << "`  \n"
+     << scenes.size() << " scenes at " << w << "x" << h << "; truth " << spp << " paths per pixel ("
+     << num("%.0f", truth_s) << " s of renders, 0 = cached), reference " << ref_samples << "x" << ref_samples
+     << " rays per pixel (" << num("%.0f", ref_s) << " s), total " << num("%.0f", total_s) << " s.\n\n"
+     << "The truth's own noise on cloud pixels (mean s.e. / radiance): mean " << num("%.4f", bench::finite_mean(floor_rel))
+     << ", p90 " << num("%.4f", bench::percentile(floor_rel, 90)) << " over the scenes with cloud: relative errors "
+     << "against the truth below this are not resolved. Pixels whose truth is incomplete (a path exceeded "
+     << max_collisions << " tentative collisions: deep inside optically thick cloud) are left out of every metric: "
+     << num("%.1f", 100.0 * bench::finite_mean(incomplete_share)) << " % of the pixels on average, "
+     << num("%.1f", 100.0 * bench::percentile(incomplete_share, 90)) << " % at the 90th percentile of the scenes.\n\n"
+     << "| config | evals/px | vs truth: cloud rel. err mean | p90 | PSNR mean dB | p10 | vs reference: cloud rel. err mean "
+        "| p90 | PSNR mean dB | p10 |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (const std::string& c : configs) {
+    std::vector<double> ev, tr, tp, rr, rp;
+    for (const Row* r : by_config[c]) {
+      ev.push_back(r->evals_px);
+      tr.push_back(r->e.truth_cloud_rel);
+      tp.push_back(r->e.truth_psnr);
+      if (c != "reference") {
+        rr.push_back(r->e.ref_cloud_rel);
+        rp.push_back(r->e.ref_psnr);
+      }
+    }
+    md << "| " << c << " | " << num("%.1f", bench::finite_mean(ev)) << " | " << num("%.3f", bench::finite_mean(tr)) << " | "
+       << num("%.3f", bench::percentile(tr, 90)) << " | " << num("%.2f", bench::finite_mean(tp)) << " | "
+       << num("%.2f", bench::percentile(tp, 10)) << " | " << num("%.3f", bench::finite_mean(rr)) << " | "
+       << num("%.3f", bench::percentile(rr, 90)) << " | " << num("%.2f", bench::finite_mean(rp)) << " | "
+       << num("%.2f", bench::percentile(rp, 10)) << " |\n";
+  }
+  md << "\n## Per scene\n\n| scene | incomplete px | truth cloud s.e. | naive vs truth | default vs truth | reference vs truth | "
+        "default vs reference | naive vs reference |\n|---|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (size_t i = 0; i < scenes.size(); ++i) {
+    auto find = [&](const std::string& c) -> const Row* {
+      for (const Row* r : by_config[c])
+        if (r->scene == scenes[i].name) return r;
+      return nullptr;
+    };
+    const Row *n = find("naive"), *d = find("default"), *r = find("reference");
+    md << "| " << scenes[i].name << " | " << num("%.1f %%", 100.0 * incomplete_share[i]) << " | "
+       << num("%.3f", noises[i].cloud_rel_se) << " | "
+       << num("%.3f", n->e.truth_cloud_rel) << " | " << num("%.3f", d->e.truth_cloud_rel) << " | "
+       << num("%.3f", r->e.truth_cloud_rel) << " | " << num("%.3f", d->e.ref_cloud_rel) << " | "
+       << num("%.3f", n->e.ref_cloud_rel) << " |\n";
+  }
+  md << "\n(cloud relative error: mean |x - t| / t over the cloud pixels and rgb channels.)\n\n## Scenes\n\n";
+  for (const bench::BenchScene& s : scenes) md << "- " << s.description << "\n";
+  std::ofstream(dir / "report.md") << md.str();
+  std::printf("cloudbench --truth: %zu scenes in %.0f s -> %s\n", scenes.size(), total_s, dir.string().c_str());
+  return 0;
+}
+
+}  // namespace cloudsvc::truth_command

@@ -59,9 +59,8 @@ struct BenchScene {
   ViewRequest view;          // at the error size, frame_index 0
   weather::Weather weather;
   std::string weather_label;  // the preset name, or the random layers in one line
-  std::string description;    // the scene's parameters in one line (report)
   double sun_elevation_deg = 0.0, sun_azimuth_deg = 0.0;  // geometric (geo::solar_position)
-  bool inside_layer = false;  // camera inside a layer's altitude band (random scenes)
+  bool inside_layer = false;  // camera inside a layer's altitude band [base, top]
 };
 
 inline std::vector<BenchScene> make_scene_set(const SceneSetSpec& spec, int w, int h) {
@@ -78,8 +77,8 @@ inline std::vector<BenchScene> make_scene_set(const SceneSetSpec& spec, int w, i
           geo::solar_position(b.view.unix_time_s, b.view.position.lat_deg, b.view.position.lon_deg);
       b.sun_elevation_deg = sun.elevation_deg;
       b.sun_azimuth_deg = sun.azimuth_deg;
-      b.description = std::string(s.name) + ": Zurich 47.45 N 8.56 E, alt " + std::to_string(static_cast<int>(s.alt_m)) +
-                      " m, " + s.time_utc + ", " + s.preset;
+      for (const weather::CloudLayer& l : b.weather.layers)
+        b.inside_layer = b.inside_layer || (s.alt_m >= l.base_m && s.alt_m <= l.top_m);
       out.push_back(b);
     }
     return out;
@@ -90,7 +89,6 @@ inline std::vector<BenchScene> make_scene_set(const SceneSetSpec& spec, int w, i
     b.view = accuracy::random_scene_view(s, w, h);
     b.weather = s.weather;
     b.weather_label = accuracy::describe_weather(s);
-    b.description = accuracy::describe(s);
     b.sun_elevation_deg = s.sun_elevation_deg;
     b.sun_azimuth_deg = s.sun_azimuth_deg;
     b.inside_layer = s.inside_layer >= 0;

@@ -100,6 +100,7 @@ struct Row {
   double median_ms = 0, evals_px = 0, rmse = 0, rel_rmse = 0, psnr = 0, max_err = 0, oiio_rmse = 0;
   double texture_bytes = 0;
   double opacity_rmse = 0;      // RMSE of the opacity channel
+  double opacity_bias = 0;      // mean gpu - ref opacity over the image (> 0: dilated or denser clouds)
   double cloud_rel = 0;         // mean |gpu - ref| / ref over the reference's cloud pixels (NaN: none)
   std::int64_t cloud_px = 0;    // reference pixels with opacity > 0.01
   double rmse_over_naive = 0;   // rmse / the naive row's rmse on the same scene
@@ -412,6 +413,7 @@ Row measure(CloudRenderer& renderer, const ViewRequest& base, const Config& c, c
   r.oiio_rmse = oiio_rmse(last, ref);
   r.texture_bytes = bytes;
   r.opacity_rmse = d.opacity_rmse;
+  r.opacity_bias = bench::opacity_bias(last, ref);
   const bench::CloudRelativeError ce = bench::cloud_relative_error(last, ref);
   r.cloud_rel = ce.mean;
   r.cloud_px = ce.pixels;
@@ -434,13 +436,13 @@ void write_csv(const fs::path& file, const std::vector<Row>& rows) {
   std::ofstream f(file);
   f << "scene,config,group,primary_steps,light_steps,ms_octaves,step_growth_ref_m,median_ms,density_evals_per_px,"
        "texture_bytes,rmse,relative_rmse,psnr_db,max_abs_error,oiio_rmse,opacity_rmse,rmse_over_naive,cloud_pixels,"
-       "cloud_relative_error\n";
+       "cloud_relative_error,opacity_bias\n";
   for (const Row& r : rows)
     f << '"' << r.scene << "\",\"" << r.label << "\"," << r.group << ',' << r.q.primary_steps << ',' << r.q.light_steps << ','
       << r.q.ms_octaves << ',' << r.q.step_growth_ref_m << ',' << r.median_ms << ',' << r.evals_px << ','
       << static_cast<long long>(r.texture_bytes) << ',' << r.rmse << ',' << r.rel_rmse << ',' << r.psnr << ','
       << r.max_err << ',' << r.oiio_rmse << ',' << r.opacity_rmse << ',' << csv_num(r.rmse_over_naive) << ','
-      << r.cloud_px << ',' << csv_num(r.cloud_rel) << '\n';
+      << r.cloud_px << ',' << csv_num(r.cloud_rel) << ',' << r.opacity_bias << '\n';
 }
 
 // One row per scene: its parameters (the view at the error size, the sun, the weather).
@@ -496,7 +498,8 @@ std::string over_scenes_section(const std::vector<Config>& configs,
                                 std::map<std::string, std::vector<const Row*>>& by_config) {
   auto errors_of = [&](const std::string& key) {
     std::vector<bench::SceneError> e;
-    for (const Row* r : by_config[key]) e.push_back({r->rmse, r->rmse_over_naive, r->psnr, r->opacity_rmse, r->cloud_rel});
+    for (const Row* r : by_config[key])
+      e.push_back({r->rmse, r->rmse_over_naive, r->psnr, r->opacity_rmse, r->opacity_bias, r->cloud_rel});
     return bench::over_scenes(e);
   };
   const bench::OverScenes naive = errors_of("naive|" + knob_label(*quality_preset("naive")));
@@ -505,17 +508,20 @@ std::string over_scenes_section(const std::vector<Config>& configs,
         "Per-scene errors aggregated over the scenes: mean and 90th percentile (p90, linear interpolation between "
         "order statistics) of RMSE / naive RMSE on the same scene, of the RMSE, of the opacity RMSE and of the mean "
         "relative error over cloud pixels (|gpu - ref| / ref per rgb channel where the reference opacity > 0.01, "
-        "over the scenes that have such pixels: n cloud); PSNR mean and p10 (the value 90 % of the scenes reach). "
+        "over the scenes that have such pixels: n cloud); PSNR mean and p10 (the value 90 % of the scenes reach); "
+        "opacity bias = mean over the image of gpu - ref opacity (> 0: larger or denser silhouettes than the "
+        "reference), mean and p90 over scenes. "
         "\"≤ naive\" = mean and p90 of RMSE / naive RMSE both ≤ 1.\n\n"
         "| config | group | RMSE/naive mean | RMSE/naive p90 | RMSE mean | RMSE p90 | PSNR mean dB | PSNR p10 dB | "
-        "opacity RMSE mean | opacity RMSE p90 | cloud rel. err mean | cloud rel. err p90 | n cloud | ≤ naive |\n"
-        "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n";
+        "opacity RMSE mean | opacity RMSE p90 | opacity bias mean | opacity bias p90 | cloud rel. err mean | "
+        "cloud rel. err p90 | n cloud | ≤ naive |\n"
+        "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n";
   for (const Config& c : configs) {
     const bench::OverScenes a = errors_of(c.group + "|" + c.label);
     md << "| " << c.label << " | " << c.group << " | " << num("%.3f", a.rel_mean) << " | " << num("%.3f", a.rel_p90) << " | "
        << num("%.3e", a.rmse_mean) << " | " << num("%.3e", a.rmse_p90) << " | " << num("%.2f", a.psnr_mean) << " | "
        << num("%.2f", a.psnr_p10) << " | " << num("%.4f", a.opacity_mean) << " | " << num("%.4f", a.opacity_p90) << " | "
-       << num("%.4f", a.cloud_mean) << " | " << num("%.4f", a.cloud_p90) << " | " << a.cloud_scenes << " | "
+       << num("%+.4f", a.bias_mean) << " | " << num("%+.4f", a.bias_p90) << " | " << num("%.4f", a.cloud_mean) << " | " << num("%.4f", a.cloud_p90) << " | " << a.cloud_scenes << " | "
        << (a.rel_mean <= 1.0 && a.rel_p90 <= 1.0 ? "yes" : "no") << " |\n";
   }
   const RenderQuality dq = *quality_preset("default");
@@ -526,6 +532,9 @@ std::string over_scenes_section(const std::vector<Config>& configs,
      << "- RMSE: mean " << verdict(d.rmse_mean, naive.rmse_mean) << ", p90 " << verdict(d.rmse_p90, naive.rmse_p90) << "\n"
      << "- opacity RMSE: mean " << verdict(d.opacity_mean, naive.opacity_mean) << ", p90 "
      << verdict(d.opacity_p90, naive.opacity_p90) << "\n"
+     << "- opacity bias (gpu - ref, > 0: larger or denser silhouettes): default mean " << num("%+.4f", d.bias_mean)
+     << ", p90 " << num("%+.4f", d.bias_p90) << "; naive mean " << num("%+.4f", naive.bias_mean) << ", p90 "
+     << num("%+.4f", naive.bias_p90) << "\n"
      << "- cloud relative error: mean " << verdict(d.cloud_mean, naive.cloud_mean) << ", p90 "
      << verdict(d.cloud_p90, naive.cloud_p90) << "\n"
      << "- PSNR (higher is better): mean " << (d.psnr_mean >= naive.psnr_mean ? "yes" : "NO") << " ("

@@ -44,6 +44,16 @@ inline CloudRelativeError cloud_relative_error(const FrameImage& test, const Fra
   return e;
 }
 
+// Mean over all pixels of the opacity difference test - ref: > 0 when the test image's
+// clouds are larger (dilated silhouettes) or more opaque than the reference's, < 0 when
+// smaller or thinner. Same image size required.
+inline double opacity_bias(const FrameImage& test, const FrameImage& ref) {
+  const size_t pixels = static_cast<size_t>(ref.width) * static_cast<size_t>(ref.height);
+  double sum = 0.0;
+  for (size_t i = 0; i < pixels; ++i) sum += static_cast<double>(test.rgba[i * 4 + 3]) - ref.rgba[i * 4 + 3];
+  return pixels ? sum / static_cast<double>(pixels) : 0.0;
+}
+
 // The p-th percentile (p in [0, 100]) of the finite values of v, linearly interpolated between
 // order statistics (rank p/100 (n - 1), numpy's default "linear" method); NaN if none.
 inline double percentile(std::vector<double> v, double p) {
@@ -75,6 +85,7 @@ struct SceneError {
   double rmse_over_naive = 0.0;  // rmse / the naive march's rmse on the same scene (NaN if that is 0)
   double psnr_db = 0.0;          // peak = the reference's largest rgb value
   double opacity_rmse = 0.0;     // RMSE of the opacity channel (silhouettes)
+  double opacity_bias = 0.0;     // opacity_bias(): mean test - ref opacity (> 0: dilated or denser)
   double cloud_rel = 0.0;        // cloud_relative_error().mean (NaN: no cloud pixel)
 };
 
@@ -87,17 +98,19 @@ struct OverScenes {
   double rmse_mean = 0, rmse_p90 = 0;
   double psnr_mean = 0, psnr_p10 = 0;
   double opacity_mean = 0, opacity_p90 = 0;
+  double bias_mean = 0, bias_p90 = 0;        // opacity_bias
   double cloud_mean = 0, cloud_p90 = 0;
   int cloud_scenes = 0;                      // scenes with cloud pixels in the reference
 };
 
 inline OverScenes over_scenes(const std::vector<SceneError>& errors) {
-  std::vector<double> rel, rmse, psnr, opacity, cloud;
+  std::vector<double> rel, rmse, psnr, opacity, bias, cloud;
   for (const SceneError& e : errors) {
     rel.push_back(e.rmse_over_naive);
     rmse.push_back(e.rmse);
     psnr.push_back(e.psnr_db);
     opacity.push_back(e.opacity_rmse);
+    bias.push_back(e.opacity_bias);
     cloud.push_back(e.cloud_rel);
   }
   OverScenes o;
@@ -110,6 +123,8 @@ inline OverScenes over_scenes(const std::vector<SceneError>& errors) {
   o.psnr_p10 = percentile(psnr, 10.0);
   o.opacity_mean = finite_mean(opacity);
   o.opacity_p90 = percentile(opacity, 90.0);
+  o.bias_mean = finite_mean(bias);
+  o.bias_p90 = percentile(bias, 90.0);
   o.cloud_mean = finite_mean(cloud);
   o.cloud_p90 = percentile(cloud, 90.0);
   o.cloud_scenes = finite_count(cloud);

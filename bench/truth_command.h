@@ -128,6 +128,17 @@ struct Row {
   Errors e;
 };
 
+// The scene's parameters in one line.
+inline std::string describe(const bench::BenchScene& s) {
+  const ViewRequest& v = s.view;
+  char b[256];
+  std::snprintf(b, sizeof b, "%s: lat %.4f lon %.4f alt %.0f m%s, hdg %.1f pitch %.1f roll %.1f, fov %.1f, %s, sun el %.1f; ",
+                s.name.c_str(), v.position.lat_deg, v.position.lon_deg, v.position.alt_m,
+                s.inside_layer ? " (inside a layer)" : "", v.attitude.heading_deg, v.attitude.pitch_deg,
+                v.attitude.roll_deg, v.fov_deg, geo::format_utc_iso8601(v.unix_time_s).c_str(), s.sun_elevation_deg);
+  return b + s.weather_label;
+}
+
 inline std::string num(const char* f, double v) {
   if (!std::isfinite(v)) return "-";
   char b[64];
@@ -188,7 +199,7 @@ inline int run(int argc, char** argv) {
     noises.push_back(noise);
     std::printf("%-12s truth %s %.1f s (%.0f evals/px, %d incomplete px), reference %s %.1f s; %s\n", s.name.c_str(),
                 truth.cached ? "cached" : "rendered", truth.seconds, truth.evals_px, incomplete,
-                ref.cached ? "cached" : "rendered", ref.seconds, s.description.c_str());
+                ref.cached ? "cached" : "rendered", ref.seconds, describe(s).c_str());
     std::fflush(stdout);
     rows.push_back({s.name, "reference", ref.evals_px, errors_of(ref.img, truth.img, noise, ref.img, valid)});
     renderer.set_weather(s.weather);
@@ -270,7 +281,7 @@ inline int run(int argc, char** argv) {
        << num("%.3f", n->e.ref_cloud_rel) << " |\n";
   }
   md << "\n(cloud relative error: mean |x - t| / t over the cloud pixels and rgb channels.)\n\n## Scenes\n\n";
-  for (const bench::BenchScene& s : scenes) md << "- " << s.description << "\n";
+  for (const bench::BenchScene& s : scenes) md << "- " << describe(s) << "\n";
   std::ofstream(dir / "report.md") << md.str();
   std::printf("cloudbench --truth: %zu scenes in %.0f s -> %s\n", scenes.size(), total_s, dir.string().c_str());
   return 0;

@@ -359,3 +359,34 @@ TEST(TruthRenderer, ConvergesWithSppAndIsThreadCountIndependent) {
 
 }  // namespace
 }  // namespace cloudsvc::truth
+
+namespace cloudsvc::truth {
+namespace {
+
+// Inside an overcast deck paths scatter thousands of times: with a small collision cap the
+// pixels are reported incomplete (and stop early) rather than biased silently; with the
+// default cap the same pixels complete.
+TEST(TruthRenderer, MarksPixelsIncompleteWhenPathsExceedTheCap) {
+  ViewRequest v;
+  v.position = {47.45, 8.56, 650.0};  // inside overcast-stratus (400-900 m)
+  v.attitude = {0.0, 0.0, 0.0};
+  v.unix_time_s = *geo::parse_utc_iso8601("2026-06-21T12:00:00Z");
+  v.width = 3;
+  v.height = 2;
+  const weather::Weather wx = *weather::preset("overcast-stratus");
+  TruthSettings capped;
+  capped.spp = 4;
+  capped.tracer.max_collisions = 200;
+  const TruthImage a = render_truth(v, wx, capped);
+  EXPECT_EQ(a.incomplete_pixels, 6);
+  EXPECT_GT(a.counters.lost_paths, 0u);
+  for (float x : a.image.rgba) EXPECT_TRUE(std::isfinite(x));
+  TruthSettings normal = capped;
+  normal.tracer.max_collisions = TracerSettings{}.max_collisions;
+  const TruthImage b = render_truth(v, wx, normal);
+  EXPECT_EQ(b.incomplete_pixels, 0);
+  EXPECT_EQ(b.counters.lost_paths, 0u);
+}
+
+}  // namespace
+}  // namespace cloudsvc::truth

@@ -27,6 +27,8 @@
 //
 // Usage: cloudbench [--size WxH (96x54)] [--time-size WxH (160x90)] [--out DIR] [--frames N (5)] [--quick]
 //                   [--ref-samples N (3: N x N sub-pixel rays per reference pixel; 1: the pixel centre)]
+// Modes: --cost (bench/cost_command.h), --sequence (bench/sequence_command.h), --stability
+// (bench/stability_command.h), --views (bench/views_command.h).
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 
@@ -45,8 +47,10 @@
 
 #include "bench/bench_util.h"
 #include "bench/cost_command.h"
+#include "bench/reference_cache.h"
 #include "bench/sequence_command.h"
 #include "bench/stability_command.h"
+#include "bench/views_command.h"
 #include "renderer/atmosphere_luts.h"
 #include "renderer/cloud_renderer.h"
 #include "renderer/gl/egl_context.h"
@@ -199,55 +203,18 @@ std::string slug(const std::string& s) {
   return o;
 }
 
-// ---- reference cache -------------------------------------------------------------------
+// ---- reference cache (bench/reference_cache.h) ------------------------------------------
 
-struct Reference {
-  FrameImage img;
-  double seconds = 0;  // time of the reference render (from the cache if cached)
-  double evals_px = 0;
-  bool cached = false;
-};
-
-bool read_exr(const fs::path& p, Reference& r) {
-  OIIO::ImageBuf buf(p.string());
-  if (!buf.read(0, 0, true, OIIO::TypeDesc::FLOAT) || buf.nchannels() != 4) return false;
-  const OIIO::ImageSpec& s = buf.spec();
-  r.img.width = s.width;
-  r.img.height = s.height;
-  r.img.rgba.resize(static_cast<size_t>(s.width) * s.height * 4);
-  buf.get_pixels(OIIO::ROI(0, s.width, 0, s.height, 0, 1, 0, 4), OIIO::TypeDesc::FLOAT, r.img.rgba.data());
-  r.seconds = s.get_float_attribute("cloudbench:reference_s", 0.0f);
-  r.evals_px = s.get_float_attribute("cloudbench:evals_per_px", 0.0f);
-  r.cached = true;
-  return true;
-}
-
-void write_exr(const fs::path& p, const Reference& r) {
-  OIIO::ImageSpec spec(r.img.width, r.img.height, 4, OIIO::TypeDesc::FLOAT);  // full float: it is the truth
-  spec.attribute("cloudbench:reference_s", static_cast<float>(r.seconds));
-  spec.attribute("cloudbench:evals_per_px", static_cast<float>(r.evals_px));
-  OIIO::ImageBuf buf(spec, const_cast<float*>(r.img.rgba.data()));
-  if (!buf.write(p.string())) std::fprintf(stderr, "cloudbench: cannot write %s\n", p.string().c_str());
-}
+using Reference = bench::CachedReference;
 
 Reference reference_for(const accuracy::AccuracyScene& s, const Options& o) {
-  const fs::path dir = o.out / "ref";
-  fs::create_directories(dir);
   const std::string samples = o.ref_samples > 1 ? "_ss" + std::to_string(o.ref_samples) : "";
-  const fs::path file =
-      dir / (slug(s.name) + "_" + std::to_string(o.width) + "x" + std::to_string(o.height) + samples + ".exr");
-  Reference r;
-  if (fs::exists(file) && read_exr(file, r) && r.img.width == o.width && r.img.height == o.height) return r;
-  const ViewRequest v = accuracy::accuracy_view(s, o.width, o.height);
-  const auto t0 = std::chrono::steady_clock::now();
+  const fs::path file = o.out / "ref" /
+                        (slug(s.name) + "_" + std::to_string(o.width) + "x" + std::to_string(o.height) + samples + ".exr");
   reference::ReferenceSettings settings;
   settings.pixel_samples = o.ref_samples;
-  r.img = reference::render_reference(v, *weather::preset(s.preset), settings);
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  r.evals_px = r.img.stats.density_evals_per_pixel;
-  r.cached = false;
-  write_exr(file, r);
-  return r;
+  return bench::cached_reference(file, accuracy::accuracy_view(s, o.width, o.height), *weather::preset(s.preset),
+                                 settings);
 }
 
 // RMSE over the rgb channels computed by OpenImageIO, for the cross-check.
@@ -467,6 +434,13 @@ int main(int argc, char** argv) {
     std::vector<char*> rest = {argv[0]};
     for (int i = 2; i < argc; ++i) rest.push_back(argv[i]);
     return cloudsvc::sequence_command::run(static_cast<int>(rest.size()), rest.data());
+  }
+  // `cloudbench --views ...`: presets on views beyond the scene set, with their cloud
+  // silhouettes (bench/views_command.h).
+  if (argc > 1 && std::string(argv[1]) == "--views") {
+    std::vector<char*> rest = {argv[0]};
+    for (int i = 2; i < argc; ++i) rest.push_back(argv[i]);
+    return cloudsvc::views_command::run(static_cast<int>(rest.size()), rest.data());
   }
   const Options o = parse(argc, argv);
   fs::create_directories(o.out);

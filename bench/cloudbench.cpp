@@ -38,6 +38,8 @@
 // Usage: cloudbench [--size WxH (96x54)] [--time-size WxH (160x90)] [--out DIR] [--frames N (5)] [--quick]
 //                   [--ref-samples N (3: N x N sub-pixel rays per reference pixel; 1: the pixel centre)]
 //                   [--scenes core|random:SEED:N (core)]
+// Modes: --cost (bench/cost_command.h), --sequence (bench/sequence_command.h), --stability
+// (bench/stability_command.h), --views (bench/views_command.h), --truth (bench/truth_command.h).
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 
@@ -62,6 +64,7 @@
 #include "bench/sequence_command.h"
 #include "bench/truth_command.h"
 #include "bench/stability_command.h"
+#include "bench/views_command.h"
 #include "renderer/atmosphere_luts.h"
 #include "renderer/cloud_renderer.h"
 #include "renderer/gl/egl_context.h"
@@ -570,6 +573,13 @@ int main(int argc, char** argv) {
     std::vector<char*> rest = {argv[0]};
     for (int i = 2; i < argc; ++i) rest.push_back(argv[i]);
     return cloudsvc::sequence_command::run(static_cast<int>(rest.size()), rest.data());
+  }
+  // `cloudbench --views ...`: presets on views beyond the scene set, with their cloud
+  // silhouettes (bench/views_command.h).
+  if (argc > 1 && std::string(argv[1]) == "--views") {
+    std::vector<char*> rest = {argv[0]};
+    for (int i = 2; i < argc; ++i) rest.push_back(argv[i]);
+    return cloudsvc::views_command::run(static_cast<int>(rest.size()), rest.data());
   }
   const Options o = parse(argc, argv);
   fs::create_directories(o.out);

@@ -14,7 +14,7 @@ namespace cloudsvc {
 struct FrameCounters {
   std::uint32_t density_evals = 0;     // cloud density evaluations (when counted)
   std::uint32_t nonfinite_pixels = 0;  // pixels the composite zeroed (NaN, Inf, negative)
-  std::uint32_t cloud_pixels = 0;      // pixels with cloud opacity > 0.01
+  std::uint32_t cloud_pixels = 0;      // pixels with cloud opacity > kCloudPixelOpacity
 };
 
 class FrameBuffers {

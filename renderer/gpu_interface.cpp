@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "renderer/api/frame_image.h"
 #include "renderer/model/atmosphere_constants.h"
 #include "renderer/model/scene_constants.h"
 
@@ -44,6 +45,7 @@ std::string make_preamble() {
 #undef CLOUDSVC_EMIT_SSBO
 #undef CLOUDSVC_EMIT_UBO
   s << "#define MAX_LAYERS " << kMaxLayers << '\n';
+  s << "const float CLOUD_PIXEL_OPACITY = " << glsl_float(kCloudPixelOpacity) << ";\n";
 
   namespace m = model;
   const double deg = M_PI / 180.0;

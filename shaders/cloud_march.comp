@@ -4,8 +4,8 @@
 // (fresh_radiance) rgb: radiance the clouds send to the camera, in-scattered in the clouds and
 // seen through the aerial perspective in front of them (W m^-2 sr^-1 nm^-1, 680/550/440
 // nm), a: cloud transmittance; (fresh_depth) x: depth (m; the
-// transmittance-weighted cloud distance, or where the ray enters the first layer when it
-// meets no cloud), y: 0 (unused), z: layer of that depth (-1 none), w: 1.
+// transmittance-weighted cloud distance, or clear_ray_depth() when it meets no cloud), y:
+// 0 (unused), z: layer of that depth (-1 none), w: 1.
 #include "common.glsl"
 #include "frame_counters.glsl"
 #include "frame_uniforms.glsl"
@@ -46,6 +46,15 @@ bool segment_may_have_cloud(int li, vec3 dir, float ta, float tb) {
   float m = pyramid_max_in_cap(ll.x, ll.y, a);
   return local_coverage(frame.layers[li], vec4(m)) > 0.0;
 }
+
+// The depth (m) stored for a ray that meets no cloud, by which the resolve finds where the
+// pixel looked last frame (cloud_resolve.comp): where the ray enters the first layer it
+// crosses, the nearest point a cloud could be; from a camera inside that layer (entry at 0,
+// the camera itself, which projects onto no pixel of the previous camera and would leave
+// the clear pixel without history, to be filled with its fresh neighbours' cloud every
+// frame), where the ray leaves it: the far end of the clear span. (A ray that crosses no
+// layer stores the ground's or the march reach's distance.)
+float clear_ray_depth(Interval first) { return first.t0 > 0.0 ? first.t0 : first.t1; }
 
 // Light steps at distance t: the full count while the pixel footprint is finer than a
 // base-noise texel, falling in proportion beyond (no finer lighting than the pixel can
@@ -105,7 +114,7 @@ void main() {
   vec3 C = vec3(0.0);  // in-scattered radiance from clouds
   float T = 1.0;       // cloud transmittance
   float depth_acc = 0.0;
-  float depth = n_iv > 0 ? iv[0].t0 : min(t_limit, 1e7);
+  float depth = n_iv > 0 ? clear_ray_depth(iv[0]) : min(t_limit, 1e7);
   int depth_layer = n_iv > 0 ? iv[0].layer : -1;
   float strongest = 0.0;  // largest single-step contribution T * absorbed, and its layer
   int cloud_layer = -1;

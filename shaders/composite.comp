@@ -240,7 +240,7 @@ void main() {
     radiance = vec3(0.0);
     opacity = 0.0;
   }
-  if (opacity > 0.01) atomicAdd(counters.cloud_pixels, 1u);
+  if (opacity > CLOUD_PIXEL_OPACITY) atomicAdd(counters.cloud_pixels, 1u);
   if (frame.count_density_evaluations != 0 && g_density_evals > 0u) atomicAdd(counters.density_evals, g_density_evals);
   imageStore(out_image, px, vec4(radiance, opacity));
 }

@@ -3,5 +3,5 @@
 layout(std430, binding = SSBO_FRAME_COUNTERS) buffer FrameCounters {
   uint density_evals;     // cloud density evaluations of every pass (when counted)
   uint nonfinite_pixels;  // pixels the composite had to clamp (NaN, Inf, negative)
-  uint cloud_pixels;      // pixels with cloud opacity > 0.01
+  uint cloud_pixels;      // pixels with cloud opacity > CLOUD_PIXEL_OPACITY
 } counters;

@@ -8,11 +8,17 @@
 
 namespace cloudsvc {
 
+// A pixel counts as cloud where its cloud opacity (1 - cloud transmittance, the alpha of a
+// FrameImage) exceeds this: FrameStats::cloud_pixels of the GPU renderer and the CPU
+// reference, and the cloud-pixel fraction of renderer/reference/image_metrics.h. The
+// shaders receive it as CLOUD_PIXEL_OPACITY (renderer/gpu_interface.cpp).
+inline constexpr double kCloudPixelOpacity = 0.01;
+
 struct FrameStats {
   double render_ms = 0.0;             // GPU passes + readback, wall clock
   double sun_elevation_deg = 0.0;     // geometric elevation at the camera
   double sun_azimuth_deg = 0.0;
-  std::int64_t cloud_pixels = 0;      // pixels with cloud opacity > 0.01
+  std::int64_t cloud_pixels = 0;      // pixels with cloud opacity > kCloudPixelOpacity
   double density_evals_per_pixel = 0.0;
   std::int64_t nonfinite_pixels = 0;  // pixels the shader had to clamp (must be 0)
   bool view_luts_recomputed = true;   // sky-view LUT or aerial-perspective volume redone this frame

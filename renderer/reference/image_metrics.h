@@ -5,7 +5,8 @@
 //               (so a frame with the sun disk in view would score high: compare views
 //               without it, or pass a fixed peak)
 //   max error = largest |test - ref| of any channel, and where it is
-// plus the RMSE of the opacity channel (a).
+// plus the RMSE of the opacity channel (a); and the cloud silhouettes of two frames (which
+// pixels are cloud, and the error on the reference's cloud edges).
 #pragma once
 
 #include "renderer/api/frame_image.h"
@@ -27,6 +28,23 @@ struct ImageDifference {
 
 // Images must have the same size. fixed_peak > 0 replaces the reference's peak.
 ImageDifference compare_images(const FrameImage& test, const FrameImage& reference, double fixed_peak = 0.0);
+
+// Fraction of img's pixels that are cloud (opacity above kCloudPixelOpacity).
+double cloud_pixel_fraction(const FrameImage& img);
+
+// Which pixels are cloud (opacity above kCloudPixelOpacity) in a test frame against a
+// reference, as fractions of all pixels, and the error on the reference's cloud edges.
+struct SilhouetteDifference {
+  double test_cloud = 0.0, reference_cloud = 0.0;  // cloud-pixel fractions
+  double false_cloud = 0.0;   // cloud in the test, clear in the reference (a dilated silhouette)
+  double missed_cloud = 0.0;  // clear in the test, cloud in the reference
+  // rgb RMSE (as compare_images) over the edge band: pixels whose neighbourhood of
+  // (2 edge_radius_px + 1)^2 pixels in the reference holds both cloud and clear pixels
+  double edge_rmse = 0.0;
+  int edge_pixels = 0;
+};
+// Images must have the same size.
+SilhouetteDifference compare_silhouettes(const FrameImage& test, const FrameImage& reference, int edge_radius_px = 2);
 
 // The mean of each n x n block of img (rgba; width and height divisible by n): the box-
 // filtered footprint of one pixel of the 1/n image (n = 1: img itself).

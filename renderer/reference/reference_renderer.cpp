@@ -66,7 +66,7 @@ FrameImage render_reference(const ViewRequest& view, const weather::Weather& wea
         rgb = glm::dvec3(0.0);
       }
       const double alpha = bad ? 0.0 : opacity;
-      if (alpha > 0.01) ++row_cloud[static_cast<std::size_t>(y)];
+      if (alpha > kCloudPixelOpacity) ++row_cloud[static_cast<std::size_t>(y)];
       float* out = &img.rgba[(static_cast<std::size_t>(y) * view.width + x) * 4];
       out[0] = static_cast<float>(rgb.r);
       out[1] = static_cast<float>(rgb.g);

@@ -69,7 +69,7 @@ using model::kSunAngularRadiusDeg;
 
 // Renders the view (rgba float, rows from the top; rgb radiance in W m^-2 sr^-1 nm^-1 at
 // 680/550/440 nm, a = cloud opacity). Stats: render_ms (wall clock, including the first
-// call's table and input generation), sun position, cloud_pixels (opacity > 0.01),
+// call's table and input generation), sun position, cloud_pixels (opacity > kCloudPixelOpacity),
 // density_evals_per_pixel (all cloud density evaluations: primary, light, ground shadow; of all
 // pixel_samples^2 rays of a pixel),
 // nonfinite_pixels (pixels zeroed because of NaN/Inf/negative values; must stay 0).

@@ -57,7 +57,8 @@ struct Errors {
 
 struct TruthNoise {
   double mean_se2 = 0;  // mean over pixels and channels of se^2
-  double cloud_rel_se = std::numeric_limits<double>::quiet_NaN();  // mean se / t over the truth's cloud pixels
+  // sqrt(mean se^2) / mean t over the truth's cloud pixels: the truth's own relative noise
+  double cloud_rel_se = std::numeric_limits<double>::quiet_NaN();
   double peak = 0;
 };
 
@@ -66,7 +67,7 @@ using Mask = std::vector<std::uint8_t>;
 
 inline TruthNoise truth_noise(const FrameImage& t, const Mask& valid) {
   TruthNoise n;
-  double rel = 0;
+  double rel = 0, cloud_t = 0;
   long rel_n = 0, used = 0;
   const size_t pixels = static_cast<size_t>(t.width) * t.height;
   for (size_t i = 0; i < pixels; ++i) {
@@ -76,23 +77,26 @@ inline TruthNoise truth_noise(const FrameImage& t, const Mask& valid) {
       const double se = t.std_error[i * 3 + c], v = t.rgba[i * 4 + c];
       n.mean_se2 += se * se;
       n.peak = std::max(n.peak, v);
-      if (t.rgba[i * 4 + 3] > bench::kCloudOpacity && v > 0) {
-        rel += se / v;
+      if (t.rgba[i * 4 + 3] > bench::kCloudOpacity) {
+        rel += se * se;
+        cloud_t += v;
         ++rel_n;
       }
     }
   }
   n.mean_se2 /= static_cast<double>(std::max(1L, used * 3));
-  if (rel_n) n.cloud_rel_se = rel / static_cast<double>(rel_n);
+  if (rel_n && cloud_t > 0) n.cloud_rel_se = std::sqrt(rel / rel_n) / (cloud_t / rel_n);
   return n;
 }
 
-// RMSE, PSNR (peak: the largest rgb of `ref`) and the mean relative error over ref's cloud
-// pixels of img against ref, over the valid pixels; `noise_mse` is subtracted from the MSE.
-inline void compare(const FrameImage& img, const FrameImage& ref, const Mask& valid, double noise_mse, double& rmse,
-                    double& psnr, double& cloud_rel) {
-  double mse = 0, peak = 0, rel = 0;
-  long n = 0, rel_n = 0;
+// RMSE, PSNR (peak: the largest rgb of `ref`) and the relative RMSE over ref's cloud pixels
+// (RMSE there / mean radiance there: a ratio of aggregates, which a pixel whose truth is
+// near 0 cannot blow up) of img against ref, over the valid pixels; the noise variance
+// `se` (per pixel and channel; empty = none) is subtracted from the squared errors.
+inline void compare(const FrameImage& img, const FrameImage& ref, const Mask& valid, const std::vector<float>& se,
+                    double& rmse, double& psnr, double& cloud_rel) {
+  double mse = 0, peak = 0, cloud_se2 = 0, cloud_mean = 0;
+  long n = 0, cloud_n = 0;
   const size_t pixels = static_cast<size_t>(img.width) * img.height;
   for (size_t i = 0; i < pixels; ++i) {
     if (!valid[i]) continue;
@@ -100,25 +104,29 @@ inline void compare(const FrameImage& img, const FrameImage& ref, const Mask& va
     const bool cloud = ref.rgba[i * 4 + 3] > bench::kCloudOpacity;
     for (int c = 0; c < 3; ++c) {
       const double r = ref.rgba[i * 4 + c], d = static_cast<double>(img.rgba[i * 4 + c]) - r;
-      mse += d * d;
+      const double noise = se.empty() ? 0.0 : static_cast<double>(se[i * 3 + c]) * se[i * 3 + c];
+      mse += d * d - noise;
       peak = std::max(peak, r);
-      if (cloud && r > 0) {
-        rel += std::abs(d) / r;
-        ++rel_n;
+      if (cloud) {
+        cloud_se2 += d * d - noise;
+        cloud_mean += r;
+        ++cloud_n;
       }
     }
   }
-  mse = mse / static_cast<double>(std::max(1L, n * 3)) - noise_mse;
-  rmse = std::sqrt(std::max(0.0, mse));
+  rmse = std::sqrt(std::max(0.0, mse / static_cast<double>(std::max(1L, n * 3))));
   psnr = rmse > 0 ? 20.0 * std::log10(peak / rmse) : std::numeric_limits<double>::infinity();
-  cloud_rel = rel_n ? rel / static_cast<double>(rel_n) : std::numeric_limits<double>::quiet_NaN();
+  cloud_rel = cloud_n && cloud_mean > 0
+                  ? std::sqrt(std::max(0.0, cloud_se2 / cloud_n)) / (cloud_mean / static_cast<double>(cloud_n))
+                  : std::numeric_limits<double>::quiet_NaN();
 }
 
 inline Errors errors_of(const FrameImage& img, const FrameImage& truth, const TruthNoise& noise, const FrameImage& ref,
                         const Mask& valid) {
   Errors e;
-  compare(img, truth, valid, noise.mean_se2, e.truth_rmse, e.truth_psnr, e.truth_cloud_rel);
-  compare(img, ref, valid, 0.0, e.ref_rmse, e.ref_psnr, e.ref_cloud_rel);
+  compare(img, truth, valid, truth.std_error, e.truth_rmse, e.truth_psnr, e.truth_cloud_rel);
+  compare(img, ref, valid, {}, e.ref_rmse, e.ref_psnr, e.ref_cloud_rel);
+  static_cast<void>(noise);
   return e;
 }
 
@@ -138,6 +146,10 @@ inline std::string describe(const bench::BenchScene& s) {
                 v.attitude.roll_deg, v.fov_deg, geo::format_utc_iso8601(v.unix_time_s).c_str(), s.sun_elevation_deg);
   return b + s.weather_label;
 }
+
+// A scene's truth resolves cloud radiance when its relative noise there is at most this
+// (and the sun is above the horizon).
+inline constexpr double kResolvedNoise = 0.25;
 
 inline std::string num(const char* f, double v) {
   if (!std::isfinite(v)) return "-";
@@ -233,16 +245,27 @@ inline int run(int argc, char** argv) {
   std::map<std::string, std::vector<const Row*>> by_config;
   for (const Row& r : rows) by_config[r.config].push_back(&r);
   std::vector<double> floor_rel;
-  for (const TruthNoise& n : noises) floor_rel.push_back(n.cloud_rel_se);
+  std::map<std::string, bool> resolved;  // scenes whose truth resolves cloud radiance (noise <= kResolvedNoise)
+  int resolved_count = 0;
+  for (size_t i = 0; i < scenes.size(); ++i) {
+    floor_rel.push_back(noises[i].cloud_rel_se);
+    resolved[scenes[i].name] = noises[i].cloud_rel_se <= kResolvedNoise && scenes[i].sun_elevation_deg > 0.0;
+    resolved_count += resolved[scenes[i].name] ? 1 : 0;
+  }
   std::ostringstream md;
   md << "# cloudbench --truth report\n\nCommand: `cloudbench --truth --scenes " << scenes_text << " --size " << size
      << " --spp " << spp << " --ref-samples " << ref_samples << " --max-collisions " << max_collisions << "`  \n"
      << scenes.size() << " scenes at " << w << "x" << h << "; truth " << spp << " paths per pixel ("
      << num("%.0f", truth_s) << " s of renders, 0 = cached), reference " << ref_samples << "x" << ref_samples
      << " rays per pixel (" << num("%.0f", ref_s) << " s), total " << num("%.0f", total_s) << " s.\n\n"
-     << "The truth's own noise on cloud pixels (mean s.e. / radiance): mean " << num("%.4f", bench::finite_mean(floor_rel))
-     << ", p90 " << num("%.4f", bench::percentile(floor_rel, 90)) << " over the scenes with cloud: relative errors "
-     << "against the truth below this are not resolved. Pixels whose truth is incomplete (a path exceeded "
+     << "Cloud relative error = RMSE over the cloud pixels (opacity > 0.01 in the image compared against) and rgb "
+        "channels / their mean radiance; against the truth the truth's own variance (se^2) is subtracted from the "
+        "squared errors. The truth's own relative noise on cloud pixels (sqrt(mean se^2) / mean radiance): mean "
+     << num("%.4f", bench::finite_mean(floor_rel)) << ", p90 " << num("%.4f", bench::percentile(floor_rel, 90))
+     << " over the scenes with cloud. Truth columns aggregate the " << resolved_count << " scenes where it is at most "
+     << num("%.2f", kResolvedNoise) << " and the sun is above the horizon (the others: no cloud, or a truth too noisy at "
+        "this spp; at twilight the sun lights only the upper atmosphere, few paths find it, and the truth's error "
+        "estimate itself is unreliable). Pixels whose truth is incomplete (a path exceeded "
      << max_collisions << " tentative collisions: deep inside optically thick cloud) are left out of every metric: "
      << num("%.1f", 100.0 * bench::finite_mean(incomplete_share)) << " % of the pixels on average, "
      << num("%.1f", 100.0 * bench::percentile(incomplete_share, 90)) << " % at the 90th percentile of the scenes.\n\n"
@@ -252,8 +275,10 @@ inline int run(int argc, char** argv) {
     std::vector<double> ev, tr, tp, rr, rp;
     for (const Row* r : by_config[c]) {
       ev.push_back(r->evals_px);
-      tr.push_back(r->e.truth_cloud_rel);
-      tp.push_back(r->e.truth_psnr);
+      if (resolved[r->scene]) {
+        tr.push_back(r->e.truth_cloud_rel);
+        tp.push_back(r->e.truth_psnr);
+      }
       if (c != "reference") {
         rr.push_back(r->e.ref_cloud_rel);
         rp.push_back(r->e.ref_psnr);
@@ -265,7 +290,7 @@ inline int run(int argc, char** argv) {
        << num("%.3f", bench::percentile(rr, 90)) << " | " << num("%.2f", bench::finite_mean(rp)) << " | "
        << num("%.2f", bench::percentile(rp, 10)) << " |\n";
   }
-  md << "\n## Per scene\n\n| scene | incomplete px | truth cloud s.e. | naive vs truth | default vs truth | reference vs truth | "
+  md << "\n## Per scene (cloud relative error)\n\n| scene | incomplete px | truth noise | naive vs truth | default vs truth | reference vs truth | "
         "default vs reference | naive vs reference |\n|---|---:|---:|---:|---:|---:|---:|---:|\n";
   for (size_t i = 0; i < scenes.size(); ++i) {
     auto find = [&](const std::string& c) -> const Row* {
@@ -280,7 +305,7 @@ inline int run(int argc, char** argv) {
        << num("%.3f", r->e.truth_cloud_rel) << " | " << num("%.3f", d->e.ref_cloud_rel) << " | "
        << num("%.3f", n->e.ref_cloud_rel) << " |\n";
   }
-  md << "\n(cloud relative error: mean |x - t| / t over the cloud pixels and rgb channels.)\n\n## Scenes\n\n";
+  md << "\n## Scenes\n\n";
   for (const bench::BenchScene& s : scenes) md << "- " << describe(s) << "\n";
   std::ofstream(dir / "report.md") << md.str();
   std::printf("cloudbench --truth: %zu scenes in %.0f s -> %s\n", scenes.size(), total_s, dir.string().c_str());

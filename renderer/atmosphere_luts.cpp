@@ -11,8 +11,8 @@ AtmosphereLuts::AtmosphereLuts()
     : sky_view_prog_(gl::ShaderProgram::compute("sky_view_lut.comp")),
       ap_prog_(gl::ShaderProgram::compute("aerial_perspective.comp")),
       transmittance_(gl::make_texture_2d(GL_RGBA32F, kTransmittanceW, kTransmittanceH, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE)),
-      multiscatter_(gl::make_texture_2d(GL_RGBA32F, kMultiscatterSize, kMultiscatterSize, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE)),
-      irradiance_(gl::make_texture_2d(GL_RGBA32F, kIrradianceSize, kIrradianceSize, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE)),
+      multiscatter_(gl::make_texture_2d(GL_RGBA32F, kSunLutMuNodes, kSunLutAltNodes, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE)),
+      irradiance_(gl::make_texture_2d(GL_RGBA32F, kSunLutMuNodes, kSunLutAltNodes, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE)),
       sky_view_(gl::make_texture_2d(GL_RGBA32F, kSkyViewW, kSkyViewH, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE)),
       ap_inscatter_(gl::make_texture_3d(GL_RGBA32F, kApSize, kApSize, kApSize, GL_CLAMP_TO_EDGE)),
       ap_transmittance_(gl::make_texture_3d(GL_RGBA32F, kApSize, kApSize, kApSize, GL_CLAMP_TO_EDGE)) {
@@ -28,7 +28,7 @@ AtmosphereLuts::AtmosphereLuts()
     prog.use();
     glBindTextureUnit(gpu::tex::TRANSMITTANCE_LUT, transmittance_.id());
     glBindImageTexture(gpu::img::LUT_OUT, multiscatter_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    gl::dispatch_2d(kMultiscatterSize, kMultiscatterSize);
+    gl::dispatch_2d(kSunLutMuNodes, kSunLutAltNodes);
   }
   {
     auto prog = gl::ShaderProgram::compute("sky_irradiance_lut.comp");
@@ -36,7 +36,7 @@ AtmosphereLuts::AtmosphereLuts()
     glBindTextureUnit(gpu::tex::TRANSMITTANCE_LUT, transmittance_.id());
     glBindTextureUnit(gpu::tex::MULTISCATTER_LUT, multiscatter_.id());
     glBindImageTexture(gpu::img::LUT_OUT, irradiance_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    gl::dispatch_2d(kIrradianceSize, kIrradianceSize);
+    gl::dispatch_2d(kSunLutMuNodes, kSunLutAltNodes);
   }
 }
 

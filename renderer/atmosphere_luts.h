@@ -18,8 +18,9 @@ namespace cloudsvc {
 class AtmosphereLuts {
  public:
   static constexpr int kTransmittanceW = 256, kTransmittanceH = 64;
-  static constexpr int kMultiscatterSize = 32;
-  static constexpr int kIrradianceSize = 32;
+  // Psi_ms and E_sky: 64 sun zenith cosines (denser at the horizon, sun_lut_mu in
+  // shaders/atmosphere_model.glsl) x 32 altitudes, stored as logs.
+  static constexpr int kSunLutMuNodes = 64, kSunLutAltNodes = 32;
   static constexpr int kSkyViewW = 192, kSkyViewH = 108;
   static constexpr int kApSize = 32;  // 32 x 32 directions x 32 depth slices
 
@@ -27,8 +28,7 @@ class AtmosphereLuts {
 
   // GPU memory of all the LUTs (RGBA32F texels).
   static constexpr std::size_t gpu_bytes() {
-    return 16u * (kTransmittanceW * kTransmittanceH + kMultiscatterSize * kMultiscatterSize +
-                  kIrradianceSize * kIrradianceSize + kSkyViewW * kSkyViewH + 2 * kApSize * kApSize * kApSize);
+    return 16u * (kTransmittanceW * kTransmittanceH + 2 * kSunLutMuNodes * kSunLutAltNodes + kSkyViewW * kSkyViewH + 2 * kApSize * kApSize * kApSize);
   }
 
   // Which of the camera-dependent LUTs update_view_dependent recomputed.

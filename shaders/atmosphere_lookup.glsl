@@ -1,6 +1,6 @@
 // Lookups into the atmosphere LUTs; needs atmosphere_model.glsl.
 layout(binding = TEX_TRANSMITTANCE_LUT) uniform sampler2D transmittance_lut;   // 256x64, rgb transmittance to the top
-layout(binding = TEX_MULTISCATTER_LUT) uniform sampler2D multiscatter_lut;    // 32x32, rgb Psi_ms (Hillaire 2020 eq. 10)
+layout(binding = TEX_MULTISCATTER_LUT) uniform sampler2D multiscatter_lut;    // 64x32 (mu_sun x alt), rgb log Psi_ms (Hillaire 2020 eq. 10)
 
 // Transmittance from altitude alt along zenith cosine mu to space; 0 if the planet blocks it.
 vec3 transmittance_to_space(float alt, float mu) {
@@ -9,12 +9,25 @@ vec3 transmittance_to_space(float alt, float mu) {
   return textureLod(transmittance_lut, transmittance_uv(r, mu, vec2(textureSize(transmittance_lut, 0))), 0.0).rgb;
 }
 
+// Lookup of a LUT over (sun_lut_u(mu_sun), alt / 100 km) that stores log values
+// (atmosphere_model.glsl): log-linear along mu_sun (the filtered log of one altitude row,
+// read at the row's texel centre, exponentiated), linear between the two altitude rows
+// (over the uniform 3.2 km rows the log-linear form lost up to 3.5 dB of daytime accuracy,
+// tests/accuracy_reference_vs_gpu_test.cpp, inside a stratus deck).
+vec3 sun_lut_lookup(sampler2D lut, float alt, float mu_sun) {
+  vec2 size = vec2(textureSize(lut, 0));
+  float x = 0.5 / size.x + sun_lut_u(mu_sun) * (1.0 - 1.0 / size.x);
+  float fy = saturate(alt / (ATMO_TOP - ATMO_BOTTOM)) * (size.y - 1.0);
+  float y0 = min(floor(fy), size.y - 2.0);
+  vec3 a = exp(textureLod(lut, vec2(x, (y0 + 0.5) / size.y), 0.0).rgb);
+  vec3 b = exp(textureLod(lut, vec2(x, (y0 + 1.5) / size.y), 0.0).rgb);
+  return mix(a, b, fy - y0);
+}
+
 // Multiple-scattering contribution Psi_ms for unit sun irradiance (sr^-1 per unit sigma_s).
+// The LUT holds log Psi_ms over sun_lut_u(mu_sun) (atmosphere_model.glsl).
 vec3 multiscatter(float alt, float mu_sun) {
-  vec2 uv = vec2(mu_sun * 0.5 + 0.5, saturate(alt / (ATMO_TOP - ATMO_BOTTOM)));
-  vec2 size = vec2(textureSize(multiscatter_lut, 0));
-  uv = 0.5 / size + uv * (1.0 - 1.0 / size);
-  return textureLod(multiscatter_lut, uv, 0.0).rgb;
+  return sun_lut_lookup(multiscatter_lut, alt, mu_sun);
 }
 
 // In-scattered radiance per metre at a point (W m^-2 sr^-1 nm^-1 per m) for a unit-less
@@ -62,11 +75,10 @@ float atmosphere_path_length(float r, float mu) {
   return ray_hits_ground(r, mu) ? distance_to_bottom(r, mu) : distance_to_top(r, mu);
 }
 
-layout(binding = TEX_SKY_IRRADIANCE_LUT) uniform sampler2D sky_irradiance_lut;  // 32x32, rgb E_sky for unit sun
+layout(binding = TEX_SKY_IRRADIANCE_LUT) uniform sampler2D sky_irradiance_lut;  // 64x32 (mu_sun x alt), rgb log E_sky for unit sun
 
-// Sky irradiance on an upward-facing surface at altitude alt, unit sun irradiance.
+// Sky irradiance on an upward-facing surface at altitude alt, unit sun irradiance. The LUT
+// holds log E_sky over sun_lut_u(mu_sun) (atmosphere_model.glsl).
 vec3 sky_irradiance(float alt, float mu_sun) {
-  vec2 size = vec2(textureSize(sky_irradiance_lut, 0));
-  vec2 uv = vec2(mu_sun * 0.5 + 0.5, saturate(alt / (ATMO_TOP - ATMO_BOTTOM)));
-  return textureLod(sky_irradiance_lut, 0.5 / size + uv * (1.0 - 1.0 / size), 0.0).rgb;
+  return sun_lut_lookup(sky_irradiance_lut, alt, mu_sun);
 }

@@ -71,3 +71,27 @@ vec2 transmittance_r_mu(vec2 uv, vec2 size) {
 
 // Radius used for atmosphere lookups of a point at altitude alt (m) above the shell.
 float atmo_radius(float alt) { return clamp(ATMO_BOTTOM + alt, ATMO_BOTTOM + 1.0, ATMO_TOP - 1.0); }
+
+// Sun-zenith-cosine axis of the multiple-scattering and sky-irradiance LUTs (u in [0, 1]
+// over their width): mu_sun = 0.25 x + 0.75 x^3 with x = 2u - 1, the mapping of the CPU
+// reference's tables (renderer/reference/atmosphere_tables.cpp, MuAltitudeTable): nodes
+// 10x denser at the horizon (d mu / dx = 0.25) than at the zenith (2.5), where twilight
+// Psi_ms and E_sky fall by orders of magnitude over a few degrees. Both LUTs store
+// log(max(value, SUN_LUT_FLOOR)), interpolated log-linearly along mu_sun
+// (sun_lut_lookup, atmosphere_lookup.glsl): linear interpolation of such a steep function
+// between the former 32 uniform nodes made twilight skies and clouds 2-5x too bright
+// (sun at -7 deg; tests/twilight_reference_vs_gpu_test.cpp).
+const float SUN_LUT_FLOOR = 1e-30;
+float sun_lut_mu(float u) {
+  float x = 2.0 * u - 1.0;
+  return 0.25 * x + 0.75 * x * x * x;
+}
+// Inverse of sun_lut_mu: the real root of x^3 + x/3 - 4 mu/3 = 0 (Cardano's formula;
+// the discriminant (2 mu / 3)^2 + (1/9)^3 is positive, so there is one real root).
+float sun_lut_u(float mu) {
+  float a = 2.0 * clamp(mu, -1.0, 1.0) / 3.0;
+  float s = sqrt(a * a + 1.0 / 729.0);
+  float p = a + s, q = a - s;
+  float x = sign(p) * pow(abs(p), 1.0 / 3.0) + sign(q) * pow(abs(q), 1.0 / 3.0);
+  return saturate(0.5 * x + 0.5);
+}

@@ -1,7 +1,8 @@
 #version 450 core
 // Multiple-scattering LUT Psi_ms(alt, mu_sun) of Hillaire 2020 §5.5 (eqs. 5-10): second-
 // order luminance L_2nd and transfer f_ms from 64 directions with isotropic phase, then
-// Psi_ms = L_2nd / (1 - f_ms). Unit sun irradiance.
+// Psi_ms = L_2nd / (1 - f_ms). Unit sun irradiance. Stored as log Psi_ms over
+// u = sun_lut_u(mu_sun) (atmosphere_model.glsl).
 #include "common.glsl"
 #include "atmosphere_model.glsl"
 layout(binding = TEX_TRANSMITTANCE_LUT) uniform sampler2D transmittance_lut;
@@ -30,9 +31,9 @@ void main() {
   ivec2 size = imageSize(out_lut);
   if (any(greaterThanEqual(px, size))) return;
   // Unit parameters at px / (n - 1): multiscatter() in atmosphere_lookup.glsl reads
-  // texel centres with the same mapping.
+  // texel centres with the same mapping (mu_sun through sun_lut_mu, atmosphere_model.glsl).
   vec2 uv = vec2(px) / vec2(size - 1);
-  float mu_sun = uv.x * 2.0 - 1.0;
+  float mu_sun = sun_lut_mu(uv.x);
   float r = ATMO_BOTTOM + clamp(uv.y * (ATMO_TOP - ATMO_BOTTOM), 1.0, ATMO_TOP - ATMO_BOTTOM - 1.0);
   vec3 sun = vec3(sqrt(max(0.0, 1.0 - mu_sun * mu_sun)), 0.0, mu_sun);
 
@@ -71,5 +72,5 @@ void main() {
   L2 /= float(DIRS);
   fms *= 4.0 * PI / float(DIRS);
   vec3 psi = L2 / max(vec3(1.0) - fms, vec3(1e-3));
-  imageStore(out_lut, px, vec4(psi, 1.0));
+  imageStore(out_lut, px, vec4(log(max(psi, vec3(SUN_LUT_FLOOR))), 1.0));  // log: see sun_lut_mu
 }

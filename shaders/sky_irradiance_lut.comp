@@ -2,7 +2,8 @@
 // Sky irradiance LUT E_sky(alt, mu_sun): irradiance on an upward-facing horizontal
 // surface from the whole sky dome (direct sun excluded), for unit solar irradiance.
 // Integrated from the same single + multiple scattering model as the sky (64 cosine-
-// weighted directions: E = pi * mean(L)). u = mu_sun * 0.5 + 0.5, v = alt / 100 km.
+// weighted directions: E = pi * mean(L)). Stored as log E_sky; u = sun_lut_u(mu_sun)
+// (atmosphere_model.glsl), v = alt / 100 km.
 #include "common.glsl"
 #include "atmosphere_model.glsl"
 #include "atmosphere_lookup.glsl"
@@ -18,7 +19,7 @@ void main() {
   ivec2 size = imageSize(out_lut);
   if (any(greaterThanEqual(px, size))) return;
   vec2 uv = vec2(px) / vec2(size - 1);
-  float mu_sun = uv.x * 2.0 - 1.0;
+  float mu_sun = sun_lut_mu(uv.x);
   float r = atmo_radius(uv.y * (ATMO_TOP - ATMO_BOTTOM));
   vec3 sun = vec3(sqrt(max(0.0, 1.0 - mu_sun * mu_sun)), 0.0, mu_sun);
   vec3 sum = vec3(0.0);
@@ -31,5 +32,5 @@ void main() {
     march_atmosphere(r, d, sun, atmosphere_path_length(r, d.z), STEPS, L, T);
     sum += L;
   }
-  imageStore(out_lut, px, vec4(PI * sum / float(DIRS), 1.0));
+  imageStore(out_lut, px, vec4(log(max(PI * sum / float(DIRS), vec3(SUN_LUT_FLOOR))), 1.0));
 }

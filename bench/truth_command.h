@@ -56,10 +56,8 @@ struct Errors {
 };
 
 struct TruthNoise {
-  double mean_se2 = 0;  // mean over pixels and channels of se^2
   // sqrt(mean se^2) / mean t over the truth's cloud pixels: the truth's own relative noise
   double cloud_rel_se = std::numeric_limits<double>::quiet_NaN();
-  double peak = 0;
 };
 
 // Pixels the comparison uses: those whose truth is complete (TruthImage::incomplete).
@@ -68,23 +66,17 @@ using Mask = std::vector<std::uint8_t>;
 inline TruthNoise truth_noise(const FrameImage& t, const Mask& valid) {
   TruthNoise n;
   double rel = 0, cloud_t = 0;
-  long rel_n = 0, used = 0;
+  long rel_n = 0;
   const size_t pixels = static_cast<size_t>(t.width) * t.height;
   for (size_t i = 0; i < pixels; ++i) {
-    if (!valid[i]) continue;
-    ++used;
+    if (!valid[i] || !(t.rgba[i * 4 + 3] > bench::kCloudOpacity)) continue;
     for (int c = 0; c < 3; ++c) {
-      const double se = t.std_error[i * 3 + c], v = t.rgba[i * 4 + c];
-      n.mean_se2 += se * se;
-      n.peak = std::max(n.peak, v);
-      if (t.rgba[i * 4 + 3] > bench::kCloudOpacity) {
-        rel += se * se;
-        cloud_t += v;
-        ++rel_n;
-      }
+      const double se = t.std_error[i * 3 + c];
+      rel += se * se;
+      cloud_t += t.rgba[i * 4 + c];
+      ++rel_n;
     }
   }
-  n.mean_se2 /= static_cast<double>(std::max(1L, used * 3));
   if (rel_n && cloud_t > 0) n.cloud_rel_se = std::sqrt(rel / rel_n) / (cloud_t / rel_n);
   return n;
 }
@@ -121,12 +113,10 @@ inline void compare(const FrameImage& img, const FrameImage& ref, const Mask& va
                   : std::numeric_limits<double>::quiet_NaN();
 }
 
-inline Errors errors_of(const FrameImage& img, const FrameImage& truth, const TruthNoise& noise, const FrameImage& ref,
-                        const Mask& valid) {
+inline Errors errors_of(const FrameImage& img, const FrameImage& truth, const FrameImage& ref, const Mask& valid) {
   Errors e;
   compare(img, truth, valid, truth.std_error, e.truth_rmse, e.truth_psnr, e.truth_cloud_rel);
   compare(img, ref, valid, {}, e.ref_rmse, e.ref_psnr, e.ref_cloud_rel);
-  static_cast<void>(noise);
   return e;
 }
 
@@ -213,7 +203,7 @@ inline int run(int argc, char** argv) {
                 truth.cached ? "cached" : "rendered", truth.seconds, truth.evals_px, incomplete,
                 ref.cached ? "cached" : "rendered", ref.seconds, describe(s).c_str());
     std::fflush(stdout);
-    rows.push_back({s.name, "reference", ref.evals_px, errors_of(ref.img, truth.img, noise, ref.img, valid)});
+    rows.push_back({s.name, "reference", ref.evals_px, errors_of(ref.img, truth.img, ref.img, valid)});
     renderer.set_weather(s.weather);
     for (const std::string& name : configs) {
       const RenderQuality q = *quality_preset(name);
@@ -228,7 +218,7 @@ inline int run(int argc, char** argv) {
         evals += last.stats.density_evals_per_pixel;
         v.reset_history = false;
       }
-      rows.push_back({s.name, name, evals / kStillFrames, errors_of(last, truth.img, noise, ref.img, valid)});
+      rows.push_back({s.name, name, evals / kStillFrames, errors_of(last, truth.img, ref.img, valid)});
     }
   }
   configs.push_back("reference");

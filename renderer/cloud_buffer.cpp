@@ -32,7 +32,9 @@ TemporalPlan CloudBuffer::start_frame(const FrameContext& frame, const RenderQua
   if (history) rep = make_reprojection(*prev_frame_, frame);
   const bool fast = fast_motion_.update(rep && fast_cloud_motion(*rep, quality), history);
   const ViewRequest* prev = history ? &prev_frame_->view : nullptr;
-  const TemporalPlan plan = plan_temporal_frame(view, quality, history, prev, fast);
+  TemporalPlan plan = plan_temporal_frame(view, quality, history, prev, fast);
+  still_frames_ = plan.camera_still ? still_frames_ + 1 : 0;
+  plan.footprint_sample = footprint_sample_index(still_frames_, plan.stride);
   const TemporalUniforms tu = pack_temporal_uniforms(plan, quality, rep ? &*rep : nullptr, prev);
   glNamedBufferSubData(uniforms_.id(), 0, sizeof(TemporalUniforms), &tu);
   current_ = 1 - current_;

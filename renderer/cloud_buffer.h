@@ -57,6 +57,7 @@ class CloudBuffer {
   gl::Buffer uniforms_;
   std::optional<FrameContext> prev_frame_;  // the last frame, while its buffer may be reused
   RenderQuality prev_quality_;
+  int still_frames_ = 0;        // consecutive still-camera frames, the last one included
   FastMotionHold fast_motion_;  // 1/4 px instead of 1/16 while the clouds move fast
 };
 

@@ -53,6 +53,11 @@ bool camera_still(const ViewRequest& prev, const ViewRequest& cur) {
          turned(prev.attitude.roll_deg, cur.attitude.roll_deg) < kStillCameraDeg;
 }
 
+int footprint_sample_index(int still_frames, int stride) {
+  const int per_cycle = std::max(1, stride) * std::max(1, stride);
+  return still_frames <= 0 ? 0 : (still_frames + per_cycle - 1) / per_cycle;
+}
+
 glm::ivec2 fresh_pixel_offset(int stride, std::uint32_t frame_index) {
   if (stride == 2) return {kOrder2[frame_index % 4][0], kOrder2[frame_index % 4][1]};
   if (stride == 4) return {kOrder4[frame_index % 16][0], kOrder4[frame_index % 16][1]};
@@ -142,6 +147,7 @@ TemporalUniforms pack_temporal_uniforms(const TemporalPlan& p, const RenderQuali
   u.neighbourhood_clamp = quality.neighbourhood_clamp ? 1 : 0;
   u.history_blend_min = static_cast<float>(quality.history_blend_min);
   u.camera_still = p.camera_still ? 1 : 0;
+  u.footprint_sample = p.footprint_sample;
   for (auto& m : u.reproject) m = glm::mat4(1.0f);
   if (p.history && reprojection && prev) {
     for (int i = 0; i <= gpu::kMaxLayers; ++i) u.reproject[i] = glm::mat4(reprojection->transform[i]);

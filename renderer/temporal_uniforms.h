@@ -31,6 +31,7 @@ struct TemporalUniforms {
   int cloud_divisor;        // frame pixels per cloud pixel, per axis
   int neighbourhood_clamp;  // 1: moved history is limited to the range of fresh neighbours
   int camera_still;         // 1: the camera neither moved nor turned since the last frame
+  int footprint_sample;     // footprint_sample_index(): 0 the pixel centre, n the n-th jitter point
 };
 
 static_assert(sizeof(TemporalUniforms) == (gpu::kMaxLayers + 1) * 64 + 6 * 16, "std140 layout");

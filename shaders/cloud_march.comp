@@ -79,14 +79,15 @@ void main() {
   ivec2 cell = ivec2(gl_GlobalInvocationID.xy);
   ivec2 q = cell * temporal.fresh_stride + temporal.fresh_offset;  // the cloud pixel this invocation marches
   if (any(greaterThanEqual(q, temporal.cloud_buffer_size))) return;
-  // the ray through the pixel centre, or (footprint jitter) through the point of this
-  // frame's sequence: offsets fract(r_q + k alpha) - 1/2 in cloud pixels, k the frame
-  // index, alpha the R2 sequence's (Roberts 2018: 1/g, 1/g^2, g^3 = g + 1), r_q a
-  // per-pixel rotation so that neighbours do not move in step
+  // the ray through the pixel centre (footprint sample 0), or (footprint jitter, sample
+  // n >= 1 of a still camera's accumulation; footprint_sample_index()) through the n-th
+  // point of the pixel's sequence: offsets fract(r_q + n alpha) - 1/2 in cloud pixels,
+  // alpha the R2 sequence's (Roberts 2018: 1/g, 1/g^2, g^3 = g + 1), r_q a per-pixel
+  // rotation so that neighbours do not move in step
   vec2 sub_pixel = vec2(0.0);
-  if (frame.footprint_jitter != 0) {
+  if (frame.footprint_jitter != 0 && temporal.footprint_sample > 0) {
     vec2 r_q = vec2(hash12(uvec2(q) * 3u + 11u), hash12(uvec2(q) * 5u + 17u));
-    sub_pixel = fract(r_q + float(frame.frame_index) * vec2(0.7548776662, 0.5698402910)) - 0.5;
+    sub_pixel = fract(r_q + float(temporal.footprint_sample) * vec2(0.7548776662, 0.5698402910)) - 0.5;
   }
   vec2 ndc_ray = cloud_pixel_ndc(vec2(q) + sub_pixel);
   vec3 dir = view_ray(ndc_ray);

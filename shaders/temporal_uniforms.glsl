@@ -21,6 +21,7 @@ layout(std140, binding = UBO_TEMPORAL) uniform TemporalUniforms {
   int cloud_divisor;
   int neighbourhood_clamp;
   int camera_still;
+  int footprint_sample;
 } temporal;
 
 // Normalised device coordinates of the centre of cloud pixel q (frame pixels grouped

@@ -98,7 +98,8 @@ Offsets expected_temporal_uniforms() {
           MEMBER(TemporalUniforms, history_blend_min), MEMBER(TemporalUniforms, cloud_buffer_size),
           MEMBER(TemporalUniforms, fresh_stride), MEMBER(TemporalUniforms, history_valid),
           MEMBER(TemporalUniforms, fresh_offset), MEMBER(TemporalUniforms, cloud_divisor),
-          MEMBER(TemporalUniforms, neighbourhood_clamp), MEMBER(TemporalUniforms, camera_still)};
+          MEMBER(TemporalUniforms, neighbourhood_clamp), MEMBER(TemporalUniforms, camera_still),
+          MEMBER(TemporalUniforms, footprint_sample)};
 }
 
 Offsets expected_shadow_map_uniforms() {

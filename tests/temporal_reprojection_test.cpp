@@ -132,6 +132,21 @@ TEST(TemporalReprojection, HistoryRules) {
   EXPECT_FALSE(camera_still(a, b));
 }
 
+// Footprint samples: the centre while nothing accumulates; in a still run at 1/16 px per
+// frame, every pixel's second sample (frames 1-16 of the run) is its first jitter point, the
+// third (frames 17-32) its second; at 1/4 px per frame one per 4 frames; a full march
+// (stride 1) takes a new point every still frame.
+TEST(TemporalReprojection, FootprintSampleStartsAtThePixelCentre) {
+  EXPECT_EQ(footprint_sample_index(0, 4), 0);
+  EXPECT_EQ(footprint_sample_index(-1, 4), 0);
+  for (int s = 1; s <= 16; ++s) EXPECT_EQ(footprint_sample_index(s, 4), 1) << s;
+  for (int s = 17; s <= 32; ++s) EXPECT_EQ(footprint_sample_index(s, 4), 2) << s;
+  EXPECT_EQ(footprint_sample_index(4, 2), 1);
+  EXPECT_EQ(footprint_sample_index(5, 2), 2);
+  EXPECT_EQ(footprint_sample_index(3, 1), 3);
+  EXPECT_EQ(footprint_sample_index(3, 0), 3);  // stride 0 is read as 1
+}
+
 // The image motion of the nearest clouds per frame, and the default preset marching 1/4
 // instead of 1/16 of the pixels while it exceeds a pixel.
 TEST(TemporalReprojection, FastCloseMotionMarchesMorePixels) {

@@ -130,7 +130,11 @@ void main() {
       int li = iv[k].layer;
       CloudLayerGpu L = frame.layers[li];
       float u0 = march_coordinate(iv[k].t0, t_ref), u1 = march_coordinate(iv[k].t1, t_ref);
+      // with steps growing with distance (t_ref > 0), a near layer's share of the budget
+      // can leave a far one a few steps: every layer crossing gets at least a quarter of
+      // the primary steps (its own structure does not depend on the air in front of it)
       int steps = max(1, int(ceil((u1 - u0) / max(nominal_du, 1e-6))));
+      if (t_ref > 0.0) steps = max(steps, frame.primary_steps / 4);
       float du = (u1 - u0) / float(steps);
       // st: step index; in probing mode the probe at st covers (st - long_step, st]
       int st = 0, last_fine = -1, empty_run = 0;

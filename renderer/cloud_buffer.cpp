@@ -34,7 +34,7 @@ TemporalPlan CloudBuffer::start_frame(const FrameContext& frame, const RenderQua
   const ViewRequest* prev = history ? &prev_frame_->view : nullptr;
   TemporalPlan plan = plan_temporal_frame(view, quality, history, prev, fast);
   still_frames_ = plan.camera_still ? still_frames_ + 1 : 0;
-  plan.footprint_sample = footprint_sample_index(still_frames_, plan.stride);
+  plan.footprint_sample = footprint_sample_index(quality.temporal_reuse, view.frame_index, still_frames_, plan.stride);
   const TemporalUniforms tu = pack_temporal_uniforms(plan, quality, rep ? &*rep : nullptr, prev);
   glNamedBufferSubData(uniforms_.id(), 0, sizeof(TemporalUniforms), &tu);
   current_ = 1 - current_;

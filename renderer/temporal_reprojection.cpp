@@ -58,6 +58,10 @@ int footprint_sample_index(int still_frames, int stride) {
   return still_frames <= 0 ? 0 : (still_frames + per_cycle - 1) / per_cycle;
 }
 
+int footprint_sample_index(bool temporal_reuse, std::uint32_t frame_index, int still_frames, int stride) {
+  return temporal_reuse ? footprint_sample_index(still_frames, stride) : static_cast<int>(frame_index % 65536u);
+}
+
 glm::ivec2 fresh_pixel_offset(int stride, std::uint32_t frame_index) {
   if (stride == 2) return {kOrder2[frame_index % 4][0], kOrder2[frame_index % 4][1]};
   if (stride == 4) return {kOrder4[frame_index % 16][0], kOrder4[frame_index % 16][1]};

@@ -46,14 +46,17 @@ bool camera_still(const ViewRequest& prev, const ViewRequest& cur);
 
 // Which footprint sample a cloud pixel marched this frame takes (shaders/cloud_march.comp,
 // with RenderQuality::footprint_jitter): 0 is the pixel's centre, n >= 1 the n-th point of
-// its rotated R2 sequence. still_frames: consecutive frames with a still camera, this one
-// included (0: history reset or a moving camera, whose fresh samples replace their history,
-// so the centre, as the full march, is the best single sample). In a still run every pixel
-// is marched once per stride^2 frames, so frame s of it gives its pixels their
-// ceil(s / stride^2)-th sample after the centre: the first two samples of a pixel are its
-// centre and one point of the footprint, never two random points (whose average errs more
-// at an edge than the centre alone; docs/ACCURACY.md).
+// its rotated R2 sequence. With temporal reuse, from still_frames: consecutive frames with
+// a still camera, this one included (0: history reset or a moving camera, whose fresh
+// samples replace their history, so the centre, as the full march, is the best single
+// sample). In a still run every pixel is marched once per stride^2 frames, so frame s of it
+// gives its pixels their ceil(s / stride^2)-th sample after the centre: the first two
+// samples of a pixel are its centre and one point of the footprint, never two random points
+// (whose average errs more at an edge than the centre alone; docs/ACCURACY.md). Without
+// temporal reuse the renderer accumulates nothing; a caller that averages frames itself
+// (the stability sweep, an offline accumulation) gets point frame_index mod 65536.
 int footprint_sample_index(int still_frames, int stride);
+int footprint_sample_index(bool temporal_reuse, std::uint32_t frame_index, int still_frames, int stride);
 
 // p_prev = M p_cur for points of layer li's cloud field (camera motion and the layer's
 // wind between the two times), and for the ground at index kGroundTransform. Layers

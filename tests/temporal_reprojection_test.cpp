@@ -145,6 +145,12 @@ TEST(TemporalReprojection, FootprintSampleStartsAtThePixelCentre) {
   EXPECT_EQ(footprint_sample_index(5, 2), 2);
   EXPECT_EQ(footprint_sample_index(3, 1), 3);
   EXPECT_EQ(footprint_sample_index(3, 0), 3);  // stride 0 is read as 1
+  // without temporal reuse the frame index picks the point (a caller's own accumulation)
+  EXPECT_EQ(footprint_sample_index(false, 0u, 0, 1), 0);
+  EXPECT_EQ(footprint_sample_index(false, 7u, 0, 1), 7);
+  EXPECT_EQ(footprint_sample_index(false, 65536u + 3u, 5, 4), 3);
+  EXPECT_EQ(footprint_sample_index(true, 7u, 0, 4), 0);
+  EXPECT_EQ(footprint_sample_index(true, 7u, 17, 4), 2);
 }
 
 // The image motion of the nearest clouds per frame, and the default preset marching 1/4

@@ -5,6 +5,7 @@
 
 #include "renderer/coverage_pyramid.h"
 #include "renderer/gpu_interface.h"
+#include "weather/noise_max_pyramid.h"
 #include "weather/noise_volumes.h"
 
 namespace cloudsvc {
@@ -18,18 +19,37 @@ gl::Texture upload_noise(const weather::NoiseVolume& v) {
   return t;
 }
 
+// The max pyramid's levels as the mip levels of one texture, read texel by texel
+// (texelFetch; no filtering).
+gl::Texture upload_max_pyramid(const weather::NoiseMaxPyramid& p) {
+  GLuint id = 0;
+  glCreateTextures(GL_TEXTURE_3D, 1, &id);
+  glTextureStorage3D(id, p.level_count(), GL_R8, p.size(), p.size(), p.size());
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  for (int l = 0; l < p.level_count(); ++l) {
+    const int n = p.size() >> l;
+    glTextureSubImage3D(id, l, 0, 0, 0, n, n, n, GL_RED, GL_UNSIGNED_BYTE, p.level(l).data());
+  }
+  glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+  glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  return gl::Texture(id);
+}
+
 }  // namespace
 
 CloudFieldTextures::CloudFieldTextures(const RendererConfig& config) : config_(config) {
   const weather::NoiseVolume base = weather::make_base_shape_noise(config.base_noise_size, config.noise_seed);
   summary_.base_quantiles = noise_quantiles(base);
   base_noise_ = upload_noise(base);
+  const weather::NoiseMaxPyramid base_max(base);
+  base_noise_max_ = upload_max_pyramid(base_max);
+  for (int l = 0; l < base_max.level_count(); ++l) noise_bytes_ += base_max.level(l).size();
   const weather::NoiseVolume detail = weather::make_detail_noise(config.detail_noise_size, config.noise_seed + 1);
   double sum = 0.0;
   for (std::uint8_t v : detail.data) sum += v;
   summary_.detail_mean = static_cast<float>(sum / (255.0 * static_cast<double>(detail.data.size())));
   detail_noise_ = upload_noise(detail);
-  noise_bytes_ = base.data.size() + detail.data.size();
+  noise_bytes_ += base.data.size() + detail.data.size();
 }
 
 std::size_t CloudFieldTextures::gpu_bytes() const {
@@ -89,6 +109,7 @@ void CloudFieldTextures::upload_coverage_pyramid(const weather::WeatherMap& from
 
 void CloudFieldTextures::bind() const {
   glBindTextureUnit(gpu::tex::BASE_NOISE, base_noise_.id());
+  glBindTextureUnit(gpu::tex::BASE_NOISE_MAX, base_noise_max_.id());
   glBindTextureUnit(gpu::tex::DETAIL_NOISE, detail_noise_.id());
   glBindTextureUnit(gpu::tex::WEATHER_MAP, weather_maps_[0].id());
   glBindTextureUnit(gpu::tex::WEATHER_MAP_NEXT, weather_maps_[1].id());

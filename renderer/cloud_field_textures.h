@@ -1,4 +1,5 @@
-// The cloud field on the GPU: the base-shape and detail noise volumes, the two weather-map
+// The cloud field on the GPU: the base-shape and detail noise volumes (and the base's max
+// pyramid, weather/noise_max_pyramid.h), the two weather-map
 // keyframes around the frame time (weather/weather_timeline.h) and their coverage
 // max-pyramid (renderer/coverage_pyramid.h), with what the frame uniforms say about them
 // (GpuResourceSummary). Every pass that evaluates the cloud density binds them with bind().
@@ -43,7 +44,7 @@ class CloudFieldTextures {
 
   RendererConfig config_;
   GpuResourceSummary summary_{};
-  gl::Texture base_noise_, detail_noise_, weather_maps_[2];
+  gl::Texture base_noise_, base_noise_max_, detail_noise_, weather_maps_[2];
   std::uint64_t uploaded_version_[2] = {0, 0};  // keyframe versions in weather_maps_[0], [1]
   float uploaded_blend_ = -1.0f;                // blend weight at the last counted change
   gl::Buffer coverage_pyramid_;

@@ -5,6 +5,9 @@
 
 layout(binding = TEX_BASE_NOISE) uniform sampler3D base_noise;      // tiles (REPEAT)
 layout(binding = TEX_DETAIL_NOISE) uniform sampler3D detail_noise;  // tiles (REPEAT)
+// the base noise's max pyramid: mip level l holds the largest texel of each 2^l block
+// (weather/noise_max_pyramid.h); read with texelFetch
+layout(binding = TEX_BASE_NOISE_MAX) uniform sampler3D base_noise_max;
 layout(binding = TEX_WEATHER_MAP) uniform sampler2D weather_map;       // equirectangular lat/lon, REPEAT in lon
 layout(binding = TEX_WEATHER_MAP_NEXT) uniform sampler2D weather_map_next;  // the next keyframe, blended by frame.weather_blend
 
@@ -73,6 +76,70 @@ const int DETAIL_MEAN = 2;
 // reads w (weather_at; the light march passes its sample's value: the map's texels are
 // ~40 km, a light march spans at most LIGHT_MARCH_REACH_M, 4 km); also returns the local
 // coverage (0 outside the layer).
+// Noise space f(X) = X + (k - 1) a(X) n(X): altitude a scaled by k along the local up n, a
+// fixed map of the world; camera-relative: f(X) - f(X_cam) = p + (k - 1)(a n - h n_cam).
+// Returned in the wind-rotated field's axes (m).
+vec3 field_point(CloudLayerGpu L, vec3 p, float alt) {
+  vec3 p_stretched = p + (L.noise_vertical_scale - 1.0) * (alt * up_at(p, frame.shell_radius_m, frame.camera_altitude_m) - vec3(0.0, 0.0, frame.camera_altitude_m));
+  return mat3(L.noise_rotation) * p_stretched;
+}
+
+// Largest value a trilinear sample of the base noise can take anywhere in the box
+// [u_lo, u_hi] of texture coordinates (1 = one period): the texels such a sample reads
+// are covered by at most 2 x 2 x 2 cells of the finest max-pyramid level whose cells are
+// as large as the box (NoiseMaxPyramid::max_over, the same walk).
+float base_noise_max_over(vec3 u_lo, vec3 u_hi) {
+  int n0 = textureSize(base_noise_max, 0).x;
+  int top = textureQueryLevels(base_noise_max) - 1;
+  float global_max = texelFetch(base_noise_max, ivec3(0), top).r;
+  ivec3 lo, hi;
+  int level = 0;
+  for (int a = 0; a < 3; ++a) {
+    float shift = floor(u_lo[a]);
+    float x0 = (u_lo[a] - shift) * float(n0) - 0.5, x1 = (u_hi[a] - shift) * float(n0) - 0.5;
+    if (!(x1 - x0 < float(n0))) return global_max;  // spans a period
+    lo[a] = int(floor(x0));
+    hi[a] = int(floor(x1)) + 1;
+    while ((hi[a] >> level) - (lo[a] >> level) > 1) ++level;  // >> floors negatives (sign-extending)
+  }
+  if (level >= top) return global_max;
+  int mask = (n0 >> level) - 1;  // wrap: the level's edge is a power of two
+  float best = 0.0;
+  for (int z = lo.z >> level; z <= hi.z >> level; ++z)
+    for (int y = lo.y >> level; y <= hi.y >> level; ++y)
+      for (int x = lo.x >> level; x <= hi.x >> level; ++x)
+        best = max(best, texelFetch(base_noise_max, ivec3(x, y, z) & mask, level).r);
+  return best;
+}
+
+// Whether layer li can have cloud anywhere on the segment a..b (local frame, m; a few
+// hundred m at most) with the weather w read at one end: false only where the density is
+// 0 on all of it (the long-step probes of the march skip such a segment). Bounds: the
+// base noise by its max pyramid over the segment's noise-space box; the height profile by
+// its factors' monotonicity (rising ramp at the segment's highest height fraction, falling
+// ramp at its lowest); the coverage and cloud type of the weather map are those of w (the
+// map's texels are tens of km; a segment is a small fraction of one).
+bool cloud_may_be_on_segment(int li, vec3 a, vec3 b, vec4 w) {
+  CloudLayerGpu L = frame.layers[li];
+  float coverage = local_coverage(L, w);
+  if (coverage <= 0.0) return false;
+  float R = frame.shell_radius_m, h = frame.camera_altitude_m;
+  float alt_a = altitude_of(a, R, h), alt_b = altitude_of(b, R, h);
+  float depth_fraction = L.stratiform != 0 ? 1.0 : clamp(0.5 + w.g, 0.3, 1.0);
+  float span = (L.top_m - L.base_m) * depth_fraction;
+  // height fractions of the profile (1 m of slack: the ray's altitude between the ends)
+  float g0 = (min(alt_a, alt_b) - 1.0 - L.base_m) / span, g1 = (max(alt_a, alt_b) + 1.0 - L.base_m) / span;
+  if (g1 <= 0.0 || g0 >= 1.0) return false;
+  float ga = max(g0, 0.0), gb = min(g1, 1.0);
+  float profile_bound = smoothstep(0.0, max(L.bottom_ramp, 1e-3), gb) * (1.0 - smoothstep(1.0 - max(L.top_ramp, 1e-3), 1.0, ga)) *
+                        max(mix(1.0, ga, L.top_weight), mix(1.0, gb, L.top_weight));
+  vec3 ua = field_point(L, a, alt_a) * L.base_noise_frequency + L.base_noise_offset;
+  vec3 ub = field_point(L, b, alt_b) * L.base_noise_frequency + L.base_noise_offset;
+  float pad = 0.05 / float(textureSize(base_noise_max, 0).x);  // the stretch's curvature between the ends
+  float shape_bound = base_noise_max_over(min(ua, ub) - pad, max(ua, ub) + pad);
+  return shape_bound * profile_bound > noise_quantile(1.0 - coverage);
+}
+
 float cloud_extinction_in(int li, vec3 p, float alt, int detail, vec4 w, out float coverage) {
   coverage = 0.0;
   CloudLayerGpu L = frame.layers[li];
@@ -88,10 +155,7 @@ float cloud_extinction_in(int li, vec3 p, float alt, int detail, vec4 w, out flo
   float depth_fraction = L.stratiform != 0 ? 1.0 : clamp(0.5 + w.g, 0.3, 1.0);
   float profile = height_profile(L, f / depth_fraction) * step(f, depth_fraction);
   if (profile <= 0.0) return 0.0;
-  // Noise space f(X) = X + (k - 1) a(X) n(X): altitude a scaled by k along the local up
-  // n, a fixed map of the world; camera-relative: f(X) - f(X_cam) = p + (k - 1)(a n - h n_cam).
-  vec3 p_stretched = p + (L.noise_vertical_scale - 1.0) * (alt * up_at(p, frame.shell_radius_m, frame.camera_altitude_m) - vec3(0.0, 0.0, frame.camera_altitude_m));
-  vec3 p_field = mat3(L.noise_rotation) * p_stretched;  // in the wind-rotated field's axes
+  vec3 p_field = field_point(L, p, alt);
   float shape = textureLod(base_noise, p_field * L.base_noise_frequency + L.base_noise_offset, 0.0).r;
   // Coverage threshold: the shape exceeds Q(1 - c) over a fraction c of the area (at
   // mid-profile), with a soft edge; full cover (c = 1) keeps nearly all of the shape.

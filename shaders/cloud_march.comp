@@ -103,9 +103,11 @@ void main() {
   float t_limit = min(t_ground, frame.march_reach_m);
 
   // Steps are uniform in u = ln(1 + t / t_ref) (t_ref = ms_params.w > 0) or in t (0: the
-  // naive march). In empty air the march probes with steps long_step times longer (base
-  // shape only); on finding cloud it steps back and re-marches that span at the normal
-  // step, and returns to long steps after long_step empty samples (Schneider 2015).
+  // naive march). In empty air the march probes with steps long_step times longer
+  // (Schneider 2015); a probe asks whether the span since the last sample can hold cloud
+  // anywhere (cloud_may_be_on_segment: a bound, so no cloud between probes is missed), and
+  // if so the march steps back and re-marches the span at the normal step; it returns to
+  // long steps after long_step empty samples.
   float t_ref = frame.step_growth_ref_m;
   Interval iv[MAX_INTERVALS];
   float total_len;
@@ -162,11 +164,13 @@ void main() {
         float t = march_distance(u0 + (float(st) + jitter) * du, t_ref);
         vec3 p = t * dir;
         float alt = altitude_of(p, R, h);
-        float coverage;
         vec4 w = weather_at(p);
-        float sigma = cloud_extinction_in(li, p, alt, probing ? DETAIL_NONE : detail_mode_at(t, L), w, coverage);
         if (probing) {
-          if (sigma > 0.0) {
+          // the probe covers the samples st - long_step + 1 .. st (those not yet marched):
+          // any cloud on that stretch sends the march back over it at the normal step
+          g_density_evals += 1u;
+          float t_back = march_distance(u0 + (float(max(st - long_step + 1, last_fine + 1)) + jitter) * du, t_ref);
+          if (cloud_may_be_on_segment(li, t_back * dir, p, w)) {
             probing = false;  // step back: re-march the probed span at the normal step
             empty_run = 0;
             st = max(st - long_step + 1, last_fine + 1);
@@ -175,6 +179,8 @@ void main() {
           }
           continue;
         }
+        float coverage;
+        float sigma = cloud_extinction_in(li, p, alt, detail_mode_at(t, L), w, coverage);
         last_fine = st;
         if (sigma <= 0.0) {
           if (long_step > 1 && ++empty_run >= long_step) {

@@ -188,9 +188,11 @@ TEST_P(CoveragePyramidView, AViewOverAPartlyClearForecastMarchesLessForTheSameIm
   const FrameImage off = second_frame(v, full, false, forecast), on = second_frame(v, full, true, forecast);
   ASSERT_GT(off.stats.cloud_pixels, 50);
   const double worst_full = worst_relative(on, off);
-  // the default preset (long steps x2, its second frame: 1/16 of the pixels, the rest
-  // reprojected): a skip can shift the phase of the long-step probes after it, so the
-  // image is only required to stay within float noise of the march without the pyramid
+  // the default preset (long steps x4, its second frame: 1/16 of the pixels, the rest
+  // reprojected): a skip can shift the phase of the long-step probes after it, which the
+  // probes' bound makes harmless; the image is required to stay within float noise of the
+  // march without the pyramid. The probes already take the empty runs at a quarter of the
+  // cost, so the pyramid saves less there (1.7 -> 1.4 evaluations per pixel, 2026-12-02)
   const RenderQuality preset = *quality_preset("default");
   const FrameImage d_off = second_frame(v, preset, false, forecast), d_on = second_frame(v, preset, true, forecast);
   const double worst_default = worst_relative(d_on, d_off);
@@ -201,7 +203,7 @@ TEST_P(CoveragePyramidView, AViewOverAPartlyClearForecastMarchesLessForTheSameIm
   EXPECT_EQ(worst_full, 0.0);
   EXPECT_LT(on.stats.density_evals_per_pixel, 0.8 * off.stats.density_evals_per_pixel);
   EXPECT_LT(worst_default, 1e-3);
-  EXPECT_LT(d_on.stats.density_evals_per_pixel, 0.8 * d_off.stats.density_evals_per_pixel);
+  EXPECT_LT(d_on.stats.density_evals_per_pixel, 0.9 * d_off.stats.density_evals_per_pixel);
   EXPECT_EQ(on.stats.cloud_pixels, off.stats.cloud_pixels);
 }
 

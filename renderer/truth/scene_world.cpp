@@ -105,7 +105,7 @@ SceneLocalMajorant::SceneLocalMajorant(const reference::ReferenceScene& scene,
     }
     profile_.push_back(std::move(row));
   }
-  if (!inputs.base_noise.data.empty()) base_ = NoiseMaxPyramid(inputs.base_noise);
+  if (!inputs.base_noise.data.empty()) base_ = weather::NoiseMaxPyramid(inputs.base_noise);
   const weather::WeatherMap& map = inputs.weather_map;
   polar_[0] = glm::dvec2(inputs.pole_south.r, inputs.pole_south.b);
   polar_[1] = glm::dvec2(inputs.pole_north.r, inputs.pole_north.b);

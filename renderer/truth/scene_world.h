@@ -22,7 +22,7 @@
 #include "renderer/reference/cloud_field.h"
 #include "renderer/reference/reference_inputs.h"
 #include "renderer/reference/reference_scene.h"
-#include "renderer/truth/noise_max_pyramid.h"
+#include "weather/noise_max_pyramid.h"
 #include "renderer/truth/truth_world.h"
 
 namespace cloudsvc::truth {
@@ -68,7 +68,7 @@ class SceneLocalMajorant final : public LocalCloudMajorant {
   const reference::ReferenceInputs& inputs_;
   std::vector<double> edges_;
   std::vector<std::vector<double>> profile_;  // [band][layer]: height-profile bound
-  NoiseMaxPyramid base_;
+  weather::NoiseMaxPyramid base_;
   glm::dvec2 polar_[2];  // largest R, B of the 4 rows next to the south / north pole and the pole
 };
 

@@ -1,13 +1,13 @@
 // Max pyramid of a tiling noise volume (see noise_max_pyramid.h).
-#include "renderer/truth/noise_max_pyramid.h"
+#include "weather/noise_max_pyramid.h"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
-namespace cloudsvc::truth {
+namespace cloudsvc::weather {
 
-NoiseMaxPyramid::NoiseMaxPyramid(const weather::NoiseVolume& v) : size_(v.size) {
+NoiseMaxPyramid::NoiseMaxPyramid(const NoiseVolume& v) : size_(v.size) {
   if (v.size <= 0 || (v.size & (v.size - 1)) != 0 ||
       v.data.size() != static_cast<std::size_t>(v.size) * v.size * v.size)
     throw std::invalid_argument("NoiseMaxPyramid: the volume's edge must be a power of two");
@@ -58,4 +58,4 @@ double NoiseMaxPyramid::max_over(const glm::dvec3& u_lo, const glm::dvec3& u_hi)
   return best / 255.0;
 }
 
-}  // namespace cloudsvc::truth
+}  // namespace cloudsvc::weather

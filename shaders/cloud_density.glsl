@@ -37,11 +37,24 @@ vec4 weather_at(vec3 p) {
   return w;
 }
 
+// Fraction of the layer's depth the clouds fill at weather w: the cloud-type channel
+// t = w.g (the protocol's vertical development): 0.5 = full layer depth, less = lower
+// tops; stratiform sheets (base_offset.w = 1) are not driven by it
+// (weather::type_depth_fraction / type_height_profile, weather/cloud_layer.h).
+float depth_fraction(CloudLayerGpu L, vec4 w) { return L.stratiform != 0 ? 1.0 : clamp(0.5 + w.g, 0.3, 1.0); }
+
 // Vertical profile over the height fraction f of the layer (0 base, 1 top).
 float height_profile(CloudLayerGpu L, float f) {
   float bottom = smoothstep(0.0, max(L.bottom_ramp, 1e-3), f);
   float top = 1.0 - smoothstep(1.0 - max(L.top_ramp, 1e-3), 1.0, f);
   return bottom * top * mix(1.0, f, L.top_weight);
+}
+
+// An upper bound of height_profile over [fa, fb] from its factors' monotonicity: the
+// rising ramp at fb, the falling ramp at fa, the linear top weighting at its larger end.
+float height_profile_max(CloudLayerGpu L, float fa, float fb) {
+  return smoothstep(0.0, max(L.bottom_ramp, 1e-3), fb) * (1.0 - smoothstep(1.0 - max(L.top_ramp, 1e-3), 1.0, fa)) *
+         max(mix(1.0, fa, L.top_weight), mix(1.0, fb, L.top_weight));
 }
 
 // Base-noise value below which a fraction p of the volume lies (piecewise linear in the
@@ -72,10 +85,6 @@ const int DETAIL_NONE = 0;
 const int DETAIL_SAMPLED = 1;
 const int DETAIL_MEAN = 2;
 
-// sigma_t (1/m) of layer li at local point p with altitude alt, where the weather map
-// reads w (weather_at; the light march passes its sample's value: the map's texels are
-// ~40 km, a light march spans at most LIGHT_MARCH_REACH_M, 4 km); also returns the local
-// coverage (0 outside the layer).
 // Noise space f(X) = X + (k - 1) a(X) n(X): altitude a scaled by k along the local up n, a
 // fixed map of the world; camera-relative: f(X) - f(X_cam) = p + (k - 1)(a n - h n_cam).
 // Returned in the wind-rotated field's axes (m).
@@ -125,14 +134,11 @@ bool cloud_may_be_on_segment(int li, vec3 a, vec3 b, vec4 w) {
   if (coverage <= 0.0) return false;
   float R = frame.shell_radius_m, h = frame.camera_altitude_m;
   float alt_a = altitude_of(a, R, h), alt_b = altitude_of(b, R, h);
-  float depth_fraction = L.stratiform != 0 ? 1.0 : clamp(0.5 + w.g, 0.3, 1.0);
-  float span = (L.top_m - L.base_m) * depth_fraction;
+  float span = (L.top_m - L.base_m) * depth_fraction(L, w);
   // height fractions of the profile (1 m of slack: the ray's altitude between the ends)
   float g0 = (min(alt_a, alt_b) - 1.0 - L.base_m) / span, g1 = (max(alt_a, alt_b) + 1.0 - L.base_m) / span;
   if (g1 <= 0.0 || g0 >= 1.0) return false;
-  float ga = max(g0, 0.0), gb = min(g1, 1.0);
-  float profile_bound = smoothstep(0.0, max(L.bottom_ramp, 1e-3), gb) * (1.0 - smoothstep(1.0 - max(L.top_ramp, 1e-3), 1.0, ga)) *
-                        max(mix(1.0, ga, L.top_weight), mix(1.0, gb, L.top_weight));
+  float profile_bound = height_profile_max(L, max(g0, 0.0), min(g1, 1.0));
   vec3 ua = field_point(L, a, alt_a) * L.base_noise_frequency + L.base_noise_offset;
   vec3 ub = field_point(L, b, alt_b) * L.base_noise_frequency + L.base_noise_offset;
   float pad = 0.05 / float(textureSize(base_noise_max, 0).x);  // the stretch's curvature between the ends
@@ -140,6 +146,10 @@ bool cloud_may_be_on_segment(int li, vec3 a, vec3 b, vec4 w) {
   return shape_bound * profile_bound > noise_quantile(1.0 - coverage);
 }
 
+// sigma_t (1/m) of layer li at local point p with altitude alt, where the weather map
+// reads w (weather_at; the light march passes its sample's value: the map's texels are
+// ~40 km, a light march spans at most LIGHT_MARCH_REACH_M, 4 km); also returns the local
+// coverage (0 outside the layer).
 float cloud_extinction_in(int li, vec3 p, float alt, int detail, vec4 w, out float coverage) {
   coverage = 0.0;
   CloudLayerGpu L = frame.layers[li];
@@ -149,11 +159,8 @@ float cloud_extinction_in(int li, vec3 p, float alt, int detail, vec4 w, out flo
   g_density_evals += 1u;
   coverage = local_coverage(L, w);
   if (coverage <= 0.0) return 0.0;
-  // cloud-type channel t = w.g (the protocol's vertical development): 0.5 = full layer
-  // depth, less = lower tops; stratiform sheets (base_offset.w = 1) are not driven by it
-  // (weather::type_depth_fraction / type_height_profile, weather/cloud_layer.h)
-  float depth_fraction = L.stratiform != 0 ? 1.0 : clamp(0.5 + w.g, 0.3, 1.0);
-  float profile = height_profile(L, f / depth_fraction) * step(f, depth_fraction);
+  float df = depth_fraction(L, w);
+  float profile = height_profile(L, f / df) * step(f, df);
   if (profile <= 0.0) return 0.0;
   vec3 p_field = field_point(L, p, alt);
   float shape = textureLod(base_noise, p_field * L.base_noise_frequency + L.base_noise_offset, 0.0).r;

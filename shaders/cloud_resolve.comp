@@ -1,8 +1,9 @@
 #version 450 core
 // Temporal resolve of the cloud buffer (temporal_uniforms.glsl). Every cloud pixel gets:
 //  - fresh this frame: its new sample; while the camera is still, blended with its
-//    history with weight max(1 / (n + 1), blend.x) after n earlier samples (averages the
-//    step jitter out);
+//    history with weight max(w / (n + w), blend.x), w the sample's weight and n the total
+//    of the earlier ones' (a jittered footprint sample weighs 1, the pixel centre
+//    CENTRE_SAMPLE_WEIGHT of cloud_march.comp; averages the step and footprint jitter out);
 //  - not fresh: its history, reprojected with the real camera motion, the wind of the
 //    cloud layer it shows and its cloud depth (two fixed-point iterations: the depth
 //    stored where the ray pointed last frame), limited to the range of the fresh samples
@@ -157,9 +158,11 @@ void main() {
       if (is_fresh) {
         // a moved or changed history is resampled or stale: a fresh sample replaces it; a
         // still one is averaged with it
-        float w = (moving || moved > 0.1 || changed) ? 1.0 : max(1.0 / (n + 1.0), temporal.history_blend_min);
+        // (n, fresh_own_b.w: the sample weights, cloud_march.comp's CENTRE_SAMPLE_WEIGHT)
+        float n_fresh = fresh_own_b.w;
+        float w = (moving || moved > 0.1 || changed) ? 1.0 : max(n_fresh / (n + n_fresh), temporal.history_blend_min);
         out_a = mix(ha, fresh_own_a, w);
-        out_b = vec4(mix(hb.x, fresh_own_b.x, w), 0.0, fresh_own_b.z, min(n + 1.0, 255.0));
+        out_b = vec4(mix(hb.x, fresh_own_b.x, w), 0.0, fresh_own_b.z, min(n + n_fresh, 255.0));
       } else {
         out_a = ha;
         out_b = vec4(hb.x, 0.0, hb.z, n);
@@ -169,7 +172,7 @@ void main() {
   if (!from_history) {
     if (is_fresh) {
       out_a = fresh_own_a;
-      out_b = vec4(fresh_own_b.xyz, 1.0);
+      out_b = fresh_own_b;
     } else {
       // the fresh samples around q, interpolated; the depth of the nearest one
       fresh_neighbourhood(cs, ws, fresh_at, out_a, lo, hi, nearest);

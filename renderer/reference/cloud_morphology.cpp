@@ -1,0 +1,193 @@
+#include "renderer/reference/cloud_morphology.h"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <limits>
+#include <map>
+#include <numbers>
+
+namespace cloudsvc::reference {
+
+namespace {
+
+Field channel_field(const FrameImage& img, bool opacity) {
+  Field f{img.width, img.height, std::vector<double>(static_cast<std::size_t>(img.width) * img.height)};
+  for (std::size_t i = 0; i < f.v.size(); ++i) {
+    const float* p = &img.rgba[i * 4];
+    f.v[i] = opacity ? p[3] : (static_cast<double>(p[0]) + p[1] + p[2]) / 3.0;
+  }
+  return f;
+}
+
+double median_of(std::vector<double> v) {
+  const std::size_t m = v.size() / 2;
+  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(m), v.end());
+  if (v.size() % 2 == 1) return v[m];
+  const double hi = v[m];
+  return 0.5 * (hi + *std::max_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(m)));
+}
+
+}  // namespace
+
+Field opacity_field(const FrameImage& img) { return channel_field(img, true); }
+Field luminance_field(const FrameImage& img) { return channel_field(img, false); }
+
+std::vector<CloudObject> cloud_objects(const Field& opacity, double threshold) {
+  const int w = opacity.width, h = opacity.height;
+  std::vector<char> seen(opacity.v.size(), 0);
+  auto cloud = [&](int x, int y) { return x >= 0 && y >= 0 && x < w && y < h && opacity.at(x, y) > threshold; };
+  std::vector<CloudObject> out;
+  std::vector<int> stack;
+  for (int y0 = 0; y0 < h; ++y0)
+    for (int x0 = 0; x0 < w; ++x0) {
+      const int i0 = y0 * w + x0;
+      if (seen[i0] || !cloud(x0, y0)) continue;
+      CloudObject c;
+      seen[i0] = 1;
+      stack.push_back(i0);
+      while (!stack.empty()) {
+        const int i = stack.back();
+        stack.pop_back();
+        const int x = i % w, y = i / w;
+        ++c.area_px;
+        if (x == 0 || y == 0 || x == w - 1 || y == h - 1) c.touches_border = true;
+        const int nx[4] = {x + 1, x - 1, x, x}, ny[4] = {y, y, y + 1, y - 1};
+        for (int k = 0; k < 4; ++k) {
+          if (!cloud(nx[k], ny[k])) {
+            ++c.perimeter_px;
+            continue;
+          }
+          const int j = ny[k] * w + nx[k];
+          if (!seen[j]) {
+            seen[j] = 1;
+            stack.push_back(j);
+          }
+        }
+      }
+      out.push_back(c);
+    }
+  return out;
+}
+
+PowerLawFit fit_power_law(const std::vector<double>& x, const std::vector<double>& y) {
+  PowerLawFit fit;
+  double sx = 0, sy = 0, sxx = 0, sxy = 0, syy = 0;
+  for (std::size_t i = 0; i < x.size() && i < y.size(); ++i) {
+    if (!(x[i] > 0.0) || !(y[i] > 0.0)) continue;
+    const double lx = std::log(x[i]), ly = std::log(y[i]);
+    sx += lx; sy += ly; sxx += lx * lx; sxy += lx * ly; syy += ly * ly;
+    ++fit.n;
+  }
+  const double n = fit.n;
+  const double vx = sxx - sx * sx / std::max(n, 1.0), vy = syy - sy * sy / std::max(n, 1.0);
+  const double cxy = sxy - sx * sy / std::max(n, 1.0);
+  if (fit.n < 3 || !(vx > 1e-12)) {
+    fit.exponent = std::numeric_limits<double>::quiet_NaN();
+    return fit;
+  }
+  fit.exponent = cxy / vx;
+  fit.r2 = vy > 0.0 ? cxy * cxy / (vx * vy) : 1.0;
+  return fit;
+}
+
+PowerLawFit perimeter_area_dimension(const std::vector<CloudObject>& clouds, long min_area_px) {
+  std::vector<double> a, p;
+  for (const CloudObject& c : clouds)
+    if (!c.touches_border && c.area_px >= min_area_px) {
+      a.push_back(static_cast<double>(c.area_px));
+      p.push_back(static_cast<double>(c.perimeter_px));
+    }
+  PowerLawFit fit = fit_power_law(a, p);
+  fit.exponent *= 2.0;
+  return fit;
+}
+
+PowerLawFit cloud_size_exponent(const std::vector<CloudObject>& clouds, long min_area_px) {
+  std::map<long, int> count_of_area;
+  int total = 0;
+  for (const CloudObject& c : clouds)
+    if (!c.touches_border && c.area_px >= min_area_px) {
+      ++count_of_area[c.area_px];
+      ++total;
+    }
+  std::vector<double> a, n_larger;
+  int at_least = total;  // clouds with area >= the current one
+  for (const auto& [area, count] : count_of_area) {
+    a.push_back(static_cast<double>(area));
+    n_larger.push_back(static_cast<double>(at_least));
+    at_least -= count;
+  }
+  PowerLawFit fit = fit_power_law(a, n_larger);
+  fit.exponent = -fit.exponent;
+  return fit;
+}
+
+double periodic_autocorrelation_peak(const Field& f, double r_min, double r_max) {
+  const int w = f.width, h = f.height;
+  double mean = 0.0;
+  for (double v : f.v) mean += v;
+  mean /= static_cast<double>(std::max<std::size_t>(f.v.size(), 1));
+  double var = 0.0;
+  for (double v : f.v) var += (v - mean) * (v - mean);
+  var /= static_cast<double>(std::max<std::size_t>(f.v.size(), 1));
+  if (!(var > 1e-20)) return 0.0;
+  std::vector<double> d(f.v.size());
+  for (std::size_t i = 0; i < d.size(); ++i) d[i] = f.v[i] - mean;
+  const int R = static_cast<int>(std::floor(r_max));
+  // lags (dx, dy) with dy >= 0 (acf(-l) = acf(l)); dy = 0 only for dx > 0
+  std::map<int, std::vector<double>> ring;  // integer radius -> acf values
+  std::vector<std::pair<int, double>> lag_acf;
+  for (int dy = 0; dy <= std::min(R, h - 1); ++dy)
+    for (int dx = -std::min(R, w - 1); dx <= std::min(R, w - 1); ++dx) {
+      if (dy == 0 && dx <= 0) continue;
+      const double r = std::hypot(static_cast<double>(dx), static_cast<double>(dy));
+      if (r < r_min || r > r_max) continue;
+      double s = 0.0;
+      long n = 0;
+      for (int y = 0; y + dy < h; ++y) {
+        const double* row = &d[static_cast<std::size_t>(y) * w];
+        const double* row2 = &d[static_cast<std::size_t>(y + dy) * w];
+        for (int x = std::max(0, -dx); x < w && x + dx < w; ++x) s += row[x] * row2[x + dx];
+        n += std::max(0, w - std::abs(dx));
+      }
+      if (n == 0) continue;
+      const double acf = s / static_cast<double>(n) / var;
+      const int ri = static_cast<int>(std::lround(r));
+      ring[ri].push_back(acf);
+      lag_acf.emplace_back(ri, acf);
+    }
+  std::map<int, double> ring_median;
+  for (const auto& [r, v] : ring) ring_median[r] = median_of(v);
+  double peak = 0.0;
+  for (const auto& [r, acf] : lag_acf) peak = std::max(peak, acf - ring_median[r]);
+  return peak;
+}
+
+PowerLawFit row_energy_spectrum_slope(const Field& f, double pixel_m, double lambda_min_m, double lambda_max_m) {
+  const int w = f.width;
+  std::vector<double> power(static_cast<std::size_t>(w / 2 + 1), 0.0), window(static_cast<std::size_t>(w));
+  for (int x = 0; x < w; ++x) window[x] = 0.5 - 0.5 * std::cos(2.0 * std::numbers::pi * (x + 0.5) / w);
+  std::vector<double> row(static_cast<std::size_t>(w));
+  for (int y = 0; y < f.height; ++y) {
+    double mean = 0.0;
+    for (int x = 0; x < w; ++x) mean += f.at(x, y);
+    mean /= w;
+    for (int x = 0; x < w; ++x) row[x] = (f.at(x, y) - mean) * window[x];
+    for (int k = 1; k <= w / 2; ++k) {  // direct DFT: rows are short (<= a few hundred px)
+      std::complex<double> s = 0.0;
+      for (int x = 0; x < w; ++x) s += row[x] * std::polar(1.0, -2.0 * std::numbers::pi * k * x / w);
+      power[k] += std::norm(s);
+    }
+  }
+  std::vector<double> k_used, e_used;
+  for (int k = 1; k <= w / 2; ++k) {
+    const double lambda = w * pixel_m / k;
+    if (lambda < lambda_min_m || lambda > lambda_max_m) continue;
+    k_used.push_back(k);
+    e_used.push_back(power[k]);
+  }
+  return fit_power_law(k_used, e_used);
+}
+
+}  // namespace cloudsvc::reference

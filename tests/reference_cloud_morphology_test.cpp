@@ -1,0 +1,129 @@
+// Cloud morphology metrics (renderer/reference/cloud_morphology.h) on fields whose answer
+// is known: the perimeter-area dimension of smooth (D = 1) and space-filling (D = 2)
+// outlines, a power-law size distribution, a tiled vs a non-repeating field's
+// autocorrelation, and spectra of known slope.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <numbers>
+#include <vector>
+
+#include "renderer/reference/cloud_morphology.h"
+
+namespace cloudsvc::reference {
+namespace {
+
+Field blank(int w, int h) { return Field{w, h, std::vector<double>(static_cast<std::size_t>(w) * h, 0.0)}; }
+void fill_rect(Field& f, int x0, int y0, int w, int h, double v = 1.0) {
+  for (int y = y0; y < y0 + h; ++y)
+    for (int x = x0; x < x0 + w; ++x) f.v[static_cast<std::size_t>(y) * f.width + x] = v;
+}
+
+// A deterministic uniform number in [0, 1) from an index (SplitMix64).
+double uniform(std::uint64_t i) {
+  std::uint64_t z = i + 0x9e3779b97f4a7c15ULL;
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return static_cast<double>((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
+}
+
+TEST(CloudMorphology, CloudsAreFourConnectedWithEdgePerimeters) {
+  Field f = blank(20, 10);
+  fill_rect(f, 2, 2, 3, 3);   // 9 px, perimeter 12
+  fill_rect(f, 5, 5, 1, 1);   // touches the square only diagonally: a separate cloud of 1 px
+  fill_rect(f, 15, 0, 4, 2);  // touches the border
+  const std::vector<CloudObject> c = cloud_objects(f);
+  ASSERT_EQ(c.size(), 3u);
+  EXPECT_EQ(c[0].area_px, 8);  // scan order: the border cloud's first row comes first
+  EXPECT_EQ(c[0].perimeter_px, 12);
+  EXPECT_TRUE(c[0].touches_border);
+  EXPECT_EQ(c[1].area_px, 9);
+  EXPECT_EQ(c[1].perimeter_px, 12);
+  EXPECT_FALSE(c[1].touches_border);
+  EXPECT_EQ(c[2].area_px, 1);
+  EXPECT_EQ(c[2].perimeter_px, 4);
+}
+
+TEST(CloudMorphology, PerimeterAreaDimensionOfSmoothAndSpaceFillingOutlines) {
+  Field squares = blank(200, 60);
+  int x = 1;
+  for (int s : {4, 6, 9, 13, 18, 25, 30}) {
+    fill_rect(squares, x, 1, s, s);
+    x += s + 2;
+  }
+  const PowerLawFit smooth = perimeter_area_dimension(cloud_objects(squares));
+  EXPECT_EQ(smooth.n, 7);
+  EXPECT_NEAR(smooth.exponent, 1.0, 1e-9);  // P = 4 sqrt(A)
+
+  Field lines = blank(120, 40);
+  int y = 1;
+  for (int len : {10, 20, 40, 80, 110}) {  // 1 px wide: P = 2 A + 2 -> D -> 2
+    fill_rect(lines, 1, y, len, 1);
+    y += 3;
+  }
+  const PowerLawFit filling = perimeter_area_dimension(cloud_objects(lines));
+  EXPECT_EQ(filling.n, 5);
+  EXPECT_NEAR(filling.exponent, 2.0, 0.1);  // 1.93: the two end edges of each line (P = 2 A + 2)
+  EXPECT_GT(filling.r2, 0.99);
+
+  // clouds under the minimum area or on the border are left out
+  Field small = blank(30, 30);
+  fill_rect(small, 1, 1, 3, 3);      // 9 px < 10
+  fill_rect(small, 0, 10, 5, 5);     // on the border
+  EXPECT_EQ(perimeter_area_dimension(cloud_objects(small)).n, 0);
+  EXPECT_TRUE(std::isnan(perimeter_area_dimension(cloud_objects(small)).exponent));
+}
+
+TEST(CloudMorphology, PowerLawSizeDistributionIsRecovered) {
+  for (double b : {0.8, 1.5}) {
+    std::vector<CloudObject> clouds;
+    for (int i = 0; i < 4000; ++i) {  // A = A_min u^(-1/b): P(A' > A) = (A / A_min)^(-b)
+      CloudObject c;
+      c.area_px = static_cast<long>(std::floor(10.0 * std::pow(1.0 - uniform(i + 7919 * static_cast<int>(b * 10)), -1.0 / b)));
+      c.perimeter_px = 4;
+      clouds.push_back(c);
+    }
+    const PowerLawFit fit = cloud_size_exponent(clouds);
+    EXPECT_NEAR(fit.exponent, b, 0.12 * b) << b;
+  }
+}
+
+TEST(CloudMorphology, TiledFieldsShowAPeriodicPeakAndRandomOnesDoNot) {
+  const int n = 128;
+  Field tiled = blank(n, n), scattered = blank(n, n);
+  for (int ty = 0; ty < 16; ++ty)
+    for (int tx = 0; tx < 16; ++tx) fill_rect(tiled, tx * 8 + 2, ty * 8 + 3, 4, 3);  // period 8 px
+  for (int i = 0; i < 256; ++i) {  // the same blobs at random places
+    const int x0 = static_cast<int>(uniform(2 * i) * (n - 4)), y0 = static_cast<int>(uniform(2 * i + 1) * (n - 3));
+    fill_rect(scattered, x0, y0, 4, 3);
+  }
+  const double p_tiled = periodic_autocorrelation_peak(tiled, n / 16.0, n / 2.0);
+  const double p_scattered = periodic_autocorrelation_peak(scattered, n / 16.0, n / 2.0);
+  std::printf("periodic autocorrelation peak: tiled %.3f, scattered %.3f\n", p_tiled, p_scattered);
+  EXPECT_GT(p_tiled, 0.5);
+  EXPECT_LT(p_scattered, 0.15);
+  EXPECT_EQ(periodic_autocorrelation_peak(blank(32, 32), 2.0, 16.0), 0.0);  // constant: no structure
+}
+
+TEST(CloudMorphology, RowSpectrumSlopeIsRecovered) {
+  const int w = 256, h = 48;
+  for (double beta : {-5.0 / 3.0, -3.0}) {
+    Field f = blank(w, h);
+    for (int y = 0; y < h; ++y)
+      for (int k = 1; k < w / 2; ++k) {  // amplitude k^(beta / 2), random phase, periodic in the row
+        const double a = std::pow(k, beta / 2.0), phase = 2.0 * std::numbers::pi * uniform(static_cast<std::uint64_t>(y) * w + k);
+        for (int x = 0; x < w; ++x) f.v[static_cast<std::size_t>(y) * w + x] += a * std::cos(2.0 * std::numbers::pi * k * x / w + phase);
+      }
+    // pixels of 50 m: wavelengths 0.5-8 km are k = 1.6-25.6
+    const PowerLawFit fit = row_energy_spectrum_slope(f, 50.0, 500.0, 8000.0);
+    EXPECT_EQ(fit.n, 24);
+    // the Hann window leaks the strongest (lowest) wavenumbers into their neighbours, which
+    // steepens steep spectra a little (-3 comes out -3.18)
+    EXPECT_NEAR(fit.exponent, beta, beta < -2.0 ? 0.25 : 0.1) << beta;
+  }
+}
+
+}  // namespace
+}  // namespace cloudsvc::reference

@@ -39,7 +39,8 @@
 //                   [--ref-samples N (3: N x N sub-pixel rays per reference pixel; 1: the pixel centre)]
 //                   [--scenes core|random:SEED:N (core)]
 // Modes: --cost (bench/cost_command.h), --sequence (bench/sequence_command.h), --stability
-// (bench/stability_command.h), --views (bench/views_command.h), --truth (bench/truth_command.h).
+// (bench/stability_command.h), --views (bench/views_command.h), --truth (bench/truth_command.h),
+// --morphology (bench/morphology_command.h).
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 
@@ -65,6 +66,7 @@
 #include "bench/truth_command.h"
 #include "bench/stability_command.h"
 #include "bench/views_command.h"
+#include "bench/morphology_command.h"
 #include "renderer/atmosphere_luts.h"
 #include "renderer/cloud_renderer.h"
 #include "renderer/gl/egl_context.h"
@@ -580,6 +582,13 @@ int main(int argc, char** argv) {
     std::vector<char*> rest = {argv[0]};
     for (int i = 2; i < argc; ++i) rest.push_back(argv[i]);
     return cloudsvc::views_command::run(static_cast<int>(rest.size()), rest.data());
+  }
+  // `cloudbench --morphology ...`: the presets' cloud shapes against observations
+  // (bench/morphology_command.h).
+  if (argc > 1 && std::string(argv[1]) == "--morphology") {
+    std::vector<char*> rest = {argv[0]};
+    for (int i = 2; i < argc; ++i) rest.push_back(argv[i]);
+    return cloudsvc::morphology_command::run(static_cast<int>(rest.size()), rest.data());
   }
   const Options o = parse(argc, argv);
   fs::create_directories(o.out);

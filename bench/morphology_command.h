@@ -1,0 +1,187 @@
+// `cloudbench --morphology`: how the weather presets' clouds measure against observations
+// (issue 15). Every preset is rendered looking straight down from --altitude (default 20 km)
+// at three places (tropical Atlantic, Zurich, off Sydney; local late morning, square frames
+// of --size px, 60° field of view), held still for 17 frames (the default preset visits
+// every pixel in 16), and the metrics of renderer/reference/cloud_morphology.h are taken
+// on the last frame:
+//  - perimeter-area dimension D of the clouds (opacity > 0.5, 4-connected, >= 10 px, not
+//    touching the border), fitted over the clouds of all three views; observed 1.35
+//    (Lovejoy 1982);
+//  - cloud-size exponent b of N(>A) ∝ A^-b over the same clouds;
+//  - the strongest periodic autocorrelation peak of opacity over its ring's median (radii
+//    1/16 to 1/2 of the width), the largest of the three views; <= 0.1 for a field that
+//    does not repeat;
+//  - the slope of the luminance energy spectrum along rows over wavelengths 0.5-8 km at
+//    the lowest layer's middle (pixel size there from the camera's height above it),
+//    mean of the views; observed -5/3 for stratocumulus (Cahalan & Snider 1989).
+// Writes OUT/morphology.md (the table), OUT/morphology.csv and OUT/morphology_sheet.png (a
+// contact sheet: one row per preset, one column per place) and prints the table.
+//
+//   build/bin/cloudbench --morphology [--size 192] [--altitude 20000] [--quality default]
+//                        [--presets a,b,...] [--out bench-out]
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "geodesy/utc_time.h"
+#include "renderer/cloud_renderer.h"
+#include "renderer/gl/egl_context.h"
+#include "renderer/image_output.h"
+#include "renderer/quality_presets.h"
+#include "renderer/reference/cloud_morphology.h"
+#include "weather/presets.h"
+
+namespace cloudsvc::morphology_command {
+
+struct Place {
+  const char* name;
+  double lat_deg, lon_deg;
+  const char* time_utc;  // local late morning
+};
+inline const Place kPlaces[] = {{"tropical Atlantic", 5.0, -30.0, "2026-03-20T12:00:00Z"},
+                                {"Zurich", 47.4, 8.5, "2026-06-21T10:00:00Z"},
+                                {"off Sydney", -34.0, 152.0, "2026-12-21T01:00:00Z"}};
+
+struct Result {
+  std::string preset;
+  reference::PowerLawFit dimension, sizes;
+  double autocorrelation_peak = 0.0, spectrum_slope = 0.0;
+  int clouds = 0, spectrum_views = 0;
+  double cloud_fraction = 0.0;  // mean over the views of the fraction of pixels with opacity > 0.5
+};
+
+inline std::string fmt(const char* f, double v) {
+  if (!std::isfinite(v)) return "–";
+  char b[64];
+  std::snprintf(b, sizeof b, f, v);
+  return b;
+}
+
+inline int run(int argc, char** argv) {
+  CLI::App app{"Cloud morphology of the weather presets against observations (cloudbench --morphology)"};
+  int size = 192;
+  double altitude_m = 20000.0;
+  std::string quality = "default", presets_text, out = "bench-out";
+  app.add_option("--size", size, "square frame size, px")->check(CLI::Range(64, 512));
+  app.add_option("--altitude", altitude_m, "camera altitude above the ellipsoid, m")->check(CLI::Range(5000.0, 100000.0));
+  app.add_option("--quality", quality, "quality preset");
+  app.add_option("--presets", presets_text, "comma-separated weather presets (default: all)");
+  app.add_option("--out", out, "output directory");
+  CLI11_PARSE(app, argc, argv);
+  const auto q = quality_preset(quality);
+  if (!q) {
+    std::fprintf(stderr, "cloudbench --morphology: unknown or CPU-only quality preset %s\n", quality.c_str());
+    return 2;
+  }
+  std::vector<std::string> presets;
+  if (presets_text.empty()) presets = weather::preset_names();
+  std::stringstream ss(presets_text);
+  for (std::string name; std::getline(ss, name, ',');) presets.push_back(name);
+  for (const std::string& p : presets)
+    if (!weather::preset(p)) {
+      std::fprintf(stderr, "cloudbench --morphology: unknown weather preset %s\n", p.c_str());
+      return 2;
+    }
+  const std::filesystem::path dir = out;
+  std::filesystem::create_directories(dir);
+  constexpr int kFrames = 17;
+  constexpr double kFov = 60.0;
+  const int n_places = static_cast<int>(std::size(kPlaces));
+
+  gl::EglContext context;
+  CloudRenderer renderer;
+  FrameImage sheet;
+  sheet.width = size * n_places;
+  sheet.height = size * static_cast<int>(presets.size());
+  sheet.rgba.assign(static_cast<std::size_t>(sheet.width) * sheet.height * 4, 0.0f);
+  std::vector<Result> results;
+  for (std::size_t pi = 0; pi < presets.size(); ++pi) {
+    const weather::Weather w = *weather::preset(presets[pi]);
+    Result res;
+    res.preset = presets[pi];
+    std::vector<reference::CloudObject> clouds;
+    double slope_sum = 0.0;
+    for (int k = 0; k < n_places; ++k) {
+      const Place& pl = kPlaces[k];
+      ViewRequest v;
+      v.position = {pl.lat_deg, pl.lon_deg, altitude_m};
+      v.attitude = {0.0, -90.0, 0.0};
+      v.unix_time_s = *geo::parse_utc_iso8601(pl.time_utc);
+      v.width = v.height = size;
+      v.fov_deg = kFov;
+      renderer.set_weather(w);
+      v.reset_history = true;
+      FrameImage img;
+      for (int f = 0; f < kFrames; ++f) {
+        v.frame_index = static_cast<std::uint32_t>(f);
+        img = renderer.render(v, *q);
+        v.reset_history = false;
+      }
+      if (img.stats.nonfinite_pixels) std::fprintf(stderr, "cloudbench --morphology: non-finite pixels\n");
+      const reference::Field opacity = reference::opacity_field(img);
+      for (const reference::CloudObject& c : reference::cloud_objects(opacity)) clouds.push_back(c);
+      long cloudy = 0;
+      for (double a : opacity.v) cloudy += a > 0.5 ? 1 : 0;
+      res.cloud_fraction += static_cast<double>(cloudy) / static_cast<double>(opacity.v.size()) / n_places;
+      res.autocorrelation_peak =
+          std::max(res.autocorrelation_peak, reference::periodic_autocorrelation_peak(opacity, size / 16.0, size / 2.0));
+      if (!w.layers.empty()) {
+        const double h_above = altitude_m - 0.5 * (w.layers.front().base_m + w.layers.front().top_m);
+        const double pixel_m = 2.0 * h_above * std::tan(0.5 * kFov * std::numbers::pi / 180.0) / size;
+        const reference::PowerLawFit s =
+            reference::row_energy_spectrum_slope(reference::luminance_field(img), pixel_m, 500.0, 8000.0);
+        if (std::isfinite(s.exponent)) {
+          slope_sum += s.exponent;
+          ++res.spectrum_views;
+        }
+      }
+      for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x)
+          for (int c = 0; c < 4; ++c)
+            sheet.rgba[((static_cast<std::size_t>(pi) * size + y) * sheet.width + k * size + x) * 4 + c] =
+                img.rgba[(static_cast<std::size_t>(y) * size + x) * 4 + c];
+    }
+    res.dimension = reference::perimeter_area_dimension(clouds);
+    res.sizes = reference::cloud_size_exponent(clouds);
+    res.clouds = res.dimension.n;
+    res.spectrum_slope = res.spectrum_views ? slope_sum / res.spectrum_views : std::nan("");
+    results.push_back(res);
+    std::printf("%-22s D %s (%d clouds), b %s, autocorrelation peak %.3f, spectrum slope %s\n", res.preset.c_str(),
+                fmt("%.3f", res.dimension.exponent).c_str(), res.clouds, fmt("%.2f", res.sizes.exponent).c_str(),
+                res.autocorrelation_peak, fmt("%.2f", res.spectrum_slope).c_str());
+    std::fflush(stdout);
+  }
+
+  std::ostringstream md;
+  md << "Command: `cloudbench --morphology --size " << size << " --altitude " << altitude_m << " --quality " << quality
+     << "`; nadir views at " << n_places << " places, the last of " << kFrames << " frames.\n\n"
+     << "| weather preset | cloud px % (opacity > 0.5) | clouds (>= 10 px, inside) | perimeter-area D (obs. 1.35) | "
+        "fit r² | size exponent b | periodic autocorrelation peak (<= 0.1) | spectrum slope 0.5-8 km (obs. -5/3) |\n"
+     << "|---|---:|---:|---:|---:|---:|---:|---:|\n";
+  std::ofstream csv(dir / "morphology.csv");
+  csv << "preset,cloud_fraction,clouds,dimension,dimension_r2,size_exponent,autocorrelation_peak,spectrum_slope\n";
+  for (const Result& r : results) {
+    md << "| " << r.preset << " | " << fmt("%.1f", 100.0 * r.cloud_fraction) << " | " << r.clouds << " | "
+       << fmt("%.3f", r.dimension.exponent) << " | " << fmt("%.3f", r.dimension.r2) << " | "
+       << fmt("%.2f", r.sizes.exponent) << " | " << fmt("%.3f", r.autocorrelation_peak) << " | "
+       << fmt("%.2f", r.spectrum_slope) << " |\n";
+    csv << r.preset << ',' << r.cloud_fraction << ',' << r.clouds << ',' << r.dimension.exponent << ','
+        << r.dimension.r2 << ',' << r.sizes.exponent << ',' << r.autocorrelation_peak << ',' << r.spectrum_slope
+        << '\n';
+  }
+  std::ofstream(dir / "morphology.md") << md.str();
+  write_image((dir / "morphology_sheet.png").string(), sheet);
+  std::printf("\n%s\ncloudbench --morphology -> %s\n", md.str().c_str(), dir.string().c_str());
+  return 0;
+}
+
+}  // namespace cloudsvc::morphology_command

@@ -13,7 +13,10 @@
 //    does not repeat;
 //  - the slope of the luminance energy spectrum along rows over wavelengths 0.5-8 km at
 //    the lowest layer's middle (pixel size there from the camera's height above it),
-//    mean of the views; observed -5/3 for stratocumulus (Cahalan & Snider 1989).
+//    mean of the views; observed -5/3 for stratocumulus (Cahalan & Snider 1989);
+//  - for cumulonimbus layers, from the CPU reference's density field under the three
+//    places (60 x 60 km at 250 m): the largest cloud fraction in the layer's top fifth over
+//    that at mid-height (reference::anvil_ratio; >= 2 with anvils).
 // Writes OUT/morphology.md (the table), OUT/morphology.csv and OUT/morphology_sheet.png (a
 // contact sheet: one row per preset, one column per place) and prints the table.
 //
@@ -38,6 +41,7 @@
 #include "renderer/image_output.h"
 #include "renderer/quality_presets.h"
 #include "renderer/reference/cloud_morphology.h"
+#include "renderer/reference/reference_inputs.h"
 #include "weather/presets.h"
 
 namespace cloudsvc::morphology_command {
@@ -57,6 +61,8 @@ struct Result {
   double autocorrelation_peak = 0.0, spectrum_slope = 0.0;
   int clouds = 0, spectrum_views = 0;
   double cloud_fraction = 0.0;  // mean over the views of the fraction of pixels with opacity > 0.5
+  double anvil_top = 0.0, anvil_mid = 0.0;  // cumulonimbus layers: cloud fractions summed over the places
+  bool has_cumulonimbus = false;
 };
 
 inline std::string fmt(const char* f, double v) {
@@ -64,6 +70,11 @@ inline std::string fmt(const char* f, double v) {
   char b[64];
   std::snprintf(b, sizeof b, f, v);
   return b;
+}
+
+// top / mid cloud fraction of the cumulonimbus layers over the places; NaN without one
+inline double anvil_of(const Result& r) {
+  return r.has_cumulonimbus && r.anvil_mid > 0.0 ? r.anvil_top / r.anvil_mid : std::nan("");
 }
 
 inline int run(int argc, char** argv) {
@@ -95,6 +106,9 @@ inline int run(int argc, char** argv) {
   std::filesystem::create_directories(dir);
   constexpr int kFrames = 17;
   constexpr double kFov = 60.0;
+  // anvil ratio of cumulonimbus layers: the density field under each place on a grid of
+  // 60 x 60 km at 250 m; cloud = extinction above 5 % of the layer's largest
+  constexpr double kAnvilHalfWidthM = 30000.0, kAnvilSpacingM = 250.0;
   const int n_places = static_cast<int>(std::size(kPlaces));
 
   gl::EglContext context;
@@ -144,6 +158,18 @@ inline int run(int argc, char** argv) {
           ++res.spectrum_views;
         }
       }
+      for (std::size_t li = 0; li < w.layers.size(); ++li) {
+        if (w.layers[li].type != weather::CloudType::Cumulonimbus) continue;
+        const reference::ReferenceScene scene = reference::make_reference_scene(v, w);
+        const auto inputs = reference::reference_inputs(reference::InputConfig{}, w.map_seed);
+        const reference::CloudField field(scene, *inputs);
+        const reference::ReferenceLayer& L = scene.layers[li];
+        const reference::AnvilRatio a = reference::anvil_ratio(scene, field, static_cast<int>(li), kAnvilHalfWidthM,
+                                                               kAnvilSpacingM, 0.05 * L.density_scale * L.sigma_max_per_m);
+        res.anvil_top += a.top_fraction;
+        res.anvil_mid += a.mid_fraction;
+        res.has_cumulonimbus = true;
+      }
       for (int y = 0; y < size; ++y)
         for (int x = 0; x < size; ++x)
           for (int c = 0; c < 4; ++c)
@@ -155,9 +181,10 @@ inline int run(int argc, char** argv) {
     res.clouds = res.dimension.n;
     res.spectrum_slope = res.spectrum_views ? slope_sum / res.spectrum_views : std::nan("");
     results.push_back(res);
-    std::printf("%-22s D %s (%d clouds), b %s, autocorrelation peak %.3f, spectrum slope %s\n", res.preset.c_str(),
-                fmt("%.3f", res.dimension.exponent).c_str(), res.clouds, fmt("%.2f", res.sizes.exponent).c_str(),
-                res.autocorrelation_peak, fmt("%.2f", res.spectrum_slope).c_str());
+    std::printf("%-22s D %s (%d clouds), b %s, autocorrelation peak %.3f, spectrum slope %s, anvil ratio %s\n",
+                res.preset.c_str(), fmt("%.3f", res.dimension.exponent).c_str(), res.clouds,
+                fmt("%.2f", res.sizes.exponent).c_str(), res.autocorrelation_peak, fmt("%.2f", res.spectrum_slope).c_str(),
+                fmt("%.2f", anvil_of(res)).c_str());
     std::fflush(stdout);
   }
 
@@ -165,18 +192,20 @@ inline int run(int argc, char** argv) {
   md << "Command: `cloudbench --morphology --size " << size << " --altitude " << altitude_m << " --quality " << quality
      << "`; nadir views at " << n_places << " places, the last of " << kFrames << " frames.\n\n"
      << "| weather preset | cloud px % (opacity > 0.5) | clouds (>= 10 px, inside) | perimeter-area D (obs. 1.35) | "
-        "fit r² | size exponent b | periodic autocorrelation peak (<= 0.1) | spectrum slope 0.5-8 km (obs. -5/3) |\n"
-     << "|---|---:|---:|---:|---:|---:|---:|---:|\n";
+        "fit r² | size exponent b | periodic autocorrelation peak (<= 0.1) | spectrum slope 0.5-8 km (obs. -5/3) | "
+        "Cb anvil ratio (>= 2) |\n"
+     << "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   std::ofstream csv(dir / "morphology.csv");
-  csv << "preset,cloud_fraction,clouds,dimension,dimension_r2,size_exponent,autocorrelation_peak,spectrum_slope\n";
+  csv << "preset,cloud_fraction,clouds,dimension,dimension_r2,size_exponent,autocorrelation_peak,spectrum_slope,"
+         "anvil_ratio\n";
   for (const Result& r : results) {
     md << "| " << r.preset << " | " << fmt("%.1f", 100.0 * r.cloud_fraction) << " | " << r.clouds << " | "
        << fmt("%.3f", r.dimension.exponent) << " | " << fmt("%.3f", r.dimension.r2) << " | "
        << fmt("%.2f", r.sizes.exponent) << " | " << fmt("%.3f", r.autocorrelation_peak) << " | "
-       << fmt("%.2f", r.spectrum_slope) << " |\n";
+       << fmt("%.2f", r.spectrum_slope) << " | " << fmt("%.2f", anvil_of(r)) << " |\n";
     csv << r.preset << ',' << r.cloud_fraction << ',' << r.clouds << ',' << r.dimension.exponent << ','
-        << r.dimension.r2 << ',' << r.sizes.exponent << ',' << r.autocorrelation_peak << ',' << r.spectrum_slope
-        << '\n';
+        << r.dimension.r2 << ',' << r.sizes.exponent << ',' << r.autocorrelation_peak << ',' << r.spectrum_slope << ','
+        << anvil_of(r) << '\n';
   }
   std::ofstream(dir / "morphology.md") << md.str();
   write_image((dir / "morphology_sheet.png").string(), sheet);

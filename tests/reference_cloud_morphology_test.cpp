@@ -10,7 +10,10 @@
 #include <numbers>
 #include <vector>
 
+#include "geodesy/utc_time.h"
 #include "renderer/reference/cloud_morphology.h"
+#include "renderer/reference/reference_inputs.h"
+#include "weather/cloud_layer.h"
 
 namespace cloudsvc::reference {
 namespace {
@@ -122,6 +125,40 @@ TEST(CloudMorphology, RowSpectrumSlopeIsRecovered) {
     // the Hann window leaks the strongest (lowest) wavenumbers into their neighbours, which
     // steepens steep spectra a little (-3 comes out -3.18)
     EXPECT_NEAR(fit.exponent, beta, beta < -2.0 ? 0.25 : 0.1) << beta;
+  }
+}
+
+// The cloud fraction by altitude, from the density field: a cumulus layer tapers towards
+// its top (its height profile's top ramp), so its "anvil ratio" is well below 1; an
+// overcast stratus sheet is cloud at every height (ratio 1).
+TEST(CloudMorphology, AnvilRatioFollowsTheLayersVerticalProfile) {
+  struct Case {
+    weather::CloudType type;
+    double coverage, lo, hi;
+  };
+  for (const Case& c : {Case{weather::CloudType::Cumulus, 0.5, 0.0, 0.8}, Case{weather::CloudType::Stratus, 1.0, 0.95, 1.05}}) {
+    weather::Weather w;
+    weather::CloudLayer l = weather::default_layer(c.type);
+    l.base_m = 1000.0;
+    l.top_m = 2500.0;
+    l.coverage = c.coverage;
+    w.layers.push_back(l);
+    w.map_seed = 11;
+    ViewRequest v;
+    v.position = {47.4, 8.5, 8000.0};
+    v.attitude = {0.0, -90.0, 0.0};
+    v.unix_time_s = *geo::parse_utc_iso8601("2026-06-21T10:00:00Z");
+    v.width = v.height = 64;
+    const ReferenceScene scene = make_reference_scene(v, w);
+    const auto inputs = reference_inputs(InputConfig{}, w.map_seed);
+    const CloudField field(scene, *inputs);
+    const double sigma_min = 0.05 * scene.layers[0].density_scale * scene.layers[0].sigma_max_per_m;
+    const AnvilRatio a = anvil_ratio(scene, field, 0, 10000.0, 250.0, sigma_min);
+    std::printf("type %d: cloud fraction at mid-height %.3f, top fifth %.3f, ratio %.2f\n", static_cast<int>(c.type),
+                a.mid_fraction, a.top_fraction, a.ratio);
+    EXPECT_GT(a.mid_fraction, 0.1);
+    EXPECT_GE(a.ratio, c.lo);
+    EXPECT_LE(a.ratio, c.hi);
   }
 }
 

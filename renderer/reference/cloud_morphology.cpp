@@ -190,4 +190,38 @@ PowerLawFit row_energy_spectrum_slope(const Field& f, double pixel_m, double lam
   return fit_power_law(k_used, e_used);
 }
 
+double horizontal_cloud_fraction(const ReferenceScene& scene, const CloudField& field, int li, double alt_m,
+                                 double half_width_m, double spacing_m, double sigma_min_per_m) {
+  const int n = std::max(1, static_cast<int>(std::floor(2.0 * half_width_m / spacing_m)));
+  std::uint64_t evals = 0;
+  long cloudy = 0, total = 0;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      // local frame: x east, y north, z up at the camera; the point lifted to alt_m along
+      // the shell's up (one correction: the shell is locally flat at these spacings)
+      const glm::dvec3 p(-half_width_m + (i + 0.5) * spacing_m, -half_width_m + (j + 0.5) * spacing_m, 0.0);
+      glm::dvec3 q = p + (alt_m - scene.shell.altitude_of(p)) * scene.shell.up_at(p);
+      q += (alt_m - scene.shell.altitude_of(q)) * scene.shell.up_at(q);
+      cloudy += field.sample(li, q, scene.shell.altitude_of(q), true, evals).sigma_t > sigma_min_per_m ? 1 : 0;
+      ++total;
+    }
+  return static_cast<double>(cloudy) / static_cast<double>(total);
+}
+
+AnvilRatio anvil_ratio(const ReferenceScene& scene, const CloudField& field, int li, double half_width_m,
+                       double spacing_m, double sigma_min_per_m) {
+  const ReferenceLayer& L = scene.layers[static_cast<std::size_t>(li)];
+  const double depth = L.top_m - L.base_m;
+  AnvilRatio a;
+  a.mid_fraction =
+      horizontal_cloud_fraction(scene, field, li, L.base_m + 0.5 * depth, half_width_m, spacing_m, sigma_min_per_m);
+  for (int k = 0; k < 5; ++k) {  // 0.81, 0.85, ..., 0.97 of the depth
+    const double alt = L.base_m + (0.81 + 0.04 * k) * depth;
+    a.top_fraction =
+        std::max(a.top_fraction, horizontal_cloud_fraction(scene, field, li, alt, half_width_m, spacing_m, sigma_min_per_m));
+  }
+  a.ratio = a.mid_fraction > 0.0 ? a.top_fraction / a.mid_fraction : 0.0;
+  return a;
+}
+
 }  // namespace cloudsvc::reference

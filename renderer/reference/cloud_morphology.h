@@ -13,12 +13,18 @@
 //    one up to 1;
 //  - the slope β of the energy spectrum along the rows, E(k) ∝ k^β over a band of
 //    wavelengths (Cahalan & Snider 1989: β ≈ -5/3 for marine stratocumulus radiance over
-//    0.5 to ~10 km).
+//    0.5 to ~10 km);
+//  - from the density field itself (the CPU reference's CloudField): the fraction of a
+//    horizontal area that is cloud at each altitude of a layer, and the anvil ratio of a
+//    cumulonimbus layer = the largest fraction in the layer's top fifth over the fraction
+//    at mid-height (>= 2 for anvils spreading under the tropopause; <= 1 for pillars).
 #pragma once
 
 #include <vector>
 
 #include "renderer/api/frame_image.h"
+#include "renderer/reference/cloud_field.h"
+#include "renderer/reference/reference_scene.h"
 
 namespace cloudsvc::reference {
 
@@ -68,5 +74,20 @@ double periodic_autocorrelation_peak(const Field& f, double r_min, double r_max)
 // over the rows, fitted over the wavenumbers whose wavelength (width * pixel_m / k) lies in
 // [lambda_min_m, lambda_max_m].
 PowerLawFit row_energy_spectrum_slope(const Field& f, double pixel_m, double lambda_min_m, double lambda_max_m);
+
+// Fraction of the points of a square horizontal grid (side 2 half_width_m, spacing_m,
+// centred under the scene's camera) at altitude alt_m above the shell sphere where layer
+// li's extinction (detail noise included) exceeds sigma_min_per_m.
+double horizontal_cloud_fraction(const ReferenceScene& scene, const CloudField& field, int li, double alt_m,
+                                 double half_width_m, double spacing_m, double sigma_min_per_m);
+
+struct AnvilRatio {
+  double top_fraction = 0.0;  // largest cloud fraction at the altitudes of the top fifth
+  double mid_fraction = 0.0;  // cloud fraction at mid-height
+  double ratio = 0.0;         // top / mid (0 when mid is 0)
+};
+// Over layer li, sampling 5 altitudes across its top fifth and one at mid-height.
+AnvilRatio anvil_ratio(const ReferenceScene& scene, const CloudField& field, int li, double half_width_m,
+                       double spacing_m, double sigma_min_per_m);
 
 }  // namespace cloudsvc::reference

@@ -18,7 +18,8 @@
 //    places (60 x 60 km at 250 m): the largest cloud fraction in the layer's top fifth over
 //    that at mid-height (reference::anvil_ratio; >= 2 with anvils).
 // Writes OUT/morphology.md (the table), OUT/morphology.csv and OUT/morphology_sheet.png (a
-// contact sheet: one row per preset, one column per place) and prints the table.
+// contact sheet: one row per preset, one column per place, and a last column seen from
+// 1 km at Zurich looking east 3° above the horizon) and prints the table.
 //
 //   build/bin/cloudbench --morphology [--size 192] [--altitude 20000] [--quality default]
 //                        [--presets a,b,...] [--out bench-out]
@@ -72,6 +73,33 @@ inline std::string fmt(const char* f, double v) {
   return b;
 }
 
+constexpr int kFrames = 17;              // still frames per view; the last is measured
+constexpr double kFov = 60.0;            // degrees, square frames
+constexpr double kSideAltitudeM = 1000.0;  // the contact sheet's side views
+
+// The last of kFrames frames of the still view v of weather w (a fresh history).
+inline FrameImage still_view(CloudRenderer& renderer, const weather::Weather& w, ViewRequest v, const RenderQuality& q) {
+  renderer.set_weather(w);
+  v.reset_history = true;
+  FrameImage img;
+  for (int f = 0; f < kFrames; ++f) {
+    v.frame_index = static_cast<std::uint32_t>(f);
+    img = renderer.render(v, q);
+    v.reset_history = false;
+  }
+  if (img.stats.nonfinite_pixels) std::fprintf(stderr, "cloudbench --morphology: non-finite pixels\n");
+  return img;
+}
+
+// Copies img into sheet with its top-left corner at (x0, y0).
+inline void paste(FrameImage& sheet, const FrameImage& img, int x0, int y0) {
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x)
+      for (int c = 0; c < 4; ++c)
+        sheet.rgba[((static_cast<std::size_t>(y0) + y) * sheet.width + x0 + x) * 4 + c] =
+            img.rgba[(static_cast<std::size_t>(y) * img.width + x) * 4 + c];
+}
+
 // top / mid cloud fraction of the cumulonimbus layers over the places; NaN without one
 inline double anvil_of(const Result& r) {
   return r.has_cumulonimbus && r.anvil_mid > 0.0 ? r.anvil_top / r.anvil_mid : std::nan("");
@@ -104,8 +132,6 @@ inline int run(int argc, char** argv) {
     }
   const std::filesystem::path dir = out;
   std::filesystem::create_directories(dir);
-  constexpr int kFrames = 17;
-  constexpr double kFov = 60.0;
   // anvil ratio of cumulonimbus layers: the density field under each place on a grid of
   // 60 x 60 km at 250 m; cloud = extinction above 5 % of the layer's largest
   constexpr double kAnvilHalfWidthM = 30000.0, kAnvilSpacingM = 250.0;
@@ -114,7 +140,7 @@ inline int run(int argc, char** argv) {
   gl::EglContext context;
   CloudRenderer renderer;
   FrameImage sheet;
-  sheet.width = size * n_places;
+  sheet.width = size * (n_places + 1);
   sheet.height = size * static_cast<int>(presets.size());
   sheet.rgba.assign(static_cast<std::size_t>(sheet.width) * sheet.height * 4, 0.0f);
   std::vector<Result> results;
@@ -132,15 +158,7 @@ inline int run(int argc, char** argv) {
       v.unix_time_s = *geo::parse_utc_iso8601(pl.time_utc);
       v.width = v.height = size;
       v.fov_deg = kFov;
-      renderer.set_weather(w);
-      v.reset_history = true;
-      FrameImage img;
-      for (int f = 0; f < kFrames; ++f) {
-        v.frame_index = static_cast<std::uint32_t>(f);
-        img = renderer.render(v, *q);
-        v.reset_history = false;
-      }
-      if (img.stats.nonfinite_pixels) std::fprintf(stderr, "cloudbench --morphology: non-finite pixels\n");
+      const FrameImage img = still_view(renderer, w, v, *q);
       const reference::Field opacity = reference::opacity_field(img);
       for (const reference::CloudObject& c : reference::cloud_objects(opacity)) clouds.push_back(c);
       long cloudy = 0;
@@ -170,11 +188,16 @@ inline int run(int argc, char** argv) {
         res.anvil_mid += a.mid_fraction;
         res.has_cumulonimbus = true;
       }
-      for (int y = 0; y < size; ++y)
-        for (int x = 0; x < size; ++x)
-          for (int c = 0; c < 4; ++c)
-            sheet.rgba[((static_cast<std::size_t>(pi) * size + y) * sheet.width + k * size + x) * 4 + c] =
-                img.rgba[(static_cast<std::size_t>(y) * size + x) * 4 + c];
+      paste(sheet, img, k * size, static_cast<int>(pi) * size);
+    }
+    {  // the side view: from 1 km at the first place with clouds in the sheet, 3° above the horizon
+      ViewRequest v;
+      v.position = {kPlaces[1].lat_deg, kPlaces[1].lon_deg, kSideAltitudeM};
+      v.attitude = {90.0, 3.0, 0.0};
+      v.unix_time_s = *geo::parse_utc_iso8601(kPlaces[1].time_utc);
+      v.width = v.height = size;
+      v.fov_deg = kFov;
+      paste(sheet, still_view(renderer, w, v, *q), n_places * size, static_cast<int>(pi) * size);
     }
     res.dimension = reference::perimeter_area_dimension(clouds);
     res.sizes = reference::cloud_size_exponent(clouds);

@@ -21,8 +21,12 @@
 // contact sheet: one row per preset, one column per place, and a last column seen from
 // 1 km at Zurich looking east 3° above the horizon) and prints the table.
 //
+// --reference-size N adds the Zurich view rendered by the CPU reference and by the GPU at
+// N x N, with both images' cloud fraction, cloud count, D and autocorrelation peak
+// (OUT/morphology_reference.csv and a second table).
+//
 //   build/bin/cloudbench --morphology [--size 192] [--altitude 20000] [--quality default]
-//                        [--presets a,b,...] [--out bench-out]
+//                        [--presets a,b,...] [--reference-size 0] [--out bench-out]
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -43,6 +47,7 @@
 #include "renderer/quality_presets.h"
 #include "renderer/reference/cloud_morphology.h"
 #include "renderer/reference/reference_inputs.h"
+#include "renderer/reference/reference_renderer.h"
 #include "weather/presets.h"
 
 namespace cloudsvc::morphology_command {
@@ -100,6 +105,24 @@ inline void paste(FrameImage& sheet, const FrameImage& img, int x0, int y0) {
             img.rgba[(static_cast<std::size_t>(y) * img.width + x) * 4 + c];
 }
 
+// The image metrics of one frame (for the CPU reference vs GPU comparison).
+struct FrameMorphology {
+  double cloud_fraction = 0.0, dimension = 0.0, autocorrelation_peak = 0.0;
+  int clouds = 0;
+};
+inline FrameMorphology frame_morphology(const FrameImage& img) {
+  const reference::Field opacity = reference::opacity_field(img);
+  FrameMorphology m;
+  long cloudy = 0;
+  for (double a : opacity.v) cloudy += a > 0.5 ? 1 : 0;
+  m.cloud_fraction = static_cast<double>(cloudy) / static_cast<double>(opacity.v.size());
+  const reference::PowerLawFit d = reference::perimeter_area_dimension(reference::cloud_objects(opacity));
+  m.dimension = d.exponent;
+  m.clouds = d.n;
+  m.autocorrelation_peak = reference::periodic_autocorrelation_peak(opacity, img.width / 16.0, img.width / 2.0);
+  return m;
+}
+
 // top / mid cloud fraction of the cumulonimbus layers over the places; NaN without one
 inline double anvil_of(const Result& r) {
   return r.has_cumulonimbus && r.anvil_mid > 0.0 ? r.anvil_top / r.anvil_mid : std::nan("");
@@ -114,6 +137,11 @@ inline int run(int argc, char** argv) {
   app.add_option("--altitude", altitude_m, "camera altitude above the ellipsoid, m")->check(CLI::Range(5000.0, 100000.0));
   app.add_option("--quality", quality, "quality preset");
   app.add_option("--presets", presets_text, "comma-separated weather presets (default: all)");
+  int reference_size = 0;
+  app.add_option("--reference-size", reference_size,
+                 "also render the Zurich view with the CPU reference and the GPU at this square size and compare "
+                 "their metrics (0: not)")
+      ->check(CLI::Range(0, 256));
   app.add_option("--out", out, "output directory");
   CLI11_PARSE(app, argc, argv);
   const auto q = quality_preset(quality);
@@ -229,6 +257,37 @@ inline int run(int argc, char** argv) {
     csv << r.preset << ',' << r.cloud_fraction << ',' << r.clouds << ',' << r.dimension.exponent << ','
         << r.dimension.r2 << ',' << r.sizes.exponent << ',' << r.autocorrelation_peak << ',' << r.spectrum_slope << ','
         << anvil_of(r) << '\n';
+  }
+  if (reference_size > 0) {
+    // the same view on the CPU reference (its own march and light; docs/REFERENCE.md) and
+    // the GPU: the clouds should be the same clouds
+    md << "\nCPU reference vs GPU (" << quality << "), Zurich from " << altitude_m << " m straight down, "
+       << reference_size << " px:\n\n| weather preset | cloud px % reference / GPU | clouds reference / GPU | "
+       << "D reference / GPU | periodic autocorrelation peak reference / GPU |\n|---|---:|---:|---:|---:|\n";
+    std::ofstream rcsv(dir / "morphology_reference.csv");
+    rcsv << "preset,cloud_fraction_reference,cloud_fraction_gpu,clouds_reference,clouds_gpu,dimension_reference,"
+            "dimension_gpu,autocorrelation_peak_reference,autocorrelation_peak_gpu\n";
+    for (const std::string& name : presets) {
+      const weather::Weather w = *weather::preset(name);
+      if (w.layers.empty()) continue;
+      ViewRequest v;
+      v.position = {kPlaces[1].lat_deg, kPlaces[1].lon_deg, altitude_m};
+      v.attitude = {0.0, -90.0, 0.0};
+      v.unix_time_s = *geo::parse_utc_iso8601(kPlaces[1].time_utc);
+      v.width = v.height = reference_size;
+      v.fov_deg = kFov;
+      const FrameMorphology g = frame_morphology(still_view(renderer, w, v, *q));
+      const FrameMorphology r = frame_morphology(reference::render_reference(v, w, reference::ReferenceSettings{}));
+      md << "| " << name << " | " << fmt("%.1f", 100.0 * r.cloud_fraction) << " / " << fmt("%.1f", 100.0 * g.cloud_fraction)
+         << " | " << r.clouds << " / " << g.clouds << " | " << fmt("%.3f", r.dimension) << " / " << fmt("%.3f", g.dimension)
+         << " | " << fmt("%.3f", r.autocorrelation_peak) << " / " << fmt("%.3f", g.autocorrelation_peak) << " |\n";
+      rcsv << name << ',' << r.cloud_fraction << ',' << g.cloud_fraction << ',' << r.clouds << ',' << g.clouds << ','
+           << r.dimension << ',' << g.dimension << ',' << r.autocorrelation_peak << ',' << g.autocorrelation_peak << '\n';
+      std::printf("%-22s reference vs GPU: cloud %.1f / %.1f %%, D %s / %s, autocorrelation %.3f / %.3f\n", name.c_str(),
+                  100.0 * r.cloud_fraction, 100.0 * g.cloud_fraction, fmt("%.3f", r.dimension).c_str(),
+                  fmt("%.3f", g.dimension).c_str(), r.autocorrelation_peak, g.autocorrelation_peak);
+      std::fflush(stdout);
+    }
   }
   std::ofstream(dir / "morphology.md") << md.str();
   write_image((dir / "morphology_sheet.png").string(), sheet);

@@ -31,6 +31,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -113,9 +114,7 @@ struct FrameMorphology {
 inline FrameMorphology frame_morphology(const FrameImage& img) {
   const reference::Field opacity = reference::opacity_field(img);
   FrameMorphology m;
-  long cloudy = 0;
-  for (double a : opacity.v) cloudy += a > 0.5 ? 1 : 0;
-  m.cloud_fraction = static_cast<double>(cloudy) / static_cast<double>(opacity.v.size());
+  m.cloud_fraction = reference::cloud_fraction(opacity);
   const reference::PowerLawFit d = reference::perimeter_area_dimension(reference::cloud_objects(opacity));
   m.dimension = d.exponent;
   m.clouds = d.n;
@@ -189,9 +188,7 @@ inline int run(int argc, char** argv) {
       const FrameImage img = still_view(renderer, w, v, *q);
       const reference::Field opacity = reference::opacity_field(img);
       for (const reference::CloudObject& c : reference::cloud_objects(opacity)) clouds.push_back(c);
-      long cloudy = 0;
-      for (double a : opacity.v) cloudy += a > 0.5 ? 1 : 0;
-      res.cloud_fraction += static_cast<double>(cloudy) / static_cast<double>(opacity.v.size()) / n_places;
+      res.cloud_fraction += reference::cloud_fraction(opacity) / n_places;
       res.autocorrelation_peak =
           std::max(res.autocorrelation_peak, reference::periodic_autocorrelation_peak(opacity, size / 16.0, size / 2.0));
       if (!w.layers.empty()) {
@@ -204,10 +201,13 @@ inline int run(int argc, char** argv) {
           ++res.spectrum_views;
         }
       }
-      for (std::size_t li = 0; li < w.layers.size(); ++li) {
+      const bool has_cb = std::any_of(w.layers.begin(), w.layers.end(), [](const weather::CloudLayer& l) {
+        return l.type == weather::CloudType::Cumulonimbus;
+      });
+      const reference::ReferenceScene scene = has_cb ? reference::make_reference_scene(v, w) : reference::ReferenceScene{};
+      const auto inputs = has_cb ? reference::reference_inputs(reference::InputConfig{}, w.map_seed) : nullptr;
+      for (std::size_t li = 0; li < w.layers.size() && has_cb; ++li) {
         if (w.layers[li].type != weather::CloudType::Cumulonimbus) continue;
-        const reference::ReferenceScene scene = reference::make_reference_scene(v, w);
-        const auto inputs = reference::reference_inputs(reference::InputConfig{}, w.map_seed);
         const reference::CloudField field(scene, *inputs);
         const reference::ReferenceLayer& L = scene.layers[li];
         const reference::AnvilRatio a = reference::anvil_ratio(scene, field, static_cast<int>(li), kAnvilHalfWidthM,

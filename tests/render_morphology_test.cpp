@@ -18,12 +18,6 @@
 namespace cloudsvc::test {
 namespace {
 
-double cloud_fraction(const reference::Field& opacity) {
-  long cloudy = 0;
-  for (double a : opacity.v) cloudy += a > 0.5 ? 1 : 0;
-  return static_cast<double>(cloudy) / static_cast<double>(opacity.v.size());
-}
-
 TEST(Morphology, CpuReferenceAndGpuSeeTheSameClouds) {
   for (const char* preset : {"scattered-cumulus", "stratocumulus-deck"}) {
     const weather::Weather w = *weather::preset(preset);
@@ -39,7 +33,7 @@ TEST(Morphology, CpuReferenceAndGpuSeeTheSameClouds) {
     }
     const FrameImage ref = reference::render_reference(v, w, reference::ReferenceSettings{});
     const reference::Field og = reference::opacity_field(gpu), orf = reference::opacity_field(ref);
-    const double cg = cloud_fraction(og), cr = cloud_fraction(orf);
+    const double cg = reference::cloud_fraction(og), cr = reference::cloud_fraction(orf);
     const double ag = reference::periodic_autocorrelation_peak(og, 4.0, 32.0);
     const double ar = reference::periodic_autocorrelation_peak(orf, 4.0, 32.0);
     std::printf("%s: cloud pixels reference %.1f %%, GPU %.1f %%; periodic autocorrelation peak %.3f / %.3f\n", preset,

@@ -33,6 +33,12 @@ double median_of(std::vector<double> v) {
 Field opacity_field(const FrameImage& img) { return channel_field(img, true); }
 Field luminance_field(const FrameImage& img) { return channel_field(img, false); }
 
+double cloud_fraction(const Field& opacity, double threshold) {
+  long cloudy = 0;
+  for (double a : opacity.v) cloudy += a > threshold ? 1 : 0;
+  return static_cast<double>(cloudy) / static_cast<double>(std::max<std::size_t>(opacity.v.size(), 1));
+}
+
 std::vector<CloudObject> cloud_objects(const Field& opacity, double threshold) {
   const int w = opacity.width, h = opacity.height;
   std::vector<char> seen(opacity.v.size(), 0);

@@ -38,6 +38,9 @@ struct Field {
 Field opacity_field(const FrameImage& img);    // the a channel
 Field luminance_field(const FrameImage& img);  // mean of r, g, b (linear radiance)
 
+// Fraction of the field's pixels whose value is above threshold (the cloud mask's area).
+double cloud_fraction(const Field& opacity, double threshold = 0.5);
+
 struct CloudObject {
   long area_px = 0;       // pixels
   long perimeter_px = 0;  // pixel edges between the cloud and clear pixels or the border

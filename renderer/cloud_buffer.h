@@ -3,8 +3,9 @@
 // march) and the resolved buffers of the previous and the current frame (ping-pong,
 // written by the resolve), the temporal uniforms, and what temporal reuse remembers of the
 // last frame (renderer/temporal_reprojection.h). Radiance textures hold in-scattered
-// radiance (rgb) and transmittance (a); depth textures the cloud depth (m), its layer and
-// the history length. Needs a current GL 4.5 context.
+// radiance (rgb) and transmittance (a); depth textures the cloud depth (m), the clouds'
+// shift of the ground's share of the background (shaders/cloud_march.comp), the depth's layer
+// and the history length. Needs a current GL 4.5 context.
 #pragma once
 
 #include <optional>

@@ -19,7 +19,8 @@ void CompositePass::run(const CloudPassInputs& inputs, const GroundShadowMap& sh
   inputs.bind();
   buffer.bind_uniforms();
   shadows.bind_lookups();
-  glBindTextureUnit(gpu::tex::CLOUD_RADIANCE, buffer.current_radiance().id());  // radiance and transmittance only
+  glBindTextureUnit(gpu::tex::CLOUD_RADIANCE, buffer.current_radiance().id());
+  glBindTextureUnit(gpu::tex::CLOUD_DEPTH, buffer.current_depth().id());
   glBindImageTexture(gpu::img::FRAME_OUT, target_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   gl::dispatch_2d(w_, h_);
 }

@@ -37,7 +37,8 @@ namespace cloudsvc::gpu {
   X(LIGHT_VOLUME, 15)      /* per layer optical depth towards the sun inside it */         \
   X(CLOUD_RADIANCE, 16)    /* this frame's resolved cloud buffer (composite) */            \
   X(PRESENT_FRAME, 17)     /* the frame a window shows (present.frag) */              \
-  X(BASE_NOISE_MAX, 18)    /* base-noise max pyramid as mip levels (long-step probes) */
+  X(BASE_NOISE_MAX, 18)    /* base-noise max pyramid as mip levels (long-step probes) */ \
+  X(CLOUD_DEPTH, 19)       /* ... its depth, ground-share shift, layer (composite) */
 
 // Image units: each pass binds the images it writes right before its dispatch, so outputs
 // of different passes share units. GLSL: IMG_<NAME>.

@@ -5,7 +5,8 @@
 // seen through the aerial perspective in front of them (W m^-2 sr^-1 nm^-1, 680/550/440
 // nm), a: cloud transmittance; (fresh_depth) x: depth (m; the
 // transmittance-weighted cloud distance, or clear_ray_depth() when it meets no cloud), y:
-// 0 (unused), z: layer of that depth (-1 none), w: 1.
+// how much the clouds shift the ground's share of the background seen through them from
+// the pixel's area below the horizon (0 unless the horizon crosses the pixel; see main), z: layer of that depth (-1 none), w: the sample's weight.
 #include "common.glsl"
 #include "frame_counters.glsl"
 #include "frame_uniforms.glsl"
@@ -20,6 +21,7 @@
 #include "ground_shadow_map.glsl"
 #include "light_volume.glsl"
 #include "aerial_perspective_lookup.glsl"
+#include "horizon_split.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba32f, binding = IMG_FRESH_RADIANCE_OUT) uniform writeonly image2D fresh_radiance;
@@ -85,24 +87,16 @@ int detail_mode_at(float t, CloudLayerGpu L) {
 // forgets it as jittered points arrive. Measured over random scene sets (docs/ACCURACY.md).
 const float CENTRE_SAMPLE_WEIGHT = 2.0;
 
-void main() {
-  ivec2 cell = ivec2(gl_GlobalInvocationID.xy);
-  ivec2 q = cell * temporal.fresh_stride + temporal.fresh_offset;  // the cloud pixel this invocation marches
-  if (any(greaterThanEqual(q, temporal.cloud_buffer_size))) return;
-  // the ray through the pixel centre (footprint sample 0), or (footprint jitter, sample
-  // n >= 1 of a still camera's accumulation; footprint_sample_index()) through the n-th
-  // point of the pixel's sequence: offsets fract(r_q + n alpha) - 1/2 in cloud pixels,
-  // alpha the R2 sequence's (Roberts 2018: 1/g, 1/g^2, g^3 = g + 1), r_q a per-pixel
-  // rotation so that neighbours do not move in step
-  vec2 sub_pixel = vec2(0.0);
-  float sample_weight = CENTRE_SAMPLE_WEIGHT;
-  if (frame.footprint_jitter != 0 && temporal.footprint_sample > 0) {
-    sample_weight = 1.0;
-    vec2 r_q = vec2(hash12(uvec2(q) * 3u + 11u), hash12(uvec2(q) * 5u + 17u));
-    sub_pixel = fract(r_q + float(temporal.footprint_sample) * vec2(0.7548776662, 0.5698402910)) - 0.5;
-  }
-  vec2 ndc_ray = cloud_pixel_ndc(vec2(q) + sub_pixel);
-  vec3 dir = view_ray(ndc_ray);
+// The clouds along one ray dir of cloud pixel q.
+struct RaySample {
+  vec3 C;       // radiance the clouds send to the camera, aerial perspective included
+  float T;      // their transmittance
+  float depth;  // transmittance-weighted cloud distance (m), or clear_ray_depth()
+  int layer;    // layer of that depth (-1 none)
+  bool hits_ground;
+};
+
+RaySample march_ray(ivec2 q, vec3 dir) {
   float R = frame.shell_radius_m, h = frame.camera_altitude_m, ground_alt = frame.ground_altitude_m;
   vec3 sun = frame.sun_direction;
   vec3 E_sun = SOLAR_IRRADIANCE;
@@ -249,7 +243,61 @@ void main() {
     C = C * ap_T + opacity * E_sun * ap_in;
   }
 
+  return RaySample(C, T, depth, depth_layer, hits_ground);
+}
+
+void main() {
+  ivec2 cell = ivec2(gl_GlobalInvocationID.xy);
+  ivec2 q = cell * temporal.fresh_stride + temporal.fresh_offset;  // the cloud pixel this invocation marches
+  if (any(greaterThanEqual(q, temporal.cloud_buffer_size))) return;
+  // the ray through the pixel centre (footprint sample 0), or (footprint jitter, sample
+  // n >= 1 of a still camera's accumulation; footprint_sample_index()) through the n-th
+  // point of the pixel's sequence: offsets fract(r_q + n alpha) - 1/2 in cloud pixels,
+  // alpha the R2 sequence's (Roberts 2018: 1/g, 1/g^2, g^3 = g + 1), r_q a per-pixel
+  // rotation so that neighbours do not move in step
+  vec2 sub_pixel = vec2(0.0);
+  float sample_weight = CENTRE_SAMPLE_WEIGHT;
+  if (frame.footprint_jitter != 0 && temporal.footprint_sample > 0) {
+    sample_weight = 1.0;
+    vec2 r_q = vec2(hash12(uvec2(q) * 3u + 11u), hash12(uvec2(q) * 5u + 17u));
+    sub_pixel = fract(r_q + float(temporal.footprint_sample) * vec2(0.7548776662, 0.5698402910)) - 0.5;
+  }
+  vec3 dir = view_ray(cloud_pixel_ndc(vec2(q) + sub_pixel));
+  RaySample own = march_ray(q, dir);
+  vec3 C = own.C;
+  float T = own.T, depth = own.depth;
+  int layer = own.layer;
+  float share_shift = 0.0;  // the clouds' shift of the ground share (see below)
+
+  // A footprint the horizon crosses is sampled on both sides (stratified by area): the
+  // clouds in front of the ground and those in front of the sky differ (a layer just above
+  // the horizon hides the sky part only), and the composite needs the share of each in the
+  // transmitted background. That ground share is f T_g / T; stored is its shift from the
+  // area fraction f by the clouds, 0 where they are alike (or absent: a cleared buffer). The other side's ray keeps this ray's azimuth and mirrors its
+  // relative position within its side's elevation range (at least 5 % into it).
+  vec2 ndc_centre = cloud_pixel_ndc(vec2(q));
+  HorizonFootprint fp = footprint_at_horizon(ndc_centre, float(temporal.cloud_divisor) * vec2(1.0, -1.0) / frame.image_size_px,
+                                             view_ray(ndc_centre));
+  if (crosses_horizon(fp) && abs(dir.z) < 0.999) {
+    float e = asin(clamp(dir.z, -1.0, 1.0));
+    bool below = e < fp.e_h;
+    float s = below ? (fp.e_h - e) / max(fp.e_h - fp.e_lo, 1e-9) : (e - fp.e_h) / max(fp.e_hi - fp.e_h, 1e-9);
+    s = clamp(s, 0.05, 1.0);
+    float e_other = below ? fp.e_h + s * (fp.e_hi - fp.e_h) : fp.e_h - s * (fp.e_h - fp.e_lo);
+    RaySample other = march_ray(q, at_elevation(dir, e_other));
+    RaySample g = below ? own : other, k = below ? other : own;  // ground side, sky side
+    float f = fp.f_ground;
+    C = f * g.C + (1.0 - f) * k.C;
+    T = f * g.T + (1.0 - f) * k.T;
+    // 0/0 (opaque both ways): no shift
+    share_shift = T > 1e-6 ? f * g.T / T - f : 0.0;
+    // depth and layer: the opacity-weighted depth of both, the layer of the more opaque side
+    float wg = f * (1.0 - g.T), wk = (1.0 - f) * (1.0 - k.T);
+    if (wg + wk > 1e-4) depth = (wg * g.depth + wk * k.depth) / (wg + wk);
+    layer = wg >= wk ? (g.layer >= 0 ? g.layer : k.layer) : (k.layer >= 0 ? k.layer : g.layer);
+  }
+
   if (frame.count_density_evaluations != 0) atomicAdd(counters.density_evals, g_density_evals);
   imageStore(fresh_radiance, cell, vec4(C, T));
-  imageStore(fresh_depth, cell, vec4(depth, 0.0, float(depth_layer), sample_weight));
+  imageStore(fresh_depth, cell, vec4(depth, share_shift, float(layer), sample_weight));
 }

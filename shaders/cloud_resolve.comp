@@ -90,6 +90,14 @@ void fresh_neighbourhood(ivec2 cs[4], float ws[4], out vec4 fresh[4], out vec4 u
   }
 }
 
+// The ground-share shift (cloud_march.comp) of the fresh samples cs around a cloud pixel,
+// interpolated with weights ws (as their radiance and transmittance where they stand in).
+float fresh_share_shift(ivec2 cs[4], float ws[4]) {
+  float shift = 0.0;
+  for (int i = 0; i < 4; ++i) shift += ws[i] * texelFetch(fresh_depth, cs[i], 0).y;
+  return shift;
+}
+
 void main() {
   ivec2 q = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(q, temporal.cloud_buffer_size))) return;
@@ -162,10 +170,10 @@ void main() {
         float n_fresh = fresh_own_b.w;
         float w = (moving || moved > 0.1 || changed) ? 1.0 : max(n_fresh / (n + n_fresh), temporal.history_blend_min);
         out_a = mix(ha, fresh_own_a, w);
-        out_b = vec4(mix(hb.x, fresh_own_b.x, w), 0.0, fresh_own_b.z, min(n + n_fresh, 255.0));
+        out_b = vec4(mix(hb.x, fresh_own_b.x, w), mix(hb.y, fresh_own_b.y, w), fresh_own_b.z, min(n + n_fresh, 255.0));
       } else {
         out_a = ha;
-        out_b = vec4(hb.x, 0.0, hb.z, n);
+        out_b = vec4(hb.x, changed && temporal.neighbourhood_clamp != 0 ? fresh_share_shift(cs, ws) : hb.y, hb.z, n);
       }
     }
   }
@@ -177,7 +185,7 @@ void main() {
       // the fresh samples around q, interpolated; the depth of the nearest one
       fresh_neighbourhood(cs, ws, fresh_at, out_a, lo, hi, nearest);
       vec4 near_b = texelFetch(fresh_depth, cs[nearest], 0);
-      out_b = vec4(near_b.x, 0.0, near_b.z, 0.0);
+      out_b = vec4(near_b.x, fresh_share_shift(cs, ws), near_b.z, 0.0);
     }
   }
   imageStore(next_radiance, q, out_a);

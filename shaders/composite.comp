@@ -11,6 +11,7 @@
 #include "atmosphere_model.glsl"
 #include "atmosphere_lookup.glsl"
 #include "sky_view_mapping.glsl"
+#include "horizon_split.glsl"
 #include "ground_shadow_map.glsl"
 #include "phase_function.glsl"
 #include "cloud_density.glsl"
@@ -22,17 +23,22 @@ const float BACKGROUND_T_EPS = 1e-3;  // = CLOUD_T_EPS of cloud_march.comp
 layout(rgba32f, binding = IMG_FRAME_OUT) uniform writeonly image2D out_image;
 layout(binding = TEX_SKY_VIEW_LUT) uniform sampler2D sky_view_lut;
 layout(binding = TEX_CLOUD_RADIANCE) uniform sampler2D cloud_radiance;  // resolved cloud buffer (temporal_uniforms.glsl)
+layout(binding = TEX_CLOUD_DEPTH) uniform sampler2D cloud_depth;        // ... its depth, ground-share shift, layer
 layout(binding = TEX_GROUND_SHADOW_MAP) uniform sampler2DArray ground_shadow;  // ground_shadow_map.glsl
 
 
 // The cloud buffer at frame pixel px: radiance the clouds send to the camera (aerial
-// perspective included, cloud_march.comp) and their transmittance. At divisor 1 its own
+// perspective included, cloud_march.comp), their transmittance (rgba) and their shift of the
+// ground's share of the transmitted background (share_shift; cloud_march.comp). At divisor 1 its own
 // pixel; else the four nearest cloud pixels weighted bilinearly and by how alike their
 // background distance is to this pixel's (depth-aware upsampling: cloud over the horizon
 // does not bleed onto the ground).
-vec4 cloud_at(ivec2 px, float t_background) {
+vec4 cloud_at(ivec2 px, float t_background, out float share_shift) {
   int r = temporal.cloud_divisor;
-  if (r == 1) return texelFetch(cloud_radiance, px, 0);
+  if (r == 1) {
+    share_shift = texelFetch(cloud_depth, px, 0).y;
+    return texelFetch(cloud_radiance, px, 0);
+  }
   vec2 c = (vec2(px) + 0.5) / float(r) - 0.5;
   ivec2 c0 = clamp(ivec2(floor(c)), ivec2(0), temporal.cloud_buffer_size - 1);
   ivec2 c1 = min(c0 + 1, temporal.cloud_buffer_size - 1);
@@ -40,7 +46,7 @@ vec4 cloud_at(ivec2 px, float t_background) {
   ivec2 cs[4] = ivec2[4](c0, ivec2(c1.x, c0.y), ivec2(c0.x, c1.y), c1);
   float ws[4] = float[4]((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y, f.x * f.y);
   vec4 a = vec4(0.0);
-  float wsum = 0.0;
+  float share = 0.0, wsum = 0.0;
   for (int i = 0; i < 4; ++i) {
     vec3 d = view_ray(cloud_pixel_ndc(vec2(cs[i])));
     vec2 g = intersect_shell(frame.shell_radius_m, frame.camera_altitude_m, frame.ground_altitude_m, d.z);
@@ -49,16 +55,11 @@ vec4 cloud_at(ivec2 px, float t_background) {
                                                           : 1.0 / (1.0 + 8.0 * abs(t_i - t_background) / t_background);
     float w = ws[i] * likeness + 1e-6;
     a += w * texelFetch(cloud_radiance, cs[i], 0);
+    share += w * texelFetch(cloud_depth, cs[i], 0).y;
     wsum += w;
   }
+  share_shift = share / wsum;
   return a / wsum;
-}
-
-// Cloud transmittance of the cloud-buffer texel nearest to frame pixel px (clamped to the
-// frame): a cheap look at a neighbour, without cloud_at's depth-aware upsampling.
-float cloud_transmittance_nearest(ivec2 px, ivec2 size) {
-  ivec2 q = clamp(px, ivec2(0), size - 1) / temporal.cloud_divisor;
-  return texelFetch(cloud_radiance, min(q, temporal.cloud_buffer_size - 1), 0).a;
 }
 
 // Mean radiance of the sun disk over the pixel of view ray dir (W m^-2 sr^-1 nm^-1), from
@@ -126,33 +127,12 @@ vec3 sky_radiance(vec3 dir) {
          vec3(NIGHT_SKY_RADIANCE);
 }
 
-// Fraction of a pixel below the horizon. The elevation e over the pixel is taken as linear
-// in the pixel's two axes: e = e_c + u + v with u, v uniform over widths a, b (e's change
-// across the pixel along its width and its height), so the fraction with e < e_h is the
-// CDF of the sum of two uniforms at e_h - e_c: a trapezoid, piecewise quadratic (exact for
-// a straight horizon over a square box filter).
-float below_fraction(float z, float a, float b) {  // P(u + v < z), widths a, b
-  float w1 = max(a, b), w2 = min(a, b);
-  float hs = 0.5 * (w1 + w2), hd = 0.5 * (w1 - w2);
-  if (z <= -hs) return 0.0;
-  if (z >= hs) return 1.0;
-  float zs = abs(z);
-  float upper = zs < hd ? (zs + 0.5 * w1) / w1 : 1.0 - (hs - zs) * (hs - zs) / (2.0 * w1 * max(w2, 1e-12));
-  return z >= 0.0 ? upper : 1.0 - upper;
-}
-
-// dir turned in its vertical plane to elevation e (radians); dir not vertical.
-vec3 at_elevation(vec3 dir, float e) {
-  vec2 hz = normalize(dir.xy);
-  return vec3(hz * cos(e), sin(e));
-}
-
-// Elevation (rad) of the view ray through ndc above the camera's local horizontal.
-float ray_elevation(vec2 ndc) { return asin(clamp(view_ray(ndc).z, -1.0, 1.0)); }
-
 // A pixel's background split at the horizon: the fraction f_ground of its footprint below it
 // (box filter) and the rays the ground part (hitting the ground at t_g) and the sky part are
-// seen along. Away from the horizon: all ground or all sky along the centre ray dir.
+// seen along. Away from the horizon: all ground or all sky along the centre ray dir. The
+// ground part is seen along a ray at least a quarter of the pixel's elevation range below
+// the horizon, the sky part at least as far above it: both vary continuously with the pose
+// and equal the centre ray once the pixel is all ground or all sky.
 struct HorizonSplit {
   float f_ground;
   vec3 dir_g;
@@ -160,45 +140,19 @@ struct HorizonSplit {
   vec3 dir_s;
 };
 
-// The fraction comes from the ray elevations at the pixel's edges, where the pixel can reach
-// the horizon (its elevation range is at most sqrt(2) times the centre pixel's angle
-// 2 tan(hfov/2) / width). The horizon's elevation seen from altitude h above the ground
-// sphere is -dip, cos(dip) = (R + ground)/(R + h), written as
-// 2 asin(sqrt((h - ground) / (2 (R + h)))) (no cancellation at h of metres). T_own: the
-// pixel's cloud transmittance.
-HorizonSplit split_at_horizon(ivec2 px, ivec2 size, vec2 ndc, vec3 dir, bool hits_ground, float t_ground, float T_own) {
+HorizonSplit split_at_horizon(vec2 ndc, vec2 half_px, vec3 dir, bool hits_ground, float t_ground) {
   HorizonSplit hs = HorizonSplit(hits_ground ? 1.0 : 0.0, dir, t_ground, dir);
-  float R = frame.shell_radius_m, h = frame.camera_altitude_m, ground_alt = frame.ground_altitude_m;
+  HorizonFootprint fp = footprint_at_horizon(ndc, half_px, dir);
+  if (!crosses_horizon(fp)) return hs;
+  float margin = 0.25 * (fp.e_hi - fp.e_lo);
   float e_c = asin(clamp(dir.z, -1.0, 1.0));
-  float e_h = -2.0 * asin(sqrt(max(h - ground_alt, 0.0) / (2.0 * (R + h))));
-  if (abs(e_c - e_h) >= 1.5 * frame.tan_half_fov_x / frame.image_size_px.x || abs(dir.z) >= 0.999) return hs;
-  vec2 half_px = vec2(1.0, -1.0) / vec2(size);
-  // elevation change across the pixel, per +1 column and per +1 row
-  float ex = ray_elevation(ndc + vec2(half_px.x, 0.0)) - ray_elevation(ndc - vec2(half_px.x, 0.0));
-  float ey = ray_elevation(ndc + vec2(0.0, half_px.y)) - ray_elevation(ndc - vec2(0.0, half_px.y));
-  float f = below_fraction(e_h - e_c, abs(ex), abs(ey));
-  if (f <= 0.0 || f >= 1.0) return hs;
-  // the ground part seen along a ray at least a quarter of the pixel's elevation range below
-  // the horizon, the sky part at least as far above it: both vary continuously with the pose
-  // and equal the centre ray once the pixel is all ground or all sky
-  float margin = 0.25 * (abs(ex) + abs(ey));
-  vec3 g_dir = at_elevation(dir, min(e_c, e_h - margin));
-  vec2 gg = intersect_shell(R, h, ground_alt, g_dir.z);
+  vec3 g_dir = at_elevation(dir, min(e_c, fp.e_h - margin));
+  vec2 gg = intersect_shell(frame.shell_radius_m, frame.camera_altitude_m, frame.ground_altitude_m, g_dir.z);
   if (gg.x < 0.0) return hs;
-  // The cloud buffer holds the clouds along one ray per pixel, which sees either the ground
-  // or the sky; clouds along the other part's rays are unknown (under a deck, the sky just
-  // above the horizon may be clear or cloud, measured both ways against the reference). So
-  // the box filter is used where the buffer shows no cloud here or across the horizon (its
-  // four edge neighbours: whatever the roll, two of them lie across it; no switch between
-  // pairs), and fades to the centre's ground-or-sky as their largest opacity reaches 5 %.
-  float T_min = min(min(T_own, cloud_transmittance_nearest(px + ivec2(1, 0), size)),
-                    min(cloud_transmittance_nearest(px - ivec2(1, 0), size),
-                        min(cloud_transmittance_nearest(px + ivec2(0, 1), size), cloud_transmittance_nearest(px - ivec2(0, 1), size))));
-  float w = 1.0 - smoothstep(0.0, 0.05, 1.0 - T_min);
-  hs.f_ground = mix(hs.f_ground, f, w);
+  hs.f_ground = fp.f_ground;
   hs.dir_g = g_dir;
   hs.t_g = gg.x;
-  hs.dir_s = at_elevation(dir, max(e_c, e_h + margin));
+  hs.dir_s = at_elevation(dir, max(e_c, fp.e_h + margin));
   return hs;
 }
 
@@ -216,22 +170,28 @@ void main() {
   bool hits_ground = g.x >= 0.0;
   float t_ground = hits_ground ? g.x : 1e30;
 
-  vec4 cloud = cloud_at(px, t_ground);  // rgb: radiance from the clouds through the air in front; a: their transmittance
-  HorizonSplit hs = split_at_horizon(px, size, ndc, dir, hits_ground, t_ground, cloud.a);
+  float share_shift;
+  vec4 cloud = cloud_at(px, t_ground, share_shift);  // rgb: radiance from the clouds through the air in front; a: their transmittance
+  HorizonSplit hs = split_at_horizon(ndc, vec2(1.0, -1.0) / vec2(size), dir, hits_ground, t_ground);
+  // The ground's share of the background seen through the clouds: all or nothing away from
+  // the horizon; across it, the area below the horizon shifted by the clouds (the cloud
+  // buffer's share_shift: the march weighs each side of the footprint by its area and by
+  // the transmittance of the clouds along its own rays; a cloud above the horizon hides the
+  // sky part only)
+  float ground_share = hs.f_ground <= 0.0 ? 0.0 : hs.f_ground >= 1.0 ? 1.0 : clamp(hs.f_ground + share_shift, 0.0, 1.0);
 
   // ---- background: ground and/or sky, faded out behind clouds as their transmittance
   // falls from twice to once the march's early-exit threshold (the march drops the clouds
   // behind at that level too; the fade keeps the image continuous) and skipped below it;
-  // the sun disk, bright enough to show through them, always (over the part of the pixel
-  // above the horizon)
+  // the sun disk, bright enough to show through them, always (over the sky part)
   float T = clamp(cloud.a, 0.0, 1.0);
   float background_weight = saturate(T / BACKGROUND_T_EPS - 1.0);
   vec3 background = vec3(0.0);
   if (background_weight > 0.0) {
-    if (hs.f_ground > 0.0) background += hs.f_ground * ground_radiance(hs.dir_g, hs.t_g);
-    if (hs.f_ground < 1.0) background += (1.0 - hs.f_ground) * sky_radiance(hs.dir_s);
+    if (ground_share > 0.0) background += ground_share * ground_radiance(hs.dir_g, hs.t_g);
+    if (ground_share < 1.0) background += (1.0 - ground_share) * sky_radiance(hs.dir_s);
   }
-  vec3 sun_seen = hs.f_ground < 1.0 ? (1.0 - hs.f_ground) * sun_disk(dir, h) : vec3(0.0);
+  vec3 sun_seen = ground_share < 1.0 ? (1.0 - ground_share) * sun_disk(dir, h) : vec3(0.0);
   float opacity = 1.0 - T;
   vec3 radiance = cloud.rgb + T * (background_weight * background + sun_seen);
 

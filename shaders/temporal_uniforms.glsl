@@ -1,8 +1,8 @@
 // Per-frame constants of the cloud buffer and its temporal reuse, std140: the GLSL side of
 // renderer/temporal_uniforms.h (member comments there).
 // The cloud buffer holds, per cloud pixel, the clouds along its ray: premultiplied
-// in-scattered radiance and transmittance (radiance texture), and depth, layer and
-// history length (depth texture). It is 1/divisor of the frame in each axis. Each frame
+// in-scattered radiance and transmittance (radiance texture), and depth, ground-share shift
+// (cloud_march.comp), layer and history length (depth texture). It is 1/divisor of the frame in each axis. Each frame
 // marches the pixels (stride * i + offset) of it ("fresh" samples); the rest come from the
 // previous frame's buffer, reprojected (renderer/temporal_reprojection.h).
 

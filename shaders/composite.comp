@@ -27,39 +27,58 @@ layout(binding = TEX_CLOUD_DEPTH) uniform sampler2D cloud_depth;        // ... i
 layout(binding = TEX_GROUND_SHADOW_MAP) uniform sampler2DArray ground_shadow;  // ground_shadow_map.glsl
 
 
-// The cloud buffer at frame pixel px: radiance the clouds send to the camera (aerial
-// perspective included, cloud_march.comp), their transmittance (rgba) and their shift of the
-// ground's share of the transmitted background (share_shift; cloud_march.comp). At divisor 1 its own
-// pixel; else the four nearest cloud pixels weighted bilinearly and by how alike their
-// background distance is to this pixel's (depth-aware upsampling: cloud over the horizon
-// does not bleed onto the ground).
-vec4 cloud_at(ivec2 px, float t_background, out float share_shift) {
+// The cloud-buffer texels that make frame pixel px (n of them: 1 at divisor 1, else 4)
+// and their weights: at divisor 1 its own pixel; else the four nearest cloud pixels
+// weighted bilinearly and by how alike their background distance is to this pixel's
+// t_background (depth-aware upsampling: cloud over the horizon does not bleed onto the
+// ground).
+int cloud_taps(ivec2 px, float t_background, out ivec2 cs[4], out float ws[4]) {
   int r = temporal.cloud_divisor;
   if (r == 1) {
-    share_shift = texelFetch(cloud_depth, px, 0).y;
-    return texelFetch(cloud_radiance, px, 0);
+    cs[0] = px;
+    ws[0] = 1.0;
+    return 1;
   }
   vec2 c = (vec2(px) + 0.5) / float(r) - 0.5;
   ivec2 c0 = clamp(ivec2(floor(c)), ivec2(0), temporal.cloud_buffer_size - 1);
   ivec2 c1 = min(c0 + 1, temporal.cloud_buffer_size - 1);
   vec2 f = clamp(c - vec2(c0), 0.0, 1.0);
-  ivec2 cs[4] = ivec2[4](c0, ivec2(c1.x, c0.y), ivec2(c0.x, c1.y), c1);
-  float ws[4] = float[4]((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y, f.x * f.y);
-  vec4 a = vec4(0.0);
-  float share = 0.0, wsum = 0.0;
+  cs = ivec2[4](c0, ivec2(c1.x, c0.y), ivec2(c0.x, c1.y), c1);
+  float bilinear[4] = float[4]((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y, f.x * f.y);
+  float wsum = 0.0;
   for (int i = 0; i < 4; ++i) {
     vec3 d = view_ray(cloud_pixel_ndc(vec2(cs[i])));
     vec2 g = intersect_shell(frame.shell_radius_m, frame.camera_altitude_m, frame.ground_altitude_m, d.z);
     float t_i = g.x >= 0.0 ? g.x : 1e30;
     float likeness = t_background >= 1e29 || t_i >= 1e29 ? (t_background == t_i ? 1.0 : 1e-3)
                                                           : 1.0 / (1.0 + 8.0 * abs(t_i - t_background) / t_background);
-    float w = ws[i] * likeness + 1e-6;
-    a += w * texelFetch(cloud_radiance, cs[i], 0);
-    share += w * texelFetch(cloud_depth, cs[i], 0).y;
-    wsum += w;
+    ws[i] = bilinear[i] * likeness + 1e-6;
+    wsum += ws[i];
   }
-  share_shift = share / wsum;
-  return a / wsum;
+  for (int i = 0; i < 4; ++i) ws[i] /= wsum;
+  return 4;
+}
+
+// The cloud buffer at frame pixel px: radiance the clouds send to the camera (aerial
+// perspective included, cloud_march.comp) and their transmittance.
+vec4 cloud_at(ivec2 px, float t_background) {
+  ivec2 cs[4];
+  float ws[4];
+  int n = cloud_taps(px, t_background, cs, ws);
+  vec4 a = vec4(0.0);
+  for (int i = 0; i < n; ++i) a += ws[i] * texelFetch(cloud_radiance, cs[i], 0);
+  return a;
+}
+
+// The clouds' shift of the ground's share of the background seen through them at frame
+// pixel px (cloud_march.comp; read only where the horizon crosses the pixel).
+float share_shift_at(ivec2 px, float t_background) {
+  ivec2 cs[4];
+  float ws[4];
+  int n = cloud_taps(px, t_background, cs, ws);
+  float shift = 0.0;
+  for (int i = 0; i < n; ++i) shift += ws[i] * texelFetch(cloud_depth, cs[i], 0).y;
+  return shift;
 }
 
 // Mean radiance of the sun disk over the pixel of view ray dir (W m^-2 sr^-1 nm^-1), from
@@ -170,15 +189,14 @@ void main() {
   bool hits_ground = g.x >= 0.0;
   float t_ground = hits_ground ? g.x : 1e30;
 
-  float share_shift;
-  vec4 cloud = cloud_at(px, t_ground, share_shift);  // rgb: radiance from the clouds through the air in front; a: their transmittance
+  vec4 cloud = cloud_at(px, t_ground);  // rgb: radiance from the clouds through the air in front; a: their transmittance
   HorizonSplit hs = split_at_horizon(ndc, vec2(1.0, -1.0) / vec2(size), dir, hits_ground, t_ground);
   // The ground's share of the background seen through the clouds: all or nothing away from
   // the horizon; across it, the area below the horizon shifted by the clouds (the cloud
-  // buffer's share_shift: the march weighs each side of the footprint by its area and by
+  // buffer's share shift: the march weighs each side of the footprint by its area and by
   // the transmittance of the clouds along its own rays; a cloud above the horizon hides the
   // sky part only)
-  float ground_share = hs.f_ground <= 0.0 ? 0.0 : hs.f_ground >= 1.0 ? 1.0 : clamp(hs.f_ground + share_shift, 0.0, 1.0);
+  float ground_share = hs.f_ground <= 0.0 ? 0.0 : hs.f_ground >= 1.0 ? 1.0 : clamp(hs.f_ground + share_shift_at(px, t_ground), 0.0, 1.0);
 
   // ---- background: ground and/or sky, faded out behind clouds as their transmittance
   // falls from twice to once the march's early-exit threshold (the march drops the clouds

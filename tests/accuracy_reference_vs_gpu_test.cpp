@@ -121,19 +121,6 @@ RenderQuality fine_quality() {
   return q;
 }
 
-// The last of `frames` renders of the still view v (the first starts a new history).
-FrameImage render_still(const weather::Weather& w, ViewRequest v, const RenderQuality& q, int frames) {
-  CloudRenderer& r = shared_renderer();
-  r.set_weather(w);
-  FrameImage last;
-  for (int f = 0; f < frames; ++f) {
-    v.frame_index = static_cast<std::uint32_t>(f);
-    v.reset_history = f == 0;
-    last = r.render(v, q);
-  }
-  return last;
-}
-
 // The GPU image of v at the pixel footprint: one frame at kSamples times the size, through
 // the sub-pixel centres (no jitter, no reuse), box-filtered.
 FrameImage render_footprint(const weather::Weather& w, ViewRequest v, RenderQuality q) {
@@ -163,7 +150,9 @@ TEST_P(AccuracySceneVsReference, DefaultAndFineMarchStayAboveTheirFloors) {
   save_pair(s.name + std::string(" fine"), gpu_fine, ref);
   const reference::ImageDifference d = reference::compare_images(gpu, ref), fine = reference::compare_images(gpu_fine, ref);
   // the preset's own output: what `cloudsvc render --quality default --frames 17` writes
-  const FrameImage still = render_still(w, v, *quality_preset("default"), kPresetFrames);
+  CloudRenderer& r = shared_renderer();
+  r.set_weather(w);
+  const FrameImage still = render_still_view(r, v, *quality_preset("default"), kPresetFrames);
   const reference::ImageDifference p = reference::compare_images(still, ref);
   EXPECT_EQ(still.stats.nonfinite_pixels, 0);
   std::printf("%-30s (64x36, %dx%d rays per pixel): default RMSE %.3e rel %.4f PSNR %.2f dB max|err| %.3e at (%d,%d), "

@@ -26,20 +26,6 @@ namespace cloudsvc::test {
 namespace {
 
 constexpr int kWidth = 64, kHeight = 36;
-constexpr int kStillFrames = 17;  // as cloudbench: one 16-frame cycle of the 1/16-px preset, plus the first
-
-// The last of kStillFrames frames of the still view v.
-FrameImage still_view(CloudRenderer& r, ViewRequest v, const RenderQuality& q) {
-  v.reset_history = true;
-  FrameImage img;
-  for (int f = 0; f < kStillFrames; ++f) {
-    v.frame_index = static_cast<std::uint32_t>(f);
-    img = r.render(v, q);
-    v.reset_history = false;
-  }
-  return img;
-}
-
 TEST(CloudSilhouettes, DefaultPresetFromInsideALayerMarksTheReferencesCloudPixels) {
   const fixtures::UnseenView& uv = fixtures::unseen_views().front();  // issue 14's view
   ASSERT_STREQ(uv.preset, "scattered-cumulus");
@@ -53,8 +39,8 @@ TEST(CloudSilhouettes, DefaultPresetFromInsideALayerMarksTheReferencesCloudPixel
   const FrameImage ref = reference::render_reference(v, w, settings);
   CloudRenderer& r = shared_renderer();
   r.set_weather(w);
-  const FrameImage naive = still_view(r, v, *quality_preset("naive"));
-  const FrameImage def = still_view(r, v, *quality_preset("default"));
+  const FrameImage naive = render_still_view(r, v, *quality_preset("naive"));
+  const FrameImage def = render_still_view(r, v, *quality_preset("default"));
   maybe_save("silhouettes_reference", ref);
   maybe_save("silhouettes_naive", naive);
   maybe_save("silhouettes_default", def);

@@ -23,19 +23,6 @@ namespace cloudsvc::test {
 namespace {
 
 constexpr int kWidth = 64, kHeight = 36;
-constexpr int kStillFrames = 17;  // as cloudbench
-
-FrameImage still_view(CloudRenderer& r, ViewRequest v, const RenderQuality& q) {
-  v.reset_history = true;
-  FrameImage img;
-  for (int f = 0; f < kStillFrames; ++f) {
-    v.frame_index = static_cast<std::uint32_t>(f);
-    img = r.render(v, q);
-    v.reset_history = false;
-  }
-  return img;
-}
-
 TEST(HorizonClouds, ClearHorizonPixelsBesideACloudedNeighbourStayMixed) {
   const auto scenes = accuracy::random_scenes(77, 28);
   const accuracy::RandomScene& s = scenes.at(27);
@@ -46,8 +33,8 @@ TEST(HorizonClouds, ClearHorizonPixelsBesideACloudedNeighbourStayMixed) {
   const FrameImage ref = reference::render_reference(v, s.weather, settings);
   CloudRenderer& r = shared_renderer();
   r.set_weather(s.weather);
-  const FrameImage naive = still_view(r, v, *quality_preset("naive"));
-  const FrameImage def = still_view(r, v, *quality_preset("default"));
+  const FrameImage naive = render_still_view(r, v, *quality_preset("naive"));
+  const FrameImage def = render_still_view(r, v, *quality_preset("default"));
   maybe_save("horizon_clouds_reference", ref);
   maybe_save("horizon_clouds_default", def);
   const double rmse_n = reference::compare_images(naive, ref).rmse, rmse_d = reference::compare_images(def, ref).rmse;

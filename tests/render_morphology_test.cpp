@@ -24,13 +24,7 @@ TEST(Morphology, CpuReferenceAndGpuSeeTheSameClouds) {
     ViewRequest v = make_view(47.4, 8.5, 20000.0, 0.0, -90.0, "2026-06-21T10:00:00Z", 64, 64);
     CloudRenderer& r = shared_renderer();
     r.set_weather(w);
-    v.reset_history = true;
-    FrameImage gpu;
-    for (int f = 0; f < 17; ++f) {  // still, as cloudbench: every pixel marched
-      v.frame_index = static_cast<std::uint32_t>(f);
-      gpu = r.render(v, *quality_preset("default"));
-      v.reset_history = false;
-    }
+    const FrameImage gpu = render_still_view(r, v, *quality_preset("default"));  // still, as cloudbench
     const FrameImage ref = reference::render_reference(v, w, reference::ReferenceSettings{});
     const reference::Field og = reference::opacity_field(gpu), orf = reference::opacity_field(ref);
     const double cg = reference::cloud_fraction(og), cr = reference::cloud_fraction(orf);

@@ -53,6 +53,19 @@ inline FrameImage render_weather(const weather::Weather& w, const ViewRequest& v
   return img;
 }
 
+// The last of `frames` renders of the still view v at quality q, the first starting a new
+// history: as cloudbench holds a view (17 frames = the first, which marches every pixel, and
+// one 16-frame cycle of the 1/16-px presets).
+inline FrameImage render_still_view(CloudRenderer& r, ViewRequest v, const RenderQuality& q, int frames = 17) {
+  FrameImage img;
+  for (int f = 0; f < frames; ++f) {
+    v.frame_index = static_cast<std::uint32_t>(f);
+    v.reset_history = f == 0;
+    img = r.render(v, q);
+  }
+  return img;
+}
+
 inline FrameImage render_preset(const std::string& preset, const ViewRequest& v, const RenderQuality& q = {}) {
   return render_weather(*weather::preset(preset), v, q);
 }

@@ -6,7 +6,8 @@
 // nm), a: cloud transmittance; (fresh_depth) x: depth (m; the
 // transmittance-weighted cloud distance, or clear_ray_depth() when it meets no cloud), y:
 // how much the clouds shift the ground's share of the background seen through them from
-// the pixel's area below the horizon (0 unless the horizon crosses the pixel; see main), z: layer of that depth (-1 none), w: the sample's weight.
+// the pixel's area below the horizon (0 unless the horizon crosses the pixel; see main),
+// z: layer of that depth (-1 none), w: the sample's weight.
 #include "common.glsl"
 #include "frame_counters.glsl"
 #include "frame_uniforms.glsl"
@@ -93,7 +94,6 @@ struct RaySample {
   float T;      // their transmittance
   float depth;  // transmittance-weighted cloud distance (m), or clear_ray_depth()
   int layer;    // layer of that depth (-1 none)
-  bool hits_ground;
 };
 
 RaySample march_ray(ivec2 q, vec3 dir) {
@@ -243,7 +243,7 @@ RaySample march_ray(ivec2 q, vec3 dir) {
     C = C * ap_T + opacity * E_sun * ap_in;
   }
 
-  return RaySample(C, T, depth, depth_layer, hits_ground);
+  return RaySample(C, T, depth, depth_layer);
 }
 
 void main() {
@@ -273,8 +273,9 @@ void main() {
   // clouds in front of the ground and those in front of the sky differ (a layer just above
   // the horizon hides the sky part only), and the composite needs the share of each in the
   // transmitted background. That ground share is f T_g / T; stored is its shift from the
-  // area fraction f by the clouds, 0 where they are alike (or absent: a cleared buffer). The other side's ray keeps this ray's azimuth and mirrors its
-  // relative position within its side's elevation range (at least 5 % into it).
+  // area fraction f by the clouds, 0 where they are alike (or absent: a cleared buffer).
+  // The other side's ray keeps this ray's azimuth and mirrors its relative position within
+  // its side's elevation range (at least 5 % into it).
   vec2 ndc_centre = cloud_pixel_ndc(vec2(q));
   HorizonFootprint fp = footprint_at_horizon(ndc_centre, float(temporal.cloud_divisor) * vec2(1.0, -1.0) / frame.image_size_px,
                                              view_ray(ndc_centre));

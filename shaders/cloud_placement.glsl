@@ -1,0 +1,81 @@
+// The cloud placement of weather/cloud_placement.h on the GPU: the same hashes, cubes and
+// discs, evaluated in float relative to a centre point C on the shell (camera-relative, no
+// cancellation): per level, C's cube index (integers) and its offset inside that cube are
+// given, so cube indices near C come out exact and every length is small. Source of truth
+// for the process: weather/cloud_placement.cpp (this file must agree with it bit for bit
+// in the integer hashes; the test compares the envelopes).
+
+// weather/noise_hash.h, in 32-bit unsigned arithmetic (wraps like the C++)
+uint placement_hash32(uint x) {
+  x ^= x >> 16;
+  x *= 0x7feb352du;
+  x ^= x >> 15;
+  x *= 0x846ca68bu;
+  x ^= x >> 16;
+  return x;
+}
+uint placement_hash_cell(ivec3 c, uint seed) {
+  uint h = placement_hash32((seed * 0x9e3779b1u + 0x7f4a7c15u) ^ uint(c.x));
+  h = placement_hash32(h ^ uint(c.y));
+  return placement_hash32(h ^ uint(c.z));
+}
+float placement_unit(uint h) { return float(h >> 8) * (1.0 / 16777216.0); }
+
+const int PLACEMENT_MAX_LEVELS = 8;
+
+struct PlacementFrame {
+  vec3 centre;  // C, field frame (m), |C| = R: only its direction and dot products are used
+  float shell_radius_m;
+  int levels;
+  float smallest_cell_m;
+  float rho_min, rho_max;
+  ivec4 centre_cell[PLACEMENT_MAX_LEVELS];  // xyz: floor(C / s_k)
+  vec4 centre_offset[PLACEMENT_MAX_LEVELS];  // xyz: C - s_k floor(C / s_k), in [0, s_k)
+  vec4 acceptance;                           // p_k for the levels 0..3 at one coverage (the CPU
+                                             // reads the map at each cloud's centre)
+  vec4 acceptance_hi;                        // ... 4..7
+  uint level_seed[PLACEMENT_MAX_LEVELS];
+};
+
+// |C + d| - R without cancellation: (2 C.d + |d|^2) / (|C + d| + R).
+float placement_radial_offset(PlacementFrame pf, vec3 d) {
+  float R = pf.shell_radius_m;
+  float num = 2.0 * dot(pf.centre, d) + dot(d, d);
+  return num / (length(pf.centre + d) + R);
+}
+
+// The projection of C + d onto the shell, relative to C: d k + C (k - 1), k = R / |C + d|,
+// with k - 1 = -(|C + d| - R) / |C + d|.
+vec3 placement_project(PlacementFrame pf, vec3 d) {
+  float dr = placement_radial_offset(pf, d);
+  float len = pf.shell_radius_m + dr;
+  return d * (pf.shell_radius_m / len) - pf.centre * (dr / len);
+}
+
+// max over the clouds covering the shell point C + x of 1 - (dist / r)^2 (0 where none);
+// x relative to C (m), on the shell.
+float placement_envelope(PlacementFrame pf, vec3 x) {
+  float e = 0.0;
+  for (int k = 0; k < pf.levels; ++k) {
+    float s = pf.smallest_cell_m * exp2(float(k));
+    vec3 local = pf.centre_offset[k].xyz + x;  // x measured from C's cube corner
+    ivec3 rel = ivec3(floor(local / s));
+    float p_k = k < 4 ? pf.acceptance[k] : pf.acceptance_hi[k - 4];
+    for (int dz = -1; dz <= 1; ++dz)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          ivec3 r = rel + ivec3(dx, dy, dz);
+          uint h = placement_hash_cell(pf.centre_cell[k].xyz + r, pf.level_seed[k]);
+          vec3 u = vec3(placement_unit(placement_hash32(h ^ 1u)), placement_unit(placement_hash32(h ^ 2u)),
+                        placement_unit(placement_hash32(h ^ 3u)));
+          vec3 q = (vec3(r) + u) * s - pf.centre_offset[k].xyz;  // candidate, relative to C
+          if (!(abs(placement_radial_offset(pf, q)) < 0.5 * s)) continue;
+          if (!(placement_unit(placement_hash32(h ^ 4u)) < p_k)) continue;
+          vec3 c = placement_project(pf, q);
+          float radius = (pf.rho_min + (pf.rho_max - pf.rho_min) * placement_unit(placement_hash32(h ^ 5u))) * s;
+          float v = length(x - c) / radius;
+          e = max(e, 1.0 - v * v);
+        }
+  }
+  return e;
+}

@@ -1,0 +1,19 @@
+#version 450 core
+// Test kernel (tests/gpu_cloud_placement_test.cpp): the GPU cloud placement envelope
+// (cloud_placement.glsl) at shell points given relative to the frame's centre.
+//   in_point[i]  = (x, y, z, 0): the point minus the centre C (m, field frame)
+//   out_result[i] = (envelope, 0, 0, 0)
+#include "common.glsl"
+#include "cloud_placement.glsl"
+
+layout(local_size_x = 64) in;
+layout(std430, binding = SSBO_TEST_INPUT_A) readonly buffer Frame { PlacementFrame in_frame; };
+layout(std430, binding = SSBO_TEST_INPUT_B) readonly buffer Point { vec4 in_point[]; };
+layout(std430, binding = SSBO_TEST_OUTPUT) writeonly buffer Result { vec4 out_result[]; };
+uniform uint u_count;
+
+void main() {
+  uint i = gl_GlobalInvocationID.x;
+  if (i >= u_count) return;
+  out_result[i] = vec4(placement_envelope(in_frame, in_point[i].xyz), 0.0, 0.0, 0.0);
+}

@@ -5,21 +5,12 @@
 // for the process: weather/cloud_placement.cpp (this file must agree with it bit for bit
 // in the integer hashes; the test compares the envelopes).
 
-// weather/noise_hash.h, in 32-bit unsigned arithmetic (wraps like the C++)
-uint placement_hash32(uint x) {
-  x ^= x >> 16;
-  x *= 0x7feb352du;
-  x ^= x >> 15;
-  x *= 0x846ca68bu;
-  x ^= x >> 16;
-  return x;
-}
+// weather/noise_hash.h's hash_cell (hash32, hash_to_unit: common.glsl)
 uint placement_hash_cell(ivec3 c, uint seed) {
-  uint h = placement_hash32((seed * 0x9e3779b1u + 0x7f4a7c15u) ^ uint(c.x));
-  h = placement_hash32(h ^ uint(c.y));
-  return placement_hash32(h ^ uint(c.z));
+  uint h = hash32((seed * 0x9e3779b1u + 0x7f4a7c15u) ^ uint(c.x));
+  h = hash32(h ^ uint(c.y));
+  return hash32(h ^ uint(c.z));
 }
-float placement_unit(uint h) { return float(h >> 8) * (1.0 / 16777216.0); }
 
 const int PLACEMENT_MAX_LEVELS = 8;
 
@@ -66,13 +57,13 @@ float placement_envelope(PlacementFrame pf, vec3 x) {
         for (int dx = -1; dx <= 1; ++dx) {
           ivec3 r = rel + ivec3(dx, dy, dz);
           uint h = placement_hash_cell(pf.centre_cell[k].xyz + r, pf.level_seed[k]);
-          vec3 u = vec3(placement_unit(placement_hash32(h ^ 1u)), placement_unit(placement_hash32(h ^ 2u)),
-                        placement_unit(placement_hash32(h ^ 3u)));
+          vec3 u = vec3(hash_to_unit(hash32(h ^ 1u)), hash_to_unit(hash32(h ^ 2u)),
+                        hash_to_unit(hash32(h ^ 3u)));
           vec3 q = (vec3(r) + u) * s - pf.centre_offset[k].xyz;  // candidate, relative to C
           if (!(abs(placement_radial_offset(pf, q)) < 0.5 * s)) continue;
-          if (!(placement_unit(placement_hash32(h ^ 4u)) < p_k)) continue;
+          if (!(hash_to_unit(hash32(h ^ 4u)) < p_k)) continue;
           vec3 c = placement_project(pf, q);
-          float radius = (pf.rho_min + (pf.rho_max - pf.rho_min) * placement_unit(placement_hash32(h ^ 5u))) * s;
+          float radius = (pf.rho_min + (pf.rho_max - pf.rho_min) * hash_to_unit(hash32(h ^ 5u))) * s;
           float v = length(x - c) / radius;
           e = max(e, 1.0 - v * v);
         }

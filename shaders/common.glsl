@@ -42,9 +42,13 @@ float altitude_of(vec3 p, float R, float h) {
 // Unit "up" (away from the shell centre) at point p.
 vec3 up_at(vec3 p, float R, float h) { return normalize(p + vec3(0.0, 0.0, R + h)); }
 
-// Small integer hash (PCG-style) -> [0, 1).
-float hash12(uvec2 v) {
-  uint s = v.x * 1664525u + v.y * 1013904223u;
-  s ^= s >> 16; s *= 0x7feb352du; s ^= s >> 15; s *= 0x846ca68bu; s ^= s >> 16;
-  return float(s >> 8) * (1.0 / 16777216.0);
+// The "lowbias32" integer finaliser, the same as weather/noise_hash.h's hash32 (wraps mod
+// 2^32 like the C++), and a uniform float in [0, 1) from its top 24 bits (hash_to_unit).
+uint hash32(uint x) {
+  x ^= x >> 16; x *= 0x7feb352du; x ^= x >> 15; x *= 0x846ca68bu; x ^= x >> 16;
+  return x;
 }
+float hash_to_unit(uint h) { return float(h >> 8) * (1.0 / 16777216.0); }
+
+// Small integer hash (PCG-style) -> [0, 1).
+float hash12(uvec2 v) { return hash_to_unit(hash32(v.x * 1664525u + v.y * 1013904223u)); }

@@ -8,6 +8,7 @@
 #include "protocol/codec.h"
 #include "protocol/framing.h"
 #include "protocol/handshake.h"
+#include "sim_client/connection_failure.h"
 #include "sim_client/service_address.h"
 
 namespace cloudsvc::client {
@@ -51,7 +52,7 @@ struct ServiceConnection::Impl {
   void write(const std::vector<std::uint8_t>& bytes) {
     asio::error_code ec;
     std::visit([&](auto& s) { asio::write(s, asio::buffer(bytes), ec); }, socket);
-    if (ec) throw ConnectionError("send failed: " + ec.message());
+    if (ec) throw ConnectionError(connection_failure_text("send", ec));
   }
 
   // Reads once (with timeout) and decodes whatever completed. False on timeout.
@@ -74,7 +75,7 @@ struct ServiceConnection::Impl {
       io.run();  // let the cancelled read finish
       if (!done || ec == asio::error::operation_aborted) return false;
     }
-    if (ec) throw ConnectionError("connection closed by the service: " + ec.message());
+    if (ec) throw ConnectionError(connection_failure_text("receive", ec));
     decoder.feed(std::span<const std::uint8_t>(buffer.data(), n));
     while (auto payload = decoder.next()) {
       protocol::DecodeResult r = protocol::decode(*payload);

@@ -5,6 +5,7 @@
 
 #include "protocol/codec.h"
 #include "sim_client/client_session.h"
+#include "sim_client/connection_failure.h"
 #include "sim_client/service_address.h"
 
 namespace cloudsvc::sim {
@@ -119,7 +120,7 @@ void SoakClient::write_next() {
   asio::async_write(socket_, buffers, [self = shared_from_this()](const asio::error_code& ec, std::size_t) {
     if (self->state_ == State::Closed) return;
     if (ec) {
-      self->lost("send failed: " + ec.message());
+      self->lost(client::connection_failure_text("send", ec));
       return;
     }
     for (const Bytes& b : self->writing_) self->queued_bytes_ -= b->size();
@@ -137,7 +138,7 @@ void SoakClient::read() {
 void SoakClient::on_read(const asio::error_code& ec, std::size_t n) {
   if (state_ == State::Closed) return;
   if (ec) {
-    lost("connection closed by the service: " + ec.message());
+    lost(client::connection_failure_text("receive", ec));
     return;
   }
   decoder_.feed(std::span<const std::uint8_t>(buffer_.data(), n));

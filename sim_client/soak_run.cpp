@@ -244,9 +244,14 @@ SoakSummary run_soak(const SoakOptions& o, const std::function<void(const std::s
   threads.stop();
   for (const auto& c : clients) {
     s.clients.push_back(c->stats());
+    // the latest of the clients' final Stats: most poses, then most frames (both clients
+    // ask at the same moment, so the pose counts often tie while a frame completes between
+    // the two answers)
     const auto& end_stats = c->final_service_stats();
-    if (end_stats && (!s.service_end || end_stats->poses_received > s.service_end->poses_received))
-      s.service_end = end_stats;
+    const auto later = [](const protocol::Stats& a, const protocol::Stats& b) {
+      return std::pair(a.poses_received, a.frames_rendered) > std::pair(b.poses_received, b.frames_rendered);
+    };
+    if (end_stats && (!s.service_end || later(*end_stats, *s.service_end))) s.service_end = end_stats;
   }
   return s;
 }

@@ -30,6 +30,7 @@ struct CloudLayerGpu {
   int stratiform;                            // 1: sheet not driven by the map's type channel
   alignas(16) glm::vec3 detail_noise_offset;  // ... in detail-noise periods, wrapped
   float unused_pad;
+  alignas(16) glm::vec4 anvil;  // weather::Anvil: spread (0: none), base, top, density_ratio
   glm::mat4 noise_rotation;  // upper 3x3: local ENU -> ECEF axes of the wind-rotated field
 };
 
@@ -75,7 +76,7 @@ struct FrameUniforms {
   CloudLayerGpu layers[gpu::kMaxLayers];
 };
 
-static_assert(sizeof(CloudLayerGpu) == 10 * 16, "std140 layout");
-static_assert(sizeof(FrameUniforms) == 64 + 19 * 16 + gpu::kMaxLayers * 10 * 16, "std140 layout");
+static_assert(sizeof(CloudLayerGpu) == 11 * 16, "std140 layout");
+static_assert(sizeof(FrameUniforms) == 64 + 19 * 16 + gpu::kMaxLayers * 11 * 16, "std140 layout");
 
 }  // namespace cloudsvc

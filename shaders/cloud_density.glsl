@@ -77,6 +77,24 @@ float local_coverage(CloudLayerGpu L, vec4 w) {
   return clamp(c + 1.2 * min(c, 1.0 - c) * (w.r - 0.5) * 2.0, 0.0, 1.0);
 }
 
+// The anvil of a convective layer (weather::Anvil, weather/cloud_layer.h): its weight at
+// the layer's height fraction f, rising over the lowest fifth of the band [base, top] and
+// falling over its top fifth (0 outside the band and for layers without an anvil).
+float anvil_weight(CloudLayerGpu L, float f) {
+  if (L.anvil.x <= 0.0) return 0.0;
+  float r = 0.2 * (L.anvil.z - L.anvil.y);
+  return smoothstep(L.anvil.y, L.anvil.y + r, f) * (1.0 - smoothstep(L.anvil.z - r, L.anvil.z, f));
+}
+
+// Largest anvil_weight over [f0, f1]: the weight rises to a plateau around the band's
+// middle and falls after it, so its maximum is at the interval's point nearest that middle.
+float anvil_weight_max(CloudLayerGpu L, float f0, float f1) {
+  return anvil_weight(L, clamp(0.5 * (L.anvil.y + L.anvil.z), f0, f1));
+}
+
+// The shield's wider coverage 1 - (1 - c)^(1 + spread w) (c where w = 0; 0 stays 0).
+float anvil_coverage(CloudLayerGpu L, float c, float w) { return 1.0 - pow(1.0 - c, 1.0 + L.anvil.x * w); }
+
 // How cloud_extinction treats the detail noise: not at all (light marches and ground
 // shadows, which see only the base shape), sampled, or replaced by its mean value (level
 // of detail: where a pixel's footprint spans several detail texels their erosion averages
@@ -138,6 +156,11 @@ bool cloud_may_be_on_segment(int li, vec3 a, vec3 b, vec4 w) {
   // height fractions of the profile (1 m of slack: the ray's altitude between the ends)
   float g0 = (min(alt_a, alt_b) - 1.0 - L.base_m) / span, g1 = (max(alt_a, alt_b) + 1.0 - L.base_m) / span;
   if (g1 <= 0.0 || g0 >= 1.0) return false;
+  // the anvil widens the coverage (never narrows it): its largest weight over the layer's
+  // height fractions of the segment
+  float thickness = L.top_m - L.base_m;
+  coverage = anvil_coverage(L, coverage, anvil_weight_max(L, (min(alt_a, alt_b) - 1.0 - L.base_m) / thickness,
+                                                           (max(alt_a, alt_b) + 1.0 - L.base_m) / thickness));
   float profile_bound = height_profile_max(L, max(g0, 0.0), min(g1, 1.0));
   vec3 ua = field_point(L, a, alt_a) * L.base_noise_frequency + L.base_noise_offset;
   vec3 ub = field_point(L, b, alt_b) * L.base_noise_frequency + L.base_noise_offset;
@@ -167,6 +190,16 @@ float cloud_extinction_in(int li, vec3 p, float alt, int detail, vec4 w, out flo
   // Coverage threshold: the shape exceeds Q(1 - c) over a fraction c of the area (at
   // mid-profile), with a soft edge; full cover (c = 1) keeps nearly all of the shape.
   float d = saturate((shape * profile - noise_quantile(1.0 - coverage)) / COVERAGE_EDGE);
+  // In an anvil's band the cloud fills the wider coverage c_w too, the part outside the
+  // tower thinner: the extinction factor falls from 1 to density_ratio where the tower's
+  // own d is 0, by the anvil's weight w (1 again where w = 0: continuous at the band's edges).
+  float anvil_factor = 1.0;
+  float w_anvil = anvil_weight(L, f);
+  if (w_anvil > 0.0) {
+    float d_shield = saturate((shape * profile - noise_quantile(1.0 - anvil_coverage(L, coverage, w_anvil))) / COVERAGE_EDGE);
+    anvil_factor = 1.0 - w_anvil * (1.0 - L.anvil.w) * (1.0 - d);
+    d = max(d, d_shield);
+  }
   if (d <= 0.0) return 0.0;
   if (detail != DETAIL_NONE && d < 1.0) {
     float dn = detail == DETAIL_SAMPLED ? textureLod(detail_noise, p_field * L.detail_noise_frequency + L.detail_noise_offset, 0.0).r
@@ -174,7 +207,7 @@ float cloud_extinction_in(int li, vec3 p, float alt, int detail, vec4 w, out flo
     d = saturate(remap(d, dn * L.detail_erosion, 1.0, 0.0, 1.0));
   }
   float density_mod = exp2(2.0 * (w.b - 0.5));
-  return d * L.density_scale * density_mod * L.extinction_max;
+  return d * anvil_factor * L.density_scale * density_mod * L.extinction_max;
 }
 
 // The same where the weather is read at p itself.

@@ -13,6 +13,7 @@ struct CloudLayerGpu {
   int stratiform;
   vec3 detail_noise_offset;
   float unused_pad;
+  vec4 anvil;  // weather::Anvil: spread (0: none), base, top, density_ratio
   mat4 noise_rotation;
 };
 

@@ -14,6 +14,7 @@
 #include "renderer/reference/cloud_morphology.h"
 #include "renderer/reference/reference_inputs.h"
 #include "weather/cloud_layer.h"
+#include "weather/presets.h"
 
 namespace cloudsvc::reference {
 namespace {
@@ -160,6 +161,49 @@ TEST(CloudMorphology, AnvilRatioFollowsTheLayersVerticalProfile) {
     EXPECT_GE(a.ratio, c.lo);
     EXPECT_LE(a.ratio, c.hi);
   }
+}
+
+// The cumulonimbus preset's towers spread into anvils under the layer top (weather::Anvil),
+// at places the morphology benchmark does not use. The weather map decides how many cells
+// reach the top (its type channel; elsewhere they stop as towering cumulus): where the
+// towers alone fill the top fifth about as much as mid-height, the anvil makes the top
+// fifth's cloud fraction at least twice mid-height's (the target); wherever
+// towers reach the band, it at least doubles their area there (or closes the shield);
+// below the band nothing changes.
+TEST(CloudMorphology, CumulonimbusTowersSpreadIntoAnvils) {
+  const weather::Weather w = *weather::preset("cumulonimbus");
+  const auto inputs = reference_inputs(InputConfig{}, w.map_seed);
+  struct Place {
+    double lat, lon;
+    const char* time;
+  };
+  int full_depth_places = 0;
+  for (const Place& p : {Place{27.5, -81.0, "2026-07-15T19:00:00Z"}, Place{-2.0, 23.0, "2026-03-10T13:00:00Z"},
+                         Place{35.0, -97.0, "2026-05-20T22:00:00Z"}, Place{12.0, 105.0, "2026-08-01T08:00:00Z"}}) {
+    ViewRequest v;
+    v.position = {p.lat, p.lon, 20000.0};
+    v.attitude = {0.0, -90.0, 0.0};
+    v.unix_time_s = *geo::parse_utc_iso8601(p.time);
+    v.width = v.height = 64;
+    ReferenceScene scene = make_reference_scene(v, w);
+    const int cb = 1;
+    ASSERT_EQ(w.layers[cb].type, weather::CloudType::Cumulonimbus);
+    const double sigma_min = 0.05 * scene.layers[cb].density_scale * scene.layers[cb].sigma_max_per_m;
+    const AnvilRatio with = anvil_ratio(scene, CloudField(scene, *inputs), cb, 25000.0, 250.0, sigma_min);
+    scene.layers[cb].anvil.spread = 0.0f;
+    const AnvilRatio towers = anvil_ratio(scene, CloudField(scene, *inputs), cb, 25000.0, 250.0, sigma_min);
+    std::printf("%.1f, %.1f: mid-height %.3f, top fifth %.3f (towers alone %.3f): anvil ratio %.2f (towers alone %.2f)\n",
+                p.lat, p.lon, with.mid_fraction, with.top_fraction, towers.top_fraction, with.ratio, towers.ratio);
+    ASSERT_GT(with.mid_fraction, 0.02) << "a place with cumulonimbus";
+    EXPECT_DOUBLE_EQ(with.mid_fraction, towers.mid_fraction) << "the anvil is confined to the layer's top";
+    ASSERT_GT(towers.top_fraction, 0.02) << "some towers reach the anvil's band";
+    EXPECT_GE(with.top_fraction, std::min(2.0 * towers.top_fraction, 0.9));
+    if (towers.ratio >= 0.8) {
+      ++full_depth_places;
+      EXPECT_GE(with.ratio, 2.0);
+    }
+  }
+  EXPECT_GE(full_depth_places, 2);
 }
 
 }  // namespace

@@ -1,9 +1,10 @@
 // Light marches stop once the sun's beam is spent (RenderQuality::light_march_cutoff,
 // shaders/cloud_lighting.glsl): past an optical depth of 12 towards the sun the sun term
 // e^-tau is below 6e-6 of its unshadowed value whatever lies beyond, so the image may not
-// change visibly while thick clouds need far fewer density evaluations. Cumulonimbus (the
-// thickest preset) and a stratocumulus deck at sunset (long slant light paths), every
-// pixel marched in full.
+// change visibly while thick clouds need far fewer density evaluations. Cumulonimbus towers
+// seen from beside them at 3 km (the thickest preset; from above, the thin anvil shield
+// hides them and its light marches rarely reach tau 12) and a stratocumulus deck at sunset
+// (long slant light paths), every pixel marched in full.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -16,10 +17,18 @@
 namespace cloudsvc::test {
 namespace {
 
+const std::vector<accuracy::AccuracyScene>& thick_scenes() {
+  static const std::vector<accuracy::AccuracyScene> scenes = {
+      accuracy::accuracy_scenes()[7],  // above stratocumulus at sunset
+      {"beside cumulonimbus towers", "cumulonimbus", 3000.0, 135.0, 8.0, "2026-06-21T14:00:00Z", false},
+  };
+  return scenes;
+}
+
 class LightCutoff : public ::testing::TestWithParam<int> {};
 
 TEST_P(LightCutoff, StopsSpentLightMarchesWithoutChangingTheImage) {
-  const accuracy::AccuracyScene& s = accuracy::accuracy_scenes()[static_cast<size_t>(GetParam())];
+  const accuracy::AccuracyScene& s = thick_scenes()[static_cast<size_t>(GetParam())];
   const ViewRequest v = accuracy::accuracy_view(s, 96, 54);
   // one octave (every preset), and three: the cut-off then applies to the slowest-decaying
   // octave, e^(-a^2 tau) with a = ms_extinction_scale = 0.4, i.e. at tau = 12 / 0.16 = 75
@@ -52,13 +61,12 @@ TEST_P(LightCutoff, StopsSpentLightMarchesWithoutChangingTheImage) {
 }
 
 std::string scene_name(const ::testing::TestParamInfo<int>& info) {
-  std::string n = accuracy::accuracy_scenes()[static_cast<size_t>(info.param)].name;
+  std::string n = thick_scenes()[static_cast<size_t>(info.param)].name;
   for (char& c : n) if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
   return n;
 }
 
-// indices into accuracy_scenes(): above stratocumulus at sunset, cumulonimbus
-INSTANTIATE_TEST_SUITE_P(ThickClouds, LightCutoff, ::testing::Values(7, 8), scene_name);
+INSTANTIATE_TEST_SUITE_P(ThickClouds, LightCutoff, ::testing::Values(0, 1), scene_name);
 
 }  // namespace
 }  // namespace cloudsvc::test

@@ -46,7 +46,7 @@ constexpr std::array<TypeEntry, 11> kTypes = {{
 
 CloudTypeTraits make_traits(HeightProfile profile, double base_m, double top_m,
                             double droplet_um, double density_scale, double noise_scale_m,
-                            bool stratiform, double noise_vertical_scale = 1.0) {
+                            bool stratiform, double noise_vertical_scale = 1.0, Anvil anvil = {}) {
   CloudTypeTraits t;
   t.profile = profile;
   t.default_base_m = base_m;
@@ -56,6 +56,7 @@ CloudTypeTraits make_traits(HeightProfile profile, double base_m, double top_m,
   t.noise_scale_m = noise_scale_m;
   t.stratiform = stratiform;
   t.noise_vertical_scale = noise_vertical_scale;
+  t.anvil = anvil;
   return t;
 }
 
@@ -90,7 +91,10 @@ const std::array<CloudTypeTraits, 11>& traits_table() {
       // to top (a profile growing with height, thresholded by coverage, left only
       // floating upper blobs). Shape noise stretched 2x vertically for towers; period
       // 24 km: cells ~6 km across.
-      make_traits({0.03f, 0.1f, 0.0f, 0.5f}, 1000, 12000, 30, 0.35, 24000, false, 0.5),
+      // Anvil (weather::Anvil): a shield over height fractions 0.78-0.96 of the layer (2 km
+      // of the default 11 km depth) spreading the cells' coverage c to 1 - (1 - c)^5 (0.35 ->
+      // 0.88) at 0.15 of the tower's extinction.
+      make_traits({0.03f, 0.1f, 0.0f, 0.5f}, 1000, 12000, 30, 0.35, 24000, false, 0.5, {4.0f, 0.78f, 0.96f, 0.15f}),
       // Cumulus: fair-weather convective cloud, base ~1-1.5 km, 1-2 km deep. Flat base
       // (small bottom ramp), rounded top (large top ramp); d ~20 um, LWC ~0.5 g/m^3 ->
       // 0.5 / 1.26 = 0.40. Cells ~1-2 km.

@@ -69,6 +69,27 @@ float type_depth_fraction(float t, bool stratiform);
 // independently re-implements).
 float type_height_profile(const HeightProfile& p, bool stratiform, float f, float t);
 
+// The anvil of a convective layer: where the updrafts of cells that reach the top of the
+// layer (the equilibrium level under the tropopause) meet the stable air above, the cloud
+// spreads sideways into a thin ice shield many times the tower's width (Houze 1993, Cloud
+// Dynamics, ch. 8; anvils 1-3 km deep), and the strongest cores overshoot above it. Over the
+// band [base, top] of the layer's height fraction f (the layer's own fraction, not the
+// type channel's scaled one: only cells that reach the band spread) the weight
+//   w(f) = smoothstep(base, base + r, f) * (1 - smoothstep(top - r, top, f)),  r = (top - base) / 5
+// rises sharply (the anvil's smooth flat base) and falls under the layer top (cores
+// overshoot above the shield). Where w > 0 the cloud also fills where the shape exceeds the
+// threshold of the wider coverage c_w = 1 - (1 - c)^(1 + spread w), at density_ratio times
+// the tower's extinction (ice: IWC ~0.1-0.5 g/m^3 against the core's ~1.5 g/m^3 of liquid,
+// Heymsfield et al. 2002): sigma ~ max(d(c), density_ratio d(c_w)). spread = 0: no anvil.
+// shaders/cloud_density.glsl (anvil_weight, anvil_coverage) and
+// renderer/reference/cloud_field.cpp evaluate it.
+struct Anvil {
+  float spread = 0.0f;         // 0: none; the exponent's growth at full weight
+  float base = 0.78f;          // height fraction of the layer where the shield begins
+  float top = 0.96f;           // ... and where it has thinned back to the towers
+  float density_ratio = 0.15f; // shield extinction over the tower's, at the same d
+};
+
 // Typical values of a cloud type (defaults for layers that do not give their own; see
 // weather/cloud_layer.cpp for the sources of each number).
 //   default_density_scale multiplies the microphysical extinction
@@ -89,6 +110,7 @@ struct CloudTypeTraits {
   // < 1 stretches features upwards (convective towers), > 1 flattens them (sheets).
   double noise_vertical_scale = 1.0;
   bool stratiform = false;
+  Anvil anvil;  // spread 0 except cumulonimbus
 };
 const CloudTypeTraits& cloud_type_traits(CloudType t);
 

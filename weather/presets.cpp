@@ -34,7 +34,8 @@ const std::vector<PresetSpec>& presets() {
       {"overcast-stratus", 4, {{CloudType::Stratus, 400, 900, 1.0, 4, -2}}},
       // Marine-style stratocumulus sheet with small breaks (~7 oktas).
       {"stratocumulus-deck", 5, {{CloudType::Stratocumulus, 1200, 1800, 0.85, 7, 1}}},
-      // Isolated thunderstorms reaching the tropopause among low fair-weather cumulus.
+      // Thunderstorms reaching the tropopause among low fair-weather cumulus; their anvils
+      // (weather::Anvil) merge into a shield where the weather map clusters them.
       // The cumulus layer sits below the Cb base: layers may not overlap in altitude.
       {"cumulonimbus",
        6,

@@ -38,6 +38,20 @@ double CloudField::height_profile(const ReferenceLayer& l, double x) {
   return bottom * top * (1.0 + (x - 1.0) * l.top_weight);  // mix(1, x, top_weight)
 }
 
+double CloudField::anvil_weight(const ReferenceLayer& l, double f) {
+  if (!(l.anvil.spread > 0.0f)) return 0.0;
+  const double base = l.anvil.base, top = l.anvil.top, r = 0.2 * (top - base);
+  return smoothstep(base, base + r, f) * (1.0 - smoothstep(top - r, top, f));
+}
+
+double CloudField::anvil_weight_max(const ReferenceLayer& l, double f0, double f1) {
+  return anvil_weight(l, std::clamp(0.5 * (static_cast<double>(l.anvil.base) + l.anvil.top), f0, f1));
+}
+
+double CloudField::anvil_coverage(const ReferenceLayer& l, double c, double w) {
+  return 1.0 - std::pow(1.0 - c, 1.0 + static_cast<double>(l.anvil.spread) * w);
+}
+
 CloudSample CloudField::sample(int li, const glm::dvec3& p, double alt, bool detail, std::uint64_t& evals) const {
   CloudSample out;
   const ReferenceLayer& L = scene_.layers[static_cast<std::size_t>(li)];
@@ -59,6 +73,13 @@ CloudSample CloudField::sample(int li, const glm::dvec3& p, double alt, bool det
   const double shape = sample_r8_trilinear_repeat(inputs_.base_noise, field / L.base_period_m);
   const double threshold = interpolate_quantile(inputs_.base_quantiles, 1.0 - out.coverage);
   double d = saturate((shape * profile - threshold) / kCoverageEdge);
+  double anvil_factor = 1.0;  // step 5 of the header
+  if (const double w_anvil = anvil_weight(L, f); w_anvil > 0.0) {
+    const double shield_threshold = interpolate_quantile(inputs_.base_quantiles, 1.0 - anvil_coverage(L, out.coverage, w_anvil));
+    const double d_shield = saturate((shape * profile - shield_threshold) / kCoverageEdge);
+    anvil_factor = 1.0 - w_anvil * (1.0 - static_cast<double>(L.anvil.density_ratio)) * (1.0 - d);
+    d = std::max(d, d_shield);
+  }
   if (d <= 0.0) return out;
   if (detail && d < 1.0) {
     const double dn = sample_r8_trilinear_repeat(inputs_.detail_noise, field / L.detail_period_m);
@@ -66,7 +87,7 @@ CloudSample CloudField::sample(int li, const glm::dvec3& p, double alt, bool det
     d = saturate((d - floor_value) / (1.0 - floor_value));
   }
   const double density_modulation = std::exp2(2.0 * (w.b - 0.5));
-  out.sigma_t = d * L.density_scale * density_modulation * L.sigma_max_per_m;
+  out.sigma_t = d * anvil_factor * L.density_scale * density_modulation * L.sigma_max_per_m;
   return out;
 }
 

@@ -14,9 +14,12 @@
 //      type's noise vertical scale k: R (X + (k - 1) a n), n the shell's up at the point
 //      (k < 1 stretches features upwards: convective towers);
 //      d = saturate((S P - Q(1 - c)) / 0.12), Q the base noise's quantile function;
-//   4. where 0 < d < 1 and detail is wanted: D = trilinear detail noise at
+//   4. anvil (weather::Anvil; layers with spread > 0): with its weight w = W(f) > 0, the
+//      shield's d_s = saturate((S P - Q(1 - c_w)) / 0.12), c_w = 1 - (1 - c)^(1 + spread w);
+//      factor a = 1 - w (1 - density_ratio)(1 - d), then d = max(d, d_s) (a = 1 elsewhere);
+//   5. where 0 < d < 1 and detail is wanted: D = trilinear detail noise at
 //      (field position) / detail period, d = saturate((d - D e) / (1 - D e)), e = erosion;
-//   5. sigma_t = d * density_scale * 2^(2 (w.b - 0.5)) * sigma_max (1/m).
+//   6. sigma_t = d * a * density_scale * 2^(2 (w.b - 0.5)) * sigma_max (1/m).
 #pragma once
 
 #include <cstdint>
@@ -51,6 +54,12 @@ class CloudField {
   // The pieces, for tests: weather map value at p; the vertical profile at height fraction x.
   glm::dvec4 weather_at(const glm::dvec3& p) const;
   static double height_profile(const ReferenceLayer& layer, double x);
+  // The anvil (weather::Anvil): its weight at the layer's height fraction f, the largest
+  // weight over [f0, f1] (at the interval's point nearest the band's middle: the weight
+  // rises to a plateau there and falls after it), the shield's coverage for c at weight w.
+  static double anvil_weight(const ReferenceLayer& layer, double f);
+  static double anvil_weight_max(const ReferenceLayer& layer, double f0, double f1);
+  static double anvil_coverage(const ReferenceLayer& layer, double c, double w);
 
   const ReferenceScene& scene() const { return scene_; }
 

@@ -100,6 +100,7 @@ ReferenceScene make_reference_scene(const ViewRequest& view, const weather::Weat
     r.top_weight = tr.profile.top_weight;
     r.noise_vertical_scale = tr.noise_vertical_scale;
     r.stratiform = tr.stratiform;
+    r.anvil = tr.anvil;
     const glm::dmat3 rot = field_rotation(l.wind, a, view.unix_time_s);
     r.field_from_local = rot * s.shell.enu_to_ecef;
     r.camera_field = rot * s.shell.camera_ecef;

@@ -73,6 +73,7 @@ struct ReferenceLayer {
   double bottom_ramp = 0.1, top_ramp = 0.3, top_weight = 0.0;  // height profile (type traits)
   double noise_vertical_scale = 1.0;  // k: the noise is sampled at X + (k - 1) a(X) n(X) (type trait)
   bool stratiform = false;
+  weather::Anvil anvil;               // the type's anvil (spread 0: none)
   // The noise field coordinate (m, ECEF axes of the wind-rotated field) of a local point p
   // at altitude a with up vector n (shell frame) is
   //   camera_field + field_from_local * (p + (k - 1) a n),

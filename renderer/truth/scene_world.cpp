@@ -75,7 +75,9 @@ double cloud_extinction_bound(const reference::ReferenceLayer& L, const FieldMax
   // x = f / f_v with the depth fraction f_v in [0.3, 1] (1 for a stratiform layer honoured as such)
   const double fv_min = (honour_stratiform && L.stratiform) ? 1.0 : 0.3;
   const double profile = profile_bound(L, f0, f1 / fv_min);
-  const double threshold = reference::interpolate_quantile(maxima.base_quantiles, 1.0 - c_max);
+  // an anvil widens the coverage (its factor a <= 1 only thins the shield)
+  const double c_bound = reference::CloudField::anvil_coverage(L, c_max, reference::CloudField::anvil_weight_max(L, f0, f1));
+  const double threshold = reference::interpolate_quantile(maxima.base_quantiles, 1.0 - c_bound);
   const double d = std::clamp((maxima.base_noise * profile - threshold) / reference::kCoverageEdge, 0.0, 1.0);
   return d * L.density_scale * std::exp2(2.0 * (maxima.map_density - 0.5)) * L.sigma_max_per_m;
 }
@@ -97,13 +99,15 @@ SceneLocalMajorant::SceneLocalMajorant(const reference::ReferenceScene& scene,
                                        const std::vector<double>& band_edges)
     : scene_(scene), inputs_(inputs), edges_(band_edges) {
   for (std::size_t i = 0; i + 1 < edges_.size(); ++i) {
-    std::vector<double> row;
+    std::vector<double> row, anvil_row;
     for (const reference::ReferenceLayer& L : scene.layers) {
       const double f0 = (edges_[i] - L.base_m) / (L.top_m - L.base_m), f1 = (edges_[i + 1] - L.base_m) / (L.top_m - L.base_m);
       const double fv_min = (honour_stratiform && L.stratiform) ? 1.0 : 0.3;
       row.push_back(edges_[i + 1] <= L.base_m || edges_[i] >= L.top_m ? 0.0 : profile_bound(L, f0, f1 / fv_min));
+      anvil_row.push_back(reference::CloudField::anvil_weight_max(L, f0, f1));
     }
     profile_.push_back(std::move(row));
+    anvil_.push_back(std::move(anvil_row));
   }
   if (!inputs.base_noise.data.empty()) base_ = weather::NoiseMaxPyramid(inputs.base_noise);
   const weather::WeatherMap& map = inputs.weather_map;
@@ -176,7 +180,8 @@ double SceneLocalMajorant::cloud_bound(int band, const glm::dvec3& a, const glm:
     const glm::dvec3 lo = (glm::min(f[0], f[1]) - widen) / L.base_period_m;
     const glm::dvec3 hi = (glm::max(f[0], f[1]) + widen) / L.base_period_m;
     const double noise = base_.max_over(lo, hi);
-    const double threshold = reference::interpolate_quantile(inputs_.base_quantiles, 1.0 - c_max);
+    const double c_bound = reference::CloudField::anvil_coverage(L, c_max, anvil_[static_cast<std::size_t>(band)][li]);
+    const double threshold = reference::interpolate_quantile(inputs_.base_quantiles, 1.0 - c_bound);
     const double d = std::clamp((noise * prof[li] - threshold) / reference::kCoverageEdge, 0.0, 1.0);
     bound += d * L.density_scale * std::exp2(2.0 * (map_max.y - 0.5)) * L.sigma_max_per_m;
   }

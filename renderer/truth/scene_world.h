@@ -68,6 +68,7 @@ class SceneLocalMajorant final : public LocalCloudMajorant {
   const reference::ReferenceInputs& inputs_;
   std::vector<double> edges_;
   std::vector<std::vector<double>> profile_;  // [band][layer]: height-profile bound
+  std::vector<std::vector<double>> anvil_;    // [band][layer]: largest anvil weight (CloudField::anvil_weight_max)
   weather::NoiseMaxPyramid base_;
   glm::dvec2 polar_[2];  // largest R, B of the 4 rows next to the south / north pole and the pole
 };

@@ -98,9 +98,10 @@ inline std::vector<BenchScene> make_scene_set(const SceneSetSpec& spec, int w, i
 }
 
 // Everything the reference image of a scene depends on besides the code: the view (position,
-// attitude, time, field of view, size), the reference's rays per pixel and every field of the
-// weather, printed at full double precision. Two scenes share a cached reference only if
-// their keys are equal.
+// attitude, time, field of view, size), the reference's rays per pixel, every field of the
+// weather and the traits of each layer's cloud type (profile, noise, anvil: tuned as the
+// model evolves), printed at full double precision. Two scenes share a cached reference
+// only if their keys are equal.
 inline std::string reference_key(const BenchScene& s, int ref_samples) {
   const ViewRequest& v = s.view;
   char b[512];
@@ -112,6 +113,11 @@ inline std::string reference_key(const BenchScene& s, int ref_samples) {
   for (const weather::CloudLayer& l : s.weather.layers) {
     std::snprintf(b, sizeof b, " | %d %.17g %.17g %.17g %.17g %.17g %.17g %.17g", static_cast<int>(l.type), l.base_m,
                   l.top_m, l.coverage, l.density_scale, l.droplet_diameter_um, l.wind.east_mps, l.wind.north_mps);
+    key += b;
+    const weather::CloudTypeTraits& t = weather::cloud_type_traits(l.type);
+    std::snprintf(b, sizeof b, " traits %.9g %.9g %.9g %.9g %.17g %.17g %d anvil %.9g %.9g %.9g %.9g", t.profile.bottom_ramp,
+                  t.profile.top_ramp, t.profile.top_weight, t.profile.base_erosion, t.noise_scale_m, t.noise_vertical_scale,
+                  t.stratiform ? 1 : 0, t.anvil.spread, t.anvil.base, t.anvil.top, t.anvil.density_ratio);
     key += b;
   }
   return key;

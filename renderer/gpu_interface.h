@@ -52,7 +52,8 @@ namespace cloudsvc::gpu {
   X(CLOUD_DEPTH_OUT, 1)             \
   X(FRAME_OUT, 0)                   \
   X(SHADOW_MAP_OUT, 0)              \
-  X(LIGHT_VOLUME_OUT, 0)
+  X(LIGHT_VOLUME_OUT, 0)            \
+  X(PLACEMENT_RINGS_OUT, 0)
 
 // Shader storage buffers. GLSL: SSBO_<NAME>.
 #define CLOUDSVC_GPU_STORAGE_BUFFERS(X)                                           \
@@ -60,7 +61,8 @@ namespace cloudsvc::gpu {
   X(COVERAGE_PYRAMID, 1) /* coverage max-pyramid (coverage_pyramid.glsl) */       \
   X(TEST_INPUT_A, 2)     /* test programs' inputs and output */                   \
   X(TEST_INPUT_B, 3)                                                              \
-  X(TEST_OUTPUT, 4)
+  X(TEST_OUTPUT, 4)                                                               \
+  X(PLACEMENT_RING_JOB, 5) /* one ring's job and acceptance table (placement_rings.comp) */
 
 // Uniform blocks. GLSL: UBO_<NAME>.
 #define CLOUDSVC_GPU_UNIFORM_BLOCKS(X) \

@@ -1,40 +1,24 @@
 // Cloud density field (Schneider 2015, "The real-time volumetric cloudscapes of Horizon
 // Zero Dawn"; Ford 2024 §3.1, §4.2): coverage from the layer and the global weather map, a
 // vertical profile by cloud type, Perlin-Worley base shape and Worley detail erosion. Returns the extinction coefficient sigma_t in 1/m.
-// Needs frame_uniforms.glsl and common.glsl.
+// Needs frame_uniforms.glsl, common.glsl and weather_map_sampling.glsl.
 
 layout(binding = TEX_BASE_NOISE) uniform sampler3D base_noise;      // tiles (REPEAT)
 layout(binding = TEX_DETAIL_NOISE) uniform sampler3D detail_noise;  // tiles (REPEAT)
 // the base noise's max pyramid: mip level l holds the largest texel of each 2^l block
 // (weather/noise_max_pyramid.h); read with texelFetch
 layout(binding = TEX_BASE_NOISE_MAX) uniform sampler3D base_noise_max;
-layout(binding = TEX_WEATHER_MAP) uniform sampler2D weather_map;       // equirectangular lat/lon, REPEAT in lon
-layout(binding = TEX_WEATHER_MAP_NEXT) uniform sampler2D weather_map_next;  // the next keyframe, blended by frame.weather_blend
 
 uint g_density_evals = 0u;  // per-invocation count of density evaluations
 
 // A point p of the local frame as seen from the shell centre, in ECEF axes (m).
 vec3 from_shell_centre(vec3 p) { return mat3(frame.enu_to_ecef) * (p + vec3(0.0, 0.0, frame.shell_radius_m + frame.camera_altitude_m)); }
 
-// Latitude and longitude (rad) of the direction q from the shell centre, as the weather map
-// is indexed. atan2 for latitude keeps full precision near the poles (asin would lose ~km
-// there in float).
-vec2 map_lat_lon(vec3 q) { return vec2(atan(q.z, length(q.xy)), atan(q.y, q.x)); }
-
 // Weather map at a point p (local frame): the map is indexed by latitude/longitude of the
 // point's direction from the shell centre, in ECEF axes.
 vec4 weather_at(vec3 p) {
-  vec2 ll = map_lat_lon(from_shell_centre(p));
-  vec2 uv = vec2(ll.y * (0.5 / PI) + 0.5, ll.x / PI + 0.5);
-  // the next keyframe only while one is fading in (a uniform branch: no divergence)
-  vec4 w = textureLod(weather_map, uv, 0.0);
-  if (frame.weather_blend > 0.0) w = mix(w, textureLod(weather_map_next, uv, 0.0), frame.weather_blend);
-  // Within half a texel row of a pole, blend to the pole's value (as WeatherMap::sample
-  // does): every longitude meets at the same value, no pinwheel at the pole.
-  float y = uv.y * frame.weather_map_height - 0.5;
-  if (y < 0.0) w = mix(w, frame.weather_pole_south, min(1.0, -2.0 * y));
-  else if (y > frame.weather_map_height - 1.0) w = mix(w, frame.weather_pole_north, min(1.0, 2.0 * (y - frame.weather_map_height + 1.0)));
-  return w;
+  return weather_map_at(from_shell_centre(p), frame.weather_map_height, frame.weather_blend, frame.weather_pole_south,
+                        frame.weather_pole_north);
 }
 
 // Fraction of the layer's depth the clouds fill at weather w: the cloud-type channel
@@ -72,10 +56,7 @@ const float COVERAGE_EDGE = 0.12;
 
 // Local coverage of layer li at p: the layer's coverage modulated by the weather map
 // (weather/weather_map.h, local_coverage()).
-float local_coverage(CloudLayerGpu L, vec4 w) {
-  float c = L.coverage;
-  return clamp(c + 1.2 * min(c, 1.0 - c) * (w.r - 0.5) * 2.0, 0.0, 1.0);
-}
+float local_coverage(CloudLayerGpu L, vec4 w) { return modulated_coverage(L.coverage, w.r); }
 
 // The anvil of a convective layer (weather::Anvil, weather/cloud_layer.h): its weight at
 // the layer's height fraction f, rising over the lowest fifth of the band [base, top] and

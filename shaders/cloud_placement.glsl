@@ -22,8 +22,8 @@ struct PlacementFrame {
   float rho_min, rho_max;
   ivec4 centre_cell[PLACEMENT_MAX_LEVELS];  // xyz: floor(C / s_k)
   vec4 centre_offset[PLACEMENT_MAX_LEVELS];  // xyz: C - s_k floor(C / s_k), in [0, s_k)
-  vec4 acceptance;                           // p_k for the levels 0..3 at one coverage (the CPU
-                                             // reads the map at each cloud's centre)
+  vec4 acceptance;                           // p_k for the levels 0..3 where one coverage holds
+                                             // (tests; the rings read the map at each centre)
   vec4 acceptance_hi;                        // ... 4..7
   uint level_seed[PLACEMENT_MAX_LEVELS];
 };
@@ -43,15 +43,19 @@ vec3 placement_project(PlacementFrame pf, vec3 d) {
   return d * (pf.shell_radius_m / len) - pf.centre * (dr / len);
 }
 
-// max over the clouds covering the shell point C + x of 1 - (dist / r)^2 (0 where none);
-// x relative to C (m), on the shell.
-float placement_envelope(PlacementFrame pf, vec3 x) {
+// The acceptance probability p_k of a level-k candidate whose cloud centre is C + centre
+// (on the shell): defined by the including shader (the weather map's coverage there, or a
+// frame's fixed per-level values).
+float placement_acceptance(PlacementFrame pf, int level, vec3 centre);
+
+// max over the clouds of levels first_level.. covering the shell point C + x of
+// 1 - (dist / r)^2 (0 where none); x relative to C (m), on the shell.
+float placement_envelope(PlacementFrame pf, vec3 x, int first_level) {
   float e = 0.0;
-  for (int k = 0; k < pf.levels; ++k) {
+  for (int k = first_level; k < pf.levels; ++k) {
     float s = pf.smallest_cell_m * exp2(float(k));
     vec3 local = pf.centre_offset[k].xyz + x;  // x measured from C's cube corner
     ivec3 rel = ivec3(floor(local / s));
-    float p_k = k < 4 ? pf.acceptance[k] : pf.acceptance_hi[k - 4];
     for (int dz = -1; dz <= 1; ++dz)
       for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx) {
@@ -61,10 +65,13 @@ float placement_envelope(PlacementFrame pf, vec3 x) {
                         hash_to_unit(hash32(h ^ 3u)));
           vec3 q = (vec3(r) + u) * s - pf.centre_offset[k].xyz;  // candidate, relative to C
           if (!(abs(placement_radial_offset(pf, q)) < 0.5 * s)) continue;
-          if (!(hash_to_unit(hash32(h ^ 4u)) < p_k)) continue;
           vec3 c = placement_project(pf, q);
           float radius = (pf.rho_min + (pf.rho_max - pf.rho_min) * hash_to_unit(hash32(h ^ 5u))) * s;
           float v = length(x - c) / radius;
+          if (!(v < 1.0)) continue;
+          // acceptance at the cloud's own centre (it exists or not as a whole), asked last:
+          // it may read the weather map
+          if (!(hash_to_unit(hash32(h ^ 4u)) < placement_acceptance(pf, k, c))) continue;
           e = max(e, 1.0 - v * v);
         }
   }

@@ -14,6 +14,7 @@
 #include "horizon_split.glsl"
 #include "ground_shadow_map.glsl"
 #include "phase_function.glsl"
+#include "weather_map_sampling.glsl"
 #include "cloud_density.glsl"
 #include "cloud_lighting.glsl"
 #include "aerial_perspective_lookup.glsl"

@@ -11,6 +11,7 @@
 #include "atmosphere_model.glsl"
 #include "atmosphere_lookup.glsl"
 #include "phase_function.glsl"
+#include "weather_map_sampling.glsl"
 #include "cloud_density.glsl"
 #include "cloud_lighting.glsl"
 

@@ -12,8 +12,13 @@ layout(std430, binding = SSBO_TEST_INPUT_B) readonly buffer Point { vec4 in_poin
 layout(std430, binding = SSBO_TEST_OUTPUT) writeonly buffer Result { vec4 out_result[]; };
 uniform uint u_count;
 
+// one coverage for the whole frame: its per-level values
+float placement_acceptance(PlacementFrame pf, int level, vec3 centre) {
+  return level < 4 ? pf.acceptance[level] : pf.acceptance_hi[level - 4];
+}
+
 void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= u_count) return;
-  out_result[i] = vec4(placement_envelope(in_frame, in_point[i].xyz), 0.0, 0.0, 0.0);
+  out_result[i] = vec4(placement_envelope(in_frame, in_point[i].xyz, 0), 0.0, 0.0, 0.0);
 }

@@ -14,48 +14,20 @@
 #include "renderer/gl/gl_objects.h"
 #include "renderer/gl/shader_program.h"
 #include "renderer/gpu_interface.h"
+#include "renderer/placement_rings.h"
 #include "weather/cloud_placement.h"
 
 namespace cloudsvc {
 namespace {
 
-constexpr int kMaxLevels = 8;  // = PLACEMENT_MAX_LEVELS
-
-// std430 image of PlacementFrame
-struct GpuFrame {
-  float centre[3];
-  float shell_radius_m;
-  std::int32_t levels;
-  float smallest_cell_m;
-  float rho_min, rho_max;
-  std::int32_t centre_cell[kMaxLevels][4];
-  float centre_offset[kMaxLevels][4];
-  float acceptance[8];
-  std::uint32_t level_seed[kMaxLevels];
-};
-
-GpuFrame frame_for(const weather::CloudPlacement& cp, const glm::dvec3& C, double coverage) {
-  GpuFrame f{};
-  for (int i = 0; i < 3; ++i) f.centre[i] = static_cast<float>(C[i]);
-  f.shell_radius_m = static_cast<float>(cp.shell_radius_m());
-  f.levels = cp.params().levels;
-  f.smallest_cell_m = static_cast<float>(cp.params().smallest_cell_m);
-  f.rho_min = static_cast<float>(cp.params().rho_min);
-  f.rho_max = static_cast<float>(cp.params().rho_max);
-  for (int k = 0; k < f.levels; ++k) {
-    const double s = cp.params().smallest_cell_m * std::ldexp(1.0, k);
-    const glm::dvec3 cell = glm::floor(C / s);
-    for (int i = 0; i < 3; ++i) {
-      f.centre_cell[k][i] = static_cast<std::int32_t>(cell[i]);
-      f.centre_offset[k][i] = static_cast<float>(C[i] - cell[i] * s);
-    }
-    f.acceptance[k] = static_cast<float>(cp.level_acceptance(k, coverage));
-    f.level_seed[k] = cp.level_seed(k);
-  }
+// The frame around C with every level's acceptance at one coverage.
+PlacementFrameGpu frame_for(const weather::CloudPlacement& cp, const glm::dvec3& C, double coverage) {
+  PlacementFrameGpu f = placement_frame_gpu(cp, C);
+  for (int k = 0; k < f.levels; ++k) f.acceptance[k] = static_cast<float>(cp.level_acceptance(k, coverage));
   return f;
 }
 
-std::vector<float> run_gpu(const GpuFrame& frame, const std::vector<glm::dvec3>& rel) {
+std::vector<float> run_gpu(const PlacementFrameGpu& frame, const std::vector<glm::dvec3>& rel) {
   static gl::EglContext context;
   static gl::ShaderProgram prog = gl::ShaderProgram::compute("test_cloud_placement.comp");
   std::vector<float> pts;

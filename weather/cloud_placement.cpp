@@ -75,11 +75,19 @@ std::vector<double> CloudPlacement::acceptance(double coverage) const {
   return p;
 }
 
-void CloudPlacement::clouds_at(const glm::dvec3& x, const CoverageAt& coverage, std::vector<PlacedCloud>& out) const {
+double CloudPlacement::covered_below(int first_level, double coverage) const {
+  double depth = 0.0;
+  for (int k = 0; k < std::min(first_level, params_.levels); ++k)
+    depth += level_acceptance(k, coverage) * std::numbers::pi * mean_rho2_;
+  return -std::expm1(-depth);
+}
+
+void CloudPlacement::clouds_at(const glm::dvec3& x, const CoverageAt& coverage, std::vector<PlacedCloud>& out,
+                               int first_level) const {
   using detail::hash32;
   using detail::hash_cell;
   using detail::hash_to_unit;
-  for (int k = 0; k < params_.levels; ++k) {
+  for (int k = std::max(first_level, 0); k < params_.levels; ++k) {
     const double s = params_.smallest_cell_m * std::ldexp(1.0, k);
     const glm::dvec3 cell = glm::floor(x / s);
     const std::uint32_t seed_k = level_seed(k);
@@ -108,9 +116,9 @@ void CloudPlacement::clouds_at(const glm::dvec3& x, const CoverageAt& coverage, 
   }
 }
 
-double CloudPlacement::envelope(const glm::dvec3& x, const CoverageAt& coverage) const {
+double CloudPlacement::envelope(const glm::dvec3& x, const CoverageAt& coverage, int first_level) const {
   std::vector<PlacedCloud> near;
-  clouds_at(x, coverage, near);
+  clouds_at(x, coverage, near, first_level);
   double e = 0.0;
   for (const PlacedCloud& c : near) {
     const double u = glm::length(x - c.centre) / c.radius_m;

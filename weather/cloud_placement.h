@@ -57,13 +57,19 @@ class CloudPlacement {
   // Coverage of the weather map at a point of the shell (field frame, m), in [0, 1].
   using CoverageAt = std::function<double(const glm::dvec3&)>;
 
-  // The clouds whose disc (great-circle distances taken as chords) contains the shell
-  // point x, appended to out.
-  void clouds_at(const glm::dvec3& x, const CoverageAt& coverage, std::vector<PlacedCloud>& out) const;
+  // The clouds of levels first_level.. whose disc (great-circle distances taken as chords)
+  // contains the shell point x, appended to out.
+  void clouds_at(const glm::dvec3& x, const CoverageAt& coverage, std::vector<PlacedCloud>& out,
+                 int first_level = 0) const;
 
   // max over those clouds of 1 - (d / r)^2 (0 where none): a cloud's footprint, 1 at its
   // centre, falling to 0 at its rim.
-  double envelope(const glm::dvec3& x, const CoverageAt& coverage) const;
+  double envelope(const glm::dvec3& x, const CoverageAt& coverage, int first_level = 0) const;
+
+  // The expected fraction of the shell that the levels below first_level cover at coverage
+  // c, 1 - exp(-sum_k p_k(c) pi <rho^2>) (the Poisson form acceptance() solves): what a
+  // grid too coarse to draw those clouds keeps of them (weather/placement_rings.h).
+  double covered_below(int first_level, double coverage) const;
 
   const PlacementParams& params() const { return params_; }
   double shell_radius_m() const { return R_; }
@@ -71,6 +77,9 @@ class CloudPlacement {
 
   // p_k at coverage c as the placement reads it (tabulated, linear interpolation)
   double level_acceptance(int level, double coverage) const;
+  // The table it interpolates: row i (coverage i / kCoverageSteps) holds p_k of each level.
+  static constexpr int kCoverageSteps = 1024;
+  const std::vector<double>& acceptance_table() const { return acceptance_table_; }
 
  private:
   PlacementParams params_;
@@ -78,10 +87,7 @@ class CloudPlacement {
   std::uint32_t seed_;
   double mean_rho2_;
   std::vector<double> level_weight_;  // (s_k / s_0)^(2 - 2b), normalised to max 1
-  // acceptance() tabulated at coverage i / kCoverageSteps (row i, one column per level),
-  // read with linear interpolation where clouds are placed
-  static constexpr int kCoverageSteps = 1024;
-  std::vector<double> acceptance_table_;
+  std::vector<double> acceptance_table_;  // acceptance_table()
 };
 
 }  // namespace cloudsvc::weather

@@ -25,6 +25,17 @@ Texture make_texture_3d(GLenum internal_format, int w, int h, int d, GLenum wrap
   return Texture(id);
 }
 
+Texture make_texture_2d_array(GLenum internal_format, int w, int h, int layers) {
+  GLuint id = 0;
+  glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &id);
+  glTextureStorage3D(id, 1, internal_format, w, h, layers);
+  glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return Texture(id);
+}
+
 Buffer make_buffer(GLsizeiptr bytes, const void* data, GLenum usage) {
   GLuint id = 0;
   glCreateBuffers(1, &id);

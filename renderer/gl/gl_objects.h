@@ -39,6 +39,8 @@ using VertexArray = GlName<delete_vertex_arrays>;
 // Immutable-storage texture with linear filtering; wrap mode per axis.
 Texture make_texture_2d(GLenum internal_format, int w, int h, GLenum wrap_s, GLenum wrap_t);
 Texture make_texture_3d(GLenum internal_format, int w, int h, int d, GLenum wrap);
+// w x h x layers, linear within a layer, clamped to the edge.
+Texture make_texture_2d_array(GLenum internal_format, int w, int h, int layers);
 Buffer make_buffer(GLsizeiptr bytes, const void* data, GLenum usage);
 
 }  // namespace cloudsvc::gl

@@ -1,0 +1,72 @@
+// The cloud placement's rings on the GPU (weather/placement_rings.h): a 2-D texture array,
+// one slice per (layer slot, ring), RG16F: R the envelope of the levels the ring draws as
+// clouds, G the fraction the smaller levels cover; filled by shaders/placement_rings.comp
+// one ring at a time. The acceptance of each cloud reads the weather map at the cloud's
+// centre, so the map's textures (CloudFieldTextures::bind) must be bound when a ring is
+// filled. Needs a current GL 4.5 context.
+#pragma once
+
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+#include "renderer/gl/gl_objects.h"
+#include "renderer/gl/shader_program.h"
+#include "weather/cloud_placement.h"
+#include "weather/placement_rings.h"
+
+namespace cloudsvc {
+
+inline constexpr int kPlacementMaxLevels = 8;  // = PLACEMENT_MAX_LEVELS (cloud_placement.glsl)
+
+// std430 image of PlacementFrame (shaders/cloud_placement.glsl).
+struct PlacementFrameGpu {
+  float centre[3];
+  float shell_radius_m;
+  std::int32_t levels;
+  float smallest_cell_m;
+  float rho_min, rho_max;
+  std::int32_t centre_cell[kPlacementMaxLevels][4];
+  float centre_offset[kPlacementMaxLevels][4];
+  float acceptance[kPlacementMaxLevels];  // where one coverage holds for the frame (tests)
+  std::uint32_t level_seed[kPlacementMaxLevels];
+};
+static_assert(sizeof(PlacementFrameGpu) == 352, "std430 layout of PlacementFrame");
+
+// The frame of placement cp around the centre C (field frame, m): C's cube and offset in
+// it per level, computed in double so that the GPU's cube indices near C are exact. The
+// acceptance values are left 0. Throws std::invalid_argument for more than
+// kPlacementMaxLevels levels.
+PlacementFrameGpu placement_frame_gpu(const weather::CloudPlacement& cp, const glm::dvec3& centre);
+
+// What one ring is filled from.
+struct RingInputs {
+  glm::dvec3 centre{0.0};          // C: on the shell, field frame (m)
+  glm::dmat3 field_to_ecef{1.0};   // field axes -> ECEF axes
+  double layer_coverage = 0.0;     // c_L, modulated by the map's coverage channel
+  float map_height = 0.0f;         // weather map rows
+  float map_blend = 0.0f;          // weight of the next keyframe
+  glm::vec4 pole_south{0.5f}, pole_north{0.5f};
+};
+
+class PlacementRings {
+ public:
+  // slots: the layers that can hold rings at once.
+  PlacementRings(const weather::RingLayout& layout, int slots);
+
+  // Fills ring `ring` of slot `slot` for placement cp (at most kPlacementMaxLevels levels).
+  void fill(int slot, int ring, const weather::CloudPlacement& cp, const RingInputs& in);
+
+  const weather::RingLayout& layout() const { return layout_; }
+  GLuint texture() const { return texture_.id(); }
+  int slice(int slot, int ring) const { return slot * layout_.rings + ring; }
+
+ private:
+  weather::RingLayout layout_;
+  gl::ShaderProgram program_;
+  gl::Texture texture_;
+  gl::Buffer job_;
+  std::size_t job_bytes_ = 0;
+};
+
+}  // namespace cloudsvc

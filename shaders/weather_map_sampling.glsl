@@ -1,0 +1,31 @@
+// The global weather map (weather/weather_map.h) as the shaders read it: bilinear in an
+// equirectangular latitude/longitude grid, repeating in longitude, blended to the pole's
+// value within half a row of a pole, and the next keyframe mixed in while it fades in.
+// Needs common.glsl.
+
+layout(binding = TEX_WEATHER_MAP) uniform sampler2D weather_map;           // REPEAT in lon
+layout(binding = TEX_WEATHER_MAP_NEXT) uniform sampler2D weather_map_next;  // the next keyframe
+
+// Latitude and longitude (rad) of the direction q from the shell centre, as the weather map
+// is indexed. atan2 for latitude keeps full precision near the poles (asin would lose ~km
+// there in float).
+vec2 map_lat_lon(vec3 q) { return vec2(atan(q.z, length(q.xy)), atan(q.y, q.x)); }
+
+// The map in the direction q (ECEF axes, any length) for a map of map_height rows, the next
+// keyframe at weight blend, and the pole values (the rows' means) to blend to.
+vec4 weather_map_at(vec3 q, float map_height, float blend, vec4 pole_south, vec4 pole_north) {
+  vec2 ll = map_lat_lon(q);
+  vec2 uv = vec2(ll.y * (0.5 / PI) + 0.5, ll.x / PI + 0.5);
+  // the next keyframe only while one is fading in (a uniform branch: no divergence)
+  vec4 w = textureLod(weather_map, uv, 0.0);
+  if (blend > 0.0) w = mix(w, textureLod(weather_map_next, uv, 0.0), blend);
+  // Within half a texel row of a pole, blend to the pole's value (as WeatherMap::sample
+  // does): every longitude meets at the same value, no pinwheel at the pole.
+  float y = uv.y * map_height - 0.5;
+  if (y < 0.0) w = mix(w, pole_south, min(1.0, -2.0 * y));
+  else if (y > map_height - 1.0) w = mix(w, pole_north, min(1.0, 2.0 * (y - map_height + 1.0)));
+  return w;
+}
+
+// A layer's coverage c modulated by the map's coverage channel m (weather::local_coverage).
+float modulated_coverage(float c, float m) { return clamp(c + 1.2 * min(c, 1.0 - c) * (m - 0.5) * 2.0, 0.0, 1.0); }

@@ -43,21 +43,9 @@ std::string shadow_map_stale_reason(const ShadowMapKey& key, const FrameContext&
 GroundShadowMap::GroundShadowMap()
     : build_prog_(gl::ShaderProgram::compute("ground_shadow_map.comp")),
       volume_prog_(gl::ShaderProgram::compute("light_volume.comp")),
-      uniforms_(gl::make_buffer(sizeof(ShadowMapUniforms), nullptr, GL_DYNAMIC_DRAW)) {
-  const auto make = [](GLenum target, int w, int h, int d) {
-    GLuint id = 0;
-    glCreateTextures(target, 1, &id);
-    glTextureStorage3D(id, 1, GL_R32F, w, h, d);
-    glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(id, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
-    return gl::Texture(id);
-  };
-  map_ = make(GL_TEXTURE_2D_ARRAY, kSize, kSize, gpu::kMaxLayers);
-  volume_ = make(GL_TEXTURE_3D, kVolumeSize, kVolumeSize, kVolumeLevels * gpu::kMaxLayers);
-}
+      map_(gl::make_texture_2d_array(GL_R32F, kSize, kSize, gpu::kMaxLayers)),
+      volume_(gl::make_texture_3d(GL_R32F, kVolumeSize, kVolumeSize, kVolumeLevels * gpu::kMaxLayers, GL_CLAMP_TO_EDGE)),
+      uniforms_(gl::make_buffer(sizeof(ShadowMapUniforms), nullptr, GL_DYNAMIC_DRAW)) {}
 
 void GroundShadowMap::build(const FrameContext& frame, const CloudPassInputs& inputs, const ShadowMapUniforms& su,
                             bool light_volume) {

@@ -16,7 +16,7 @@ const std::vector<DemoScene>& demo_scenes() {
        {47.45, 8.56, 30000.0}, {180.0, -25.0, 0.0}, "2026-06-21T11:30:00Z", 75.0, "broken-cumulus"},
       {"night", "scattered cumulus at night, after civil twilight (sun 10 deg below the horizon), looking west",
        {47.45, 8.56, 500.0}, {315.0, 10.0, 0.0}, "2026-06-21T20:45:00Z", 75.0, "scattered-cumulus"},
-      {"cumulonimbus", "a cumulonimbus field in the afternoon from 13 km",
+      {"cumulonimbus", "a cumulonimbus field in the afternoon from 13 km, anvils merged into a shield",
        {47.45, 8.56, 13000.0}, {135.0, -15.0, 0.0}, "2026-06-21T14:00:00Z", 75.0, "cumulonimbus"},
   };
   return scenes;

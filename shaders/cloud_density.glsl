@@ -134,14 +134,14 @@ bool cloud_may_be_on_segment(int li, vec3 a, vec3 b, vec4 w) {
   float R = frame.shell_radius_m, h = frame.camera_altitude_m;
   float alt_a = altitude_of(a, R, h), alt_b = altitude_of(b, R, h);
   float span = (L.top_m - L.base_m) * depth_fraction(L, w);
-  // height fractions of the profile (1 m of slack: the ray's altitude between the ends)
-  float g0 = (min(alt_a, alt_b) - 1.0 - L.base_m) / span, g1 = (max(alt_a, alt_b) + 1.0 - L.base_m) / span;
+  // the segment's heights above the base (1 m of slack: the ray's altitude between the ends)
+  float h_lo = min(alt_a, alt_b) - 1.0 - L.base_m, h_hi = max(alt_a, alt_b) + 1.0 - L.base_m;
+  float g0 = h_lo / span, g1 = h_hi / span;  // height fractions of the profile
   if (g1 <= 0.0 || g0 >= 1.0) return false;
   // the anvil widens the coverage (never narrows it): its largest weight over the layer's
   // height fractions of the segment
   float thickness = L.top_m - L.base_m;
-  coverage = anvil_coverage(L, coverage, anvil_weight_max(L, (min(alt_a, alt_b) - 1.0 - L.base_m) / thickness,
-                                                           (max(alt_a, alt_b) + 1.0 - L.base_m) / thickness));
+  coverage = anvil_coverage(L, coverage, anvil_weight_max(L, h_lo / thickness, h_hi / thickness));
   float profile_bound = height_profile_max(L, max(g0, 0.0), min(g1, 1.0));
   vec3 ua = field_point(L, a, alt_a) * L.base_noise_frequency + L.base_noise_offset;
   vec3 ub = field_point(L, b, alt_b) * L.base_noise_frequency + L.base_noise_offset;

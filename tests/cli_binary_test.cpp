@@ -117,7 +117,9 @@ TEST_F(CliBinary, RenderWritesExrAndPngAndPrintsStats) {
     EXPECT_EQ(in->spec().width, 64);
     EXPECT_EQ(in->spec().height, 36);
     EXPECT_EQ(in->spec().nchannels, 4);
-    if (out == exr) EXPECT_EQ(in->spec().format, OIIO::TypeDesc::HALF);
+    if (out == exr) {
+      EXPECT_EQ(in->spec().format, OIIO::TypeDesc::HALF);
+    }
     in->close();
   }
   // No temporary files left behind next to the outputs.

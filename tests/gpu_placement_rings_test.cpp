@@ -87,7 +87,9 @@ TEST(GpuPlacementRings, MatchTheCpuPlacementAtTheirTexels) {
       EXPECT_LT(worst_below, 5e-3);
       // the ring draws clouds (the coarsest only the 16 km level's, a few across 131 km)
       EXPECT_GT(covered, ring == 5 ? 0 : compared / 20);
-      if (ring == 5) EXPECT_GT(first, 0) << "the coarsest ring leaves its small clouds to the covered fraction";
+      if (ring == 5) {
+        EXPECT_GT(first, 0) << "the coarsest ring leaves its small clouds to the covered fraction";
+      }
     }
   }
 }

@@ -41,8 +41,12 @@ TEST(PlacementRings, EachRingDrawsTheLevelsItResolves) {
   EXPECT_EQ(ring_texel_m(layout, 5), 1024.0);
   for (int ring = 0; ring < 7; ++ring) {
     const int first = ring_first_level(layout, p, ring);
-    if (first < p.levels) EXPECT_GE(p.rho_min * p.smallest_cell_m * std::ldexp(1.0, first), 3.0 * ring_texel_m(layout, ring));
-    if (first > 0) EXPECT_LT(p.rho_min * p.smallest_cell_m * std::ldexp(1.0, first - 1), 3.0 * ring_texel_m(layout, ring));
+    if (first < p.levels) {
+      EXPECT_GE(p.rho_min * p.smallest_cell_m * std::ldexp(1.0, first), 3.0 * ring_texel_m(layout, ring));
+    }
+    if (first > 0) {
+      EXPECT_LT(p.rho_min * p.smallest_cell_m * std::ldexp(1.0, first - 1), 3.0 * ring_texel_m(layout, ring));
+    }
   }
   EXPECT_EQ(ring_first_level(layout, p, 0), 0);
   EXPECT_EQ(ring_first_level(layout, p, 6), p.levels) << "nothing left to draw";

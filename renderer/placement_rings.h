@@ -1,7 +1,7 @@
-// The cloud placement's rings on the GPU (weather/placement_rings.h): a 2-D texture array,
-// one slice per (layer slot, ring), RG16F: R the envelope of the levels the ring draws as
-// clouds, G the fraction the smaller levels cover; filled by shaders/placement_rings.comp
-// one ring at a time. The acceptance of each cloud reads the weather map at the cloud's
+// The dome rings of cumulus layers on the GPU (weather::dome_ring_texel,
+// weather/cumulus_domes.h): a 2-D texture array, one slice per (layer slot, ring), RG32F:
+// R the unit-aspect dome top of the ring's own levels (m), G the fraction the finer levels
+// cover; filled by shaders/placement_rings.comp one ring at a time. The acceptance of each cloud reads the weather map at the cloud's
 // centre, so the map's textures (CloudFieldTextures::bind) must be bound when a ring is
 // filled. Needs a current GL 4.5 context.
 #pragma once
@@ -13,6 +13,7 @@
 #include "renderer/gl/gl_objects.h"
 #include "renderer/gl/shader_program.h"
 #include "weather/cloud_placement.h"
+#include "weather/cumulus_domes.h"
 #include "weather/placement_rings.h"
 
 namespace cloudsvc {
@@ -39,6 +40,23 @@ static_assert(sizeof(PlacementFrameGpu) == 352, "std430 layout of PlacementFrame
 // kPlacementMaxLevels levels.
 PlacementFrameGpu placement_frame_gpu(const weather::CloudPlacement& cp, const glm::dvec3& centre);
 
+inline constexpr int kDomeWarpOctavesGpu = 6;  // = DOME_WARP_OCTAVES (dome_warp.glsl)
+static_assert(kDomeWarpOctavesGpu == weather::kDomeWarpOctaves, "dome_warp.glsl's octave count");
+
+// std430 image of DomeWarpFrame (shaders/dome_warp.glsl).
+struct DomeWarpFrameGpu {
+  std::int32_t cell[kDomeWarpOctavesGpu][4];
+  float offset[kDomeWarpOctavesGpu][4];
+  float amplitude[kDomeWarpOctavesGpu];
+  float pad[2];
+  std::uint32_t seed[kDomeWarpOctavesGpu][4];
+};
+static_assert(sizeof(DomeWarpFrameGpu) == 320, "std430 layout of DomeWarpFrame");
+
+// The warp's octaves around the centre C (field frame, m): C / lambda as an integer cell and
+// a fraction per octave, in double.
+DomeWarpFrameGpu dome_warp_frame_gpu(const weather::DomeWarp& warp, const glm::dvec3& centre);
+
 // What one ring is filled from.
 struct RingInputs {
   glm::dvec3 centre{0.0};          // C: on the shell, field frame (m)
@@ -54,8 +72,9 @@ class PlacementRings {
   // slots: the layers that can hold rings at once.
   PlacementRings(const weather::RingLayout& layout, int slots);
 
-  // Fills ring `ring` of slot `slot` for placement cp (at most kPlacementMaxLevels levels).
-  void fill(int slot, int ring, const weather::CloudPlacement& cp, const RingInputs& in);
+  // Fills ring `ring` of slot `slot` for placement cp (at most kPlacementMaxLevels levels)
+  // and its warp.
+  void fill(int slot, int ring, const weather::CloudPlacement& cp, const weather::DomeWarp& warp, const RingInputs& in);
 
   const weather::RingLayout& layout() const { return layout_; }
   GLuint texture() const { return texture_.id(); }

@@ -3,7 +3,7 @@
 // cancellation): per level, C's cube index (integers) and its offset inside that cube are
 // given, so cube indices near C come out exact and every length is small. Source of truth
 // for the process: weather/cloud_placement.cpp (this file must agree with it bit for bit
-// in the integer hashes; the test compares the envelopes).
+// in the integer hashes; tests/gpu_cloud_placement_test.cpp compares the dome tops).
 
 // weather/noise_hash.h's hash_cell (hash32, hash_to_unit: common.glsl)
 uint placement_hash_cell(ivec3 c, uint seed) {
@@ -48,13 +48,14 @@ vec3 placement_project(PlacementFrame pf, vec3 d) {
 // frame's fixed per-level values).
 float placement_acceptance(PlacementFrame pf, int level, vec3 centre);
 
-// max over the clouds of levels first_level.. covering the shell point C + x of
-// 1 - (dist / r)^2 (0 where none); x relative to C (m), on the shell.
-float placement_envelope(PlacementFrame pf, vec3 x, int first_level) {
-  float e = 0.0;
-  for (int k = first_level; k < pf.levels; ++k) {
+// The unit-aspect dome top of the clouds of levels [first_level, end_level) at the shell point
+// C + x (CloudPlacement::dome_top): max over the accepted candidates near x of
+// (r^2 - d^2) / r (m), never below -floor_m.
+float placement_dome_top(PlacementFrame pf, vec3 x, int first_level, int end_level, float floor_m) {
+  float top = -floor_m;
+  for (int k = first_level; k < min(end_level, pf.levels); ++k) {
     float s = pf.smallest_cell_m * exp2(float(k));
-    vec3 local = pf.centre_offset[k].xyz + x;  // x measured from C's cube corner
+    vec3 local = pf.centre_offset[k].xyz + x;
     ivec3 rel = ivec3(floor(local / s));
     for (int dz = -1; dz <= 1; ++dz)
       for (int dy = -1; dy <= 1; ++dy)
@@ -63,17 +64,16 @@ float placement_envelope(PlacementFrame pf, vec3 x, int first_level) {
           uint h = placement_hash_cell(pf.centre_cell[k].xyz + r, pf.level_seed[k]);
           vec3 u = vec3(hash_to_unit(hash32(h ^ 1u)), hash_to_unit(hash32(h ^ 2u)),
                         hash_to_unit(hash32(h ^ 3u)));
-          vec3 q = (vec3(r) + u) * s - pf.centre_offset[k].xyz;  // candidate, relative to C
+          vec3 q = (vec3(r) + u) * s - pf.centre_offset[k].xyz;
           if (!(abs(placement_radial_offset(pf, q)) < 0.5 * s)) continue;
           vec3 c = placement_project(pf, q);
           float radius = (pf.rho_min + (pf.rho_max - pf.rho_min) * hash_to_unit(hash32(h ^ 5u))) * s;
-          float v = length(x - c) / radius;
-          if (!(v < 1.0)) continue;
-          // acceptance at the cloud's own centre (it exists or not as a whole), asked last:
-          // it may read the weather map
+          vec3 d = x - c;
+          float dome = (radius * radius - dot(d, d)) / radius;
+          if (!(dome > top)) continue;
           if (!(hash_to_unit(hash32(h ^ 4u)) < placement_acceptance(pf, k, c))) continue;
-          e = max(e, 1.0 - v * v);
+          top = dome;
         }
   }
-  return e;
+  return top;
 }

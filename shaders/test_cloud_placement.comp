@@ -1,8 +1,9 @@
 #version 450 core
-// Test kernel (tests/gpu_cloud_placement_test.cpp): the GPU cloud placement envelope
-// (cloud_placement.glsl) at shell points given relative to the frame's centre.
-//   in_point[i]  = (x, y, z, 0): the point minus the centre C (m, field frame)
-//   out_result[i] = (envelope, 0, 0, 0)
+// Test kernel (tests/gpu_cloud_placement_test.cpp): the GPU cloud placement's unit-aspect
+// dome top over every level (cloud_placement.glsl) at shell points given relative to the
+// frame's centre.
+//   in_point[i]  = (x, y, z, floor_m): the point minus the centre C (m, field frame)
+//   out_result[i] = (dome top (m), 0, 0, 0)
 #include "common.glsl"
 #include "cloud_placement.glsl"
 
@@ -20,5 +21,5 @@ float placement_acceptance(PlacementFrame pf, int level, vec3 centre) {
 void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= u_count) return;
-  out_result[i] = vec4(placement_envelope(in_frame, in_point[i].xyz, 0), 0.0, 0.0, 0.0);
+  out_result[i] = vec4(placement_dome_top(in_frame, in_point[i].xyz, 0, in_frame.levels, in_point[i].w), 0.0, 0.0, 0.0);
 }

@@ -1,6 +1,6 @@
 // The GPU's cloud placement (shaders/cloud_placement.glsl) against the CPU's
 // (weather/cloud_placement.cpp): the same clouds, evaluated in float relative to a centre
-// on the shell. Envelopes agree within float error over grids around places on the globe,
+// on the shell. Unit-aspect dome tops agree within float error over grids around places on the globe,
 // the poles and the antimeridian included.
 #include <gtest/gtest.h>
 
@@ -20,6 +20,8 @@
 namespace cloudsvc {
 namespace {
 
+constexpr double kFloor_m = 3000.0;  // the dome top's floor: negative values compared down to it
+
 // The frame around C with every level's acceptance at one coverage.
 PlacementFrameGpu frame_for(const weather::CloudPlacement& cp, const glm::dvec3& C, double coverage) {
   PlacementFrameGpu f = placement_frame_gpu(cp, C);
@@ -31,7 +33,7 @@ std::vector<float> run_gpu(const PlacementFrameGpu& frame, const std::vector<glm
   static gl::EglContext context;
   static gl::ShaderProgram prog = gl::ShaderProgram::compute("test_cloud_placement.comp");
   std::vector<float> pts;
-  for (const glm::dvec3& d : rel) pts.insert(pts.end(), {float(d.x), float(d.y), float(d.z), 0.0f});
+  for (const glm::dvec3& d : rel) pts.insert(pts.end(), {float(d.x), float(d.y), float(d.z), float(kFloor_m)});
   const GLsizeiptr bytes = static_cast<GLsizeiptr>(rel.size() * 4 * sizeof(float));
   gl::Buffer bf = gl::make_buffer(sizeof frame, &frame, GL_STATIC_DRAW);
   gl::Buffer bp = gl::make_buffer(bytes, pts.data(), GL_STATIC_DRAW);
@@ -68,7 +70,7 @@ TEST(GpuCloudPlacement, MatchesTheCpuPlacementAnywhere) {
       for (int x = 0; x < n; ++x) {
         const glm::dvec3 p = R * glm::normalize(C + (x - 0.5 * n) * 400.0 * east + (y - 0.5 * n) * 400.0 * north);
         rel.push_back(p - C);
-        cpu.push_back(cp.envelope(p, cov));
+        cpu.push_back(cp.dome_top(p, cov, 0, cp.params().levels, kFloor_m));
       }
     const std::vector<float> gpu = run_gpu(frame_for(cp, C, coverage), rel);
     double worst = 0.0;
@@ -77,9 +79,9 @@ TEST(GpuCloudPlacement, MatchesTheCpuPlacementAnywhere) {
       worst = std::max(worst, std::abs(gpu[i] - cpu[i]));
       covered += cpu[i] > 0.0;
     }
-    std::printf("lat %.2f lon %.2f: worst |gpu - cpu| %.2e, %d of %zu points under a cloud\n", lat, lon, worst, covered,
-                cpu.size());
-    EXPECT_LT(worst, 1e-3) << lat << " " << lon;  // measured 9e-6 .. 2e-5
+    std::printf("lat %.2f lon %.2f: worst |gpu - cpu| %.2e m, %d of %zu points under a cloud\n", lat, lon, worst,
+                covered, cpu.size());
+    EXPECT_LT(worst, 0.05) << lat << " " << lon;  // float against double, tops of up to 8 km
     EXPECT_GT(covered, static_cast<int>(cpu.size() / 5));
   }
 }

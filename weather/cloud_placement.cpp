@@ -82,12 +82,13 @@ double CloudPlacement::covered_below(int first_level, double coverage) const {
   return -std::expm1(-depth);
 }
 
-void CloudPlacement::clouds_at(const glm::dvec3& x, const CoverageAt& coverage, std::vector<PlacedCloud>& out,
-                               int first_level) const {
+template <class Want, class F>
+void CloudPlacement::for_each_nearby_cloud(const glm::dvec3& x, const CoverageAt& coverage, int first, int end,
+                                           Want&& want, F&& f) const {
   using detail::hash32;
   using detail::hash_cell;
   using detail::hash_to_unit;
-  for (int k = std::max(first_level, 0); k < params_.levels; ++k) {
+  for (int k = std::max(first, 0); k < std::min(end, params_.levels); ++k) {
     const double s = params_.smallest_cell_m * std::ldexp(1.0, k);
     const glm::dvec3 cell = glm::floor(x / s);
     const std::uint32_t seed_k = level_seed(k);
@@ -106,25 +107,47 @@ void CloudPlacement::clouds_at(const glm::dvec3& x, const CoverageAt& coverage, 
           const glm::dvec3 centre = q * (R_ / rq);
           const double rho = params_.rho_min + (params_.rho_max - params_.rho_min) * hash_to_unit(hash32(h ^ 0x5u));
           const double r = rho * s;
-          const double d = glm::length(x - centre);
-          if (d >= r) continue;
-          // acceptance at the cloud's own centre: exists or not as a whole
-          const double p = level_acceptance(k, coverage(centre));
-          if (!(hash_to_unit(hash32(h ^ 0x4u)) < p)) continue;
-          out.push_back({centre, r, k, h});
+          if (!want(centre, r)) continue;
+          // acceptance at the cloud's own centre (exists or not as a whole), asked last: it
+          // may read the weather map
+          if (!(hash_to_unit(hash32(h ^ 0x4u)) < level_acceptance(k, coverage(centre)))) continue;
+          f(k, centre, r, h);
         }
   }
 }
 
+void CloudPlacement::clouds_at(const glm::dvec3& x, const CoverageAt& coverage, std::vector<PlacedCloud>& out,
+                               int first_level) const {
+  const auto covers_x = [&](const glm::dvec3& centre, double r) { return glm::length(x - centre) < r; };
+  for_each_nearby_cloud(x, coverage, first_level, params_.levels, covers_x,
+                        [&](int k, const glm::dvec3& centre, double r, std::uint32_t h) {
+                          out.push_back({centre, r, k, h});
+                        });
+}
+
 double CloudPlacement::envelope(const glm::dvec3& x, const CoverageAt& coverage, int first_level) const {
-  std::vector<PlacedCloud> near;
-  clouds_at(x, coverage, near, first_level);
   double e = 0.0;
-  for (const PlacedCloud& c : near) {
-    const double u = glm::length(x - c.centre) / c.radius_m;
-    e = std::max(e, 1.0 - u * u);
-  }
+  const auto covers_x = [&](const glm::dvec3& centre, double r) { return glm::length(x - centre) < r; };
+  for_each_nearby_cloud(x, coverage, first_level, params_.levels, covers_x,
+                        [&](int, const glm::dvec3& centre, double r, std::uint32_t) {
+                          const double u = glm::length(x - centre) / r;
+                          e = std::max(e, 1.0 - u * u);
+                        });
   return e;
+}
+
+double CloudPlacement::dome_top(const glm::dvec3& x, const CoverageAt& coverage, int first_level, int end_level,
+                                double floor_m) const {
+  double top = -floor_m;
+  const auto dome = [&](const glm::dvec3& centre, double r) {
+    const glm::dvec3 d = x - centre;
+    return (r * r - glm::dot(d, d)) / r;
+  };
+  // only candidates that would raise the top ask for their acceptance
+  for_each_nearby_cloud(x, coverage, first_level, end_level,
+                        [&](const glm::dvec3& centre, double r) { return dome(centre, r) > top; },
+                        [&](int, const glm::dvec3& centre, double r, std::uint32_t) { top = dome(centre, r); });
+  return top;
 }
 
 }  // namespace cloudsvc::weather

@@ -66,6 +66,15 @@ class CloudPlacement {
   // centre, falling to 0 at its rim.
   double envelope(const glm::dvec3& x, const CoverageAt& coverage, int first_level = 0) const;
 
+  // The parabolic dome of unit aspect over the clouds of levels [first_level, end_level)
+  // near the shell point x: max over their accepted candidates of (r^2 - d^2) / r (m;
+  // r at the centre, 0 on the rim, negative outside), and never below -floor_m. Every
+  // candidate within one cube of x is visited, so a cloud it misses gives less than -3 r
+  // of its level: exact wherever the result is above -3 rho_min s_first.
+  // (weather/cumulus_domes.h scales it by the layer's aspect.)
+  double dome_top(const glm::dvec3& x, const CoverageAt& coverage, int first_level, int end_level,
+                  double floor_m) const;
+
   // The expected fraction of the shell that the levels below first_level cover at coverage
   // c, 1 - exp(-sum_k p_k(c) pi <rho^2>) (the Poisson form acceptance() solves): what a
   // grid too coarse to draw those clouds keeps of them (weather/placement_rings.h).
@@ -86,6 +95,12 @@ class CloudPlacement {
   double R_;
   std::uint32_t seed_;
   double mean_rho2_;
+  // Calls f(level, centre, radius, hash) for every cloud of levels [first, end) whose cube
+  // is within one cube of x's on its level (the candidates that may cover x) for which
+  // want(centre, radius) holds and which the coverage at its centre accepts (asked last).
+  template <class Want, class F>
+  void for_each_nearby_cloud(const glm::dvec3& x, const CoverageAt& coverage, int first, int end, Want&& want,
+                             F&& f) const;
   std::vector<double> level_weight_;  // (s_k / s_0)^(2 - 2b), normalised to max 1
   std::vector<double> acceptance_table_;  // acceptance_table()
 };

@@ -1,0 +1,108 @@
+#include "weather/cumulus_domes.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "weather/gradient_noise.h"
+#include "weather/noise_hash.h"
+
+namespace cloudsvc::weather {
+
+namespace {
+// Stream numbers of detail::sub_seed (arbitrary, distinct).
+constexpr std::uint32_t kPlacementStream = 0x646f6d65u;  // "dome"
+constexpr std::uint32_t kWarpStream = 0x77617270u;       // "warp"
+// |perlin_noise| stays below this (the improved noise's bound is about 1.04).
+constexpr double kPerlinBound = 1.1;
+}  // namespace
+
+bool uses_domes(CloudType t) { return t == CloudType::Cumulus; }
+
+PlacementParams dome_placement_params(double layer_coverage) {
+  PlacementParams p;
+  p.smallest_cell_m = kDomeSmallestCell_m;
+  p.levels = kDomeLevels;
+  p.size_exponent = 1.1 - 0.4 * std::clamp(layer_coverage, 0.0, 1.0);
+  return p;
+}
+
+double dome_largest_radius_m() {
+  const PlacementParams p = dome_placement_params(0.0);
+  return p.rho_max * std::ldexp(p.smallest_cell_m, p.levels - 1);
+}
+
+std::uint32_t dome_placement_seed(const Weather& w, std::size_t index) {
+  const CloudType type = w.layers.at(index).type;
+  std::uint32_t ordinal = 0;
+  for (std::size_t i = 0; i < index; ++i) ordinal += w.layers[i].type == type ? 1u : 0u;
+  const std::uint32_t s = detail::sub_seed(w.map_seed, kPlacementStream);
+  return detail::sub_seed(detail::sub_seed(s, static_cast<std::uint32_t>(type)), ordinal);
+}
+
+DomeWarp::DomeWarp(std::uint32_t seed) {
+  const std::uint32_t s = detail::sub_seed(seed, kWarpStream);
+  for (int o = 0; o < kDomeWarpOctaves; ++o) {
+    Octave& oc = octave_[o];
+    oc.wavelength_m = std::ldexp(kDomeWarpLongest_m, -o);
+    oc.amplitude_m = kDomeWarpAmplitude_m * std::pow(oc.wavelength_m / kDomeWarpLongest_m, kDomeWarpAmplitudeSlope);
+    for (std::uint32_t a = 0; a < 3; ++a) oc.seed[a] = detail::sub_seed(s, 3u * static_cast<std::uint32_t>(o) + a);
+  }
+}
+
+double DomeWarp::max_displacement_m() {
+  double sum = 0.0;
+  for (int o = 0; o < kDomeWarpOctaves; ++o)
+    sum += kDomeWarpAmplitude_m * std::pow(std::ldexp(1.0, -o), kDomeWarpAmplitudeSlope);
+  return std::sqrt(3.0) * kPerlinBound * sum;
+}
+
+int dome_warp_octaves(double texel_m) {
+  int n = 0;
+  while (n < kDomeWarpOctaves && std::ldexp(kDomeWarpLongest_m, -n) >= 4.0 * texel_m) ++n;
+  return n;
+}
+
+glm::dvec3 DomeWarp::warped(const glm::dvec3& x, int octaves) const {
+  glm::dvec3 w(0.0);
+  for (int o = 0; o < std::min(octaves, kDomeWarpOctaves); ++o) {
+    const Octave& oc = octave_[o];
+    const glm::dvec3 u = x / oc.wavelength_m;
+    for (int a = 0; a < 3; ++a) w[a] += oc.amplitude_m * detail::perlin_noise(u.x, u.y, u.z, 0, oc.seed[a]);
+  }
+  const glm::dvec3 y = x + w;
+  return y * (glm::length(x) / glm::length(y));
+}
+
+double dome_top_unit_aspect(const CloudPlacement& cp, const DomeWarp& warp, const glm::dvec3& x,
+                            const CloudPlacement::CoverageAt& coverage, int first, int end, double floor_m,
+                            int octaves) {
+  return cp.dome_top(warp.warped(x, octaves), coverage, first, end, floor_m);
+}
+
+RingLayout dome_ring_layout() {
+  RingLayout l;
+  l.rings = 4;
+  l.size = 256;
+  l.finest_texel_m = 64.0;
+  l.resolve_texels = 1.0;
+  return l;
+}
+
+double dome_ring_floor_m(const RingLayout& layout, int ring) { return 4.0 * ring_texel_m(layout, ring); }
+
+DomeRingTexel dome_ring_texel(const CloudPlacement& cp, const DomeWarp& warp, const RingLayout& layout,
+                              const RingPlane& plane, const glm::dvec3& centre, int ring, int i, int j,
+                              const CloudPlacement::CoverageAt& coverage) {
+  const glm::dvec3 x =
+      centre + ring_point_from_centre(plane, cp.shell_radius_m(), ring_texel_uv(layout, ring, i, j));
+  const int first = ring_first_level(layout, cp.params(), ring), end = ring_end_level(layout, cp.params(), ring);
+  DomeRingTexel t;
+  t.top_m = dome_top_unit_aspect(cp, warp, x, coverage, first, end, dome_ring_floor_m(layout, ring),
+                                 dome_warp_octaves(ring_texel_m(layout, ring)));
+  t.covered_below = cp.covered_below(first, coverage(x));
+  return t;
+}
+
+}  // namespace cloudsvc::weather

@@ -1,0 +1,116 @@
+// Cumulus as individual clouds (issue 15): the layer is the union of parabolic domes standing
+// on a flat base, one per cloud of a weather::CloudPlacement, with outlines roughened by a
+// domain warp. This file holds what the GPU and the CPU reference share: the placement's
+// parameters per layer, its seed, the warp and the dome top at a shell point.
+//
+// Shape of one cloud of radius r (m) at horizontal distance d from its centre:
+//   top(d) = a (r^2 - d^2) / r   (m above the layer base; a parabola, 0 on the rim)
+// with one aspect a per layer, a = ceiling / r_largest, so that the layer's largest clouds
+// reach its ceiling (the type channel's f_v times the layer depth, weather/cloud_layer.h)
+// and smaller ones are proportionally lower (fair-weather cumulus grow taller as they grow
+// wider), and a low type channel (humilis) flattens the whole field. The union's height
+// field is max over clouds.
+//
+// Sizes: cells of 500 m to 4 km (four levels), radii 0.2-0.5 of the cell (100 m to 2 km).
+// Cumulus fields follow power laws N(>A) ∝ A^(-b) (Cahalan & Joseph 1989); this model
+// takes b = 1.1 - 0.4 c with c the layer's coverage, so that a broken field holds larger
+// clouds than a scattered one, not only more of them.
+//
+// Outlines: the point x looks up the placement at x + w(x), w a six-octave gradient-noise
+// displacement (wavelengths 8 km / 2^o down to 250 m, amplitude 1100 m (lambda / 8 km)^0.3,
+// i.e. a displacement of a third of the wavelength at 1 km): the discs' smooth rims become
+// outlines of perimeter-area dimension near the 1.35 of satellite and radar cloud fields
+// (Lovejoy 1982); tests/reference_cumulus_domes_test.cpp measures it (weaker warps give
+// 1.2-1.3: rims stay smooth at the scale of the many small clouds).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include <glm/vec3.hpp>
+
+#include "weather/cloud_layer.h"
+#include "weather/cloud_placement.h"
+#include "weather/placement_rings.h"
+
+namespace cloudsvc::weather {
+
+// The sphere the placement lives on (field frame, m): one for every layer, so that a layer's
+// clouds stand at the same place whatever its altitude (points are projected radially).
+inline constexpr double kDomeShellRadius_m = 6371000.0;
+inline constexpr double kDomeSmallestCell_m = 500.0;  // the smallest clouds: 100 m radius
+inline constexpr int kDomeLevels = 4;  // cells 500 m .. 4 km
+
+// The domain warp of the outlines (see above).
+inline constexpr int kDomeWarpOctaves = 6;
+inline constexpr double kDomeWarpLongest_m = 8000.0;  // octave o: wavelength 8 km / 2^o
+inline constexpr double kDomeWarpAmplitude_m = 1100.0; // at 8 km; times (lambda / 8 km)^0.3
+inline constexpr double kDomeWarpAmplitudeSlope = 0.3;
+
+// Cumulus layers are drawn as domes; every other type keeps the noise-threshold field.
+bool uses_domes(CloudType t);
+
+// The placement of a layer with coverage c (the layer's own value, before the map).
+PlacementParams dome_placement_params(double layer_coverage);
+
+// The radius of the largest cloud the placement can hold (m): rho_max times the largest cell.
+double dome_largest_radius_m();
+
+// The placement seed of layer `index` of w: from the map seed, the layer's type and its
+// ordinal among the layers of that type, so that adding or removing another layer leaves a
+// layer's clouds where they were.
+std::uint32_t dome_placement_seed(const Weather& w, std::size_t index);
+
+// The warp's displacement at the shell point x (field frame, m), as the shell point it
+// moves x to: x + w(x) projected onto the shell of x's radius. octaves: how many of the
+// octaves, longest first (a grid of texel h draws those of wavelength >= 4 h:
+// dome_warp_octaves).
+class DomeWarp {
+ public:
+  explicit DomeWarp(std::uint32_t seed);
+  glm::dvec3 warped(const glm::dvec3& x, int octaves = kDomeWarpOctaves) const;
+  // |w| can never exceed this (m): the long-step bounds widen their boxes by it.
+  static double max_displacement_m();
+
+  struct Octave {
+    double wavelength_m, amplitude_m;
+    std::uint32_t seed[3];  // one noise per axis
+  };
+  const Octave& octave(int o) const { return octave_[o]; }
+
+ private:
+  Octave octave_[kDomeWarpOctaves];
+};
+
+// The warp octaves a grid of texel texel_m draws: those of wavelength >= 4 texels (finer
+// ones would alias).
+int dome_warp_octaves(double texel_m);
+
+// The unit-aspect dome top (m) of placement cp over levels [first, end) at the shell point x
+// (before the warp; the warp's first `octaves` octaves are applied here), never below
+// -floor_m: what a renderer scales by the layer's aspect (CloudPlacement::dome_top).
+double dome_top_unit_aspect(const CloudPlacement& cp, const DomeWarp& warp, const glm::dvec3& x,
+                            const CloudPlacement::CoverageAt& coverage, int first, int end, double floor_m,
+                            int octaves = kDomeWarpOctaves);
+
+// The rings a renderer reads a dome layer's tops from (weather/placement_rings.h): four
+// rings of 256^2 texels of 64 m to 512 m around the camera's nadir, reaching 8 to 64 km;
+// a level is drawn by the coarsest ring whose texel is no larger than its smallest radius
+// (ring k holds level k) and is sub-grid cloud in coarser ones.
+RingLayout dome_ring_layout();
+
+// Texel (i, j) of ring `ring` centred at C (on the shell, field frame, m): the unit-aspect
+// top of the ring's own levels [ring_first_level, ring_end_level) at its centre with the warp
+// octaves its texel draws, never below -4 texels (dome_ring_floor_m), and the fraction of the
+// shell the levels below ring_first_level cover at the layer's coverage there
+// (CloudPlacement::covered_below), which a renderer draws as sub-grid cloud.
+struct DomeRingTexel {
+  double top_m = 0.0;
+  double covered_below = 0.0;
+};
+DomeRingTexel dome_ring_texel(const CloudPlacement& cp, const DomeWarp& warp, const RingLayout& layout,
+                              const RingPlane& plane, const glm::dvec3& centre, int ring, int i, int j,
+                              const CloudPlacement::CoverageAt& coverage);
+double dome_ring_floor_m(const RingLayout& layout, int ring);
+
+}  // namespace cloudsvc::weather

@@ -102,5 +102,42 @@ TEST(CumulusDomes, OutlinesSizesAndRepetitionMatchObservations) {
   EXPECT_GT(mean_area[1], 2.5 * mean_area[0]);
 }
 
+// The sub-grid clouds stand in for the levels a ring cannot draw: they cover the fraction
+// those levels would, in blobs of about their clouds' size, without repetition.
+TEST(CumulusDomes, SubgridCloudsCoverWhatTheirLevelsWouldInBlobsOfTheirSize) {
+  const std::uint32_t seed = 29;
+  const DomeSubgrid sub(seed);
+  const DomeWarp warp(seed);
+  const Tangent t = tangent_at(-12.0, 77.0);
+  for (int levels : {1, 3}) {
+    const double c = 0.4, spacing = 40.0 * (1 << (levels - 1));
+    const CloudPlacement cp(dome_placement_params(c), kR, seed);
+    const double covered = cp.covered_below(levels, c);
+    const auto cov = [c](const glm::dvec3&) { return c; };
+    const int n = 256;
+    reference::Field fs, fp;
+    fs.width = fs.height = fp.width = fp.height = n;
+    fs.v.resize(static_cast<std::size_t>(n) * n);
+    fp.v.resize(fs.v.size());
+    parallel_for(n, 0, [&](int y) {
+      for (int x = 0; x < n; ++x) {
+        const glm::dvec3 p =
+            kR * glm::normalize(kR * t.up + (x - 0.5 * n) * spacing * t.east - (y - 0.5 * n) * spacing * t.north);
+        fs.v[static_cast<std::size_t>(y) * n + x] = sub.top_m(p, levels, covered, 1e3);
+        fp.v[static_cast<std::size_t>(y) * n + x] = dome_top_unit_aspect(cp, warp, p, cov, 0, levels, 1e3);
+      }
+    });
+    const Measured ms = measure(fs), mp = measure(fp);
+    std::printf("levels 0..%d at coverage %.2f: covered %.3f by the placement, %.3f sub-grid (asked %.3f); mean cloud "
+                "%.0f / %.0f px; autocorrelation peak %.3f / %.3f\n",
+                levels - 1, c, mp.fraction, ms.fraction, covered, mean_area_px(mp.clouds), mean_area_px(ms.clouds), mp.acf, ms.acf);
+    EXPECT_NEAR(ms.fraction, covered, 0.03);
+    EXPECT_NEAR(ms.fraction, mp.fraction, 0.05);
+    EXPECT_GT(mean_area_px(ms.clouds), 0.5 * mean_area_px(mp.clouds));
+    EXPECT_LT(mean_area_px(ms.clouds), 2.0 * mean_area_px(mp.clouds));
+    EXPECT_LT(ms.acf, 0.1);
+  }
+}
+
 }  // namespace
 }  // namespace cloudsvc::weather

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
+#include <vector>
 
 #include <glm/geometric.hpp>
 
@@ -14,6 +16,12 @@ namespace {
 // Stream numbers of detail::sub_seed (arbitrary, distinct).
 constexpr std::uint32_t kPlacementStream = 0x646f6d65u;  // "dome"
 constexpr std::uint32_t kWarpStream = 0x77617270u;       // "warp"
+constexpr std::uint32_t kSubgridStream = 0x73756267u;    // "subg"
+// Each sub-grid level is two octaves on their own rotated lattices, of wavelengths A and B
+// times the level's cell (incommensurate, so the lattices' regularity does not show) and
+// weights 1 and weight_b. Chosen so that the blobs have the size of the level's clouds
+// (tests/reference_cumulus_domes_test.cpp).
+constexpr double kSubgridWavelengthA = 1.0, kSubgridWavelengthB = 0.41, kSubgridWeightB = 0.7;
 // |perlin_noise| stays below this (the improved noise's bound is about 1.04).
 constexpr double kPerlinBound = 1.1;
 }  // namespace
@@ -79,6 +87,66 @@ double dome_top_unit_aspect(const CloudPlacement& cp, const DomeWarp& warp, cons
                             const CloudPlacement::CoverageAt& coverage, int first, int end, double floor_m,
                             int octaves) {
   return cp.dome_top(warp.warped(x, octaves), coverage, first, end, floor_m);
+}
+
+DomeSubgrid::DomeSubgrid(std::uint32_t seed) {
+  const std::uint32_t s = detail::sub_seed(seed, kSubgridStream);
+  for (int i = 0; i < kOctaves; ++i) {
+    Octave& oc = octave_[i];
+    const int level = i / 2;
+    oc.wavelength_m = std::ldexp(kDomeSmallestCell_m, level) * (i % 2 == 0 ? kSubgridWavelengthA : kSubgridWavelengthB);
+    oc.weight = i % 2 == 0 ? 1.0 : kSubgridWeightB;
+    oc.seed = detail::sub_seed(s, static_cast<std::uint32_t>(i));
+    // a rotation from three hashed angles (z-x-z Euler angles)
+    const double a = 2.0 * std::numbers::pi * detail::hash_to_unit(detail::hash32(oc.seed ^ 0x1u));
+    const double b = std::acos(1.0 - 2.0 * detail::hash_to_unit(detail::hash32(oc.seed ^ 0x2u)));
+    const double c = 2.0 * std::numbers::pi * detail::hash_to_unit(detail::hash32(oc.seed ^ 0x3u));
+    const auto rz = [](double t) {
+      return glm::dmat3(std::cos(t), std::sin(t), 0.0, -std::sin(t), std::cos(t), 0.0, 0.0, 0.0, 1.0);
+    };
+    const glm::dmat3 rx(1.0, 0.0, 0.0, 0.0, std::cos(b), std::sin(b), 0.0, -std::sin(b), std::cos(b));
+    oc.rotation = rz(a) * rx * rz(c);
+  }
+  // quantiles of n over a fixed set of shell points (a Fibonacci lattice on the shell; the
+  // noise is stationary, so any large set gives the same table)
+  constexpr int kPoints = 65536;
+  std::vector<double> v(kPoints);
+  for (int levels = 1; levels < kDomeLevels; ++levels) {
+    double sum2 = 0.0;
+    for (int i = 0; i < kPoints; ++i) {
+      const double z = 1.0 - (2.0 * i + 1.0) / kPoints, r = std::sqrt(1.0 - z * z);
+      const double phi = i * std::numbers::pi * (3.0 - std::sqrt(5.0));
+      v[i] = noise(kDomeShellRadius_m * glm::dvec3(r * std::cos(phi), r * std::sin(phi), z), levels);
+      sum2 += v[i] * v[i];
+    }
+    std::sort(v.begin(), v.end());
+    rms_[levels] = std::sqrt(sum2 / kPoints);
+    for (int q = 0; q <= kDomeSubgridQuantiles; ++q)
+      quantiles_[levels][q] = v[std::min<std::size_t>(kPoints - 1, static_cast<std::size_t>(
+                                                                      static_cast<double>(q) / kDomeSubgridQuantiles * kPoints))];
+  }
+}
+
+double DomeSubgrid::noise(const glm::dvec3& x, int levels) const {
+  double n = 0.0;
+  for (int i = 0; i < 2 * std::min(levels, kDomeLevels); ++i) {
+    const glm::dvec3 u = octave_[i].rotation * x / octave_[i].wavelength_m;
+    n += octave_[i].weight * detail::perlin_noise(u.x, u.y, u.z, 0, octave_[i].seed);
+  }
+  return n;
+}
+
+double DomeSubgrid::quantile(double p, int levels) const {
+  const double x = std::clamp(p, 0.0, 1.0) * kDomeSubgridQuantiles;
+  const int i = std::min(static_cast<int>(x), kDomeSubgridQuantiles - 1);
+  return quantiles_[levels][i] + (x - i) * (quantiles_[levels][i + 1] - quantiles_[levels][i]);
+}
+
+double DomeSubgrid::top_m(const glm::dvec3& x, int levels, double covered, double floor_m) const {
+  if (levels <= 0 || covered <= 0.0) return -floor_m;
+  const double mean_radius = 0.35 * kDomeSmallestCell_m;  // (rho_min + rho_max) / 2 of level 0
+  const double t = mean_radius * (noise(x, levels) - quantile(1.0 - covered, levels)) / rms_[levels];
+  return std::max(t, -floor_m);
 }
 
 RingLayout dome_ring_layout() {

@@ -27,6 +27,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
 
 #include "weather/cloud_layer.h"
@@ -92,6 +93,45 @@ int dome_warp_octaves(double texel_m);
 double dome_top_unit_aspect(const CloudPlacement& cp, const DomeWarp& warp, const glm::dvec3& x,
                             const CloudPlacement::CoverageAt& coverage, int first, int end, double floor_m,
                             int octaves = kDomeWarpOctaves);
+
+// The clouds of the levels a grid cannot draw (those below ring_first_level of the finest
+// ring covering a point), drawn as sub-grid cloud: a gradient-noise field n with two octaves
+// per such level l, of wavelengths s_l and 0.41 s_l (s_l the level's cell), weights 1 and
+// 0.5, each on its own rotated lattice (so that no lattice axis or period shows); cloud
+// where n exceeds its quantile at
+// 1 - covered (the fraction those levels cover, CloudPlacement::covered_below), so the
+// sub-grid clouds cover what the placement's would, with blobs of their levels' sizes.
+// The unit-aspect top there is (n - q) / |n|_rms times the mean radius of the finest
+// level (dome_subgrid_top_m): a blob's height grows from its rim like a dome's.
+inline constexpr int kDomeSubgridQuantiles = 64;  // quantile table entries, 0..1 in equal steps
+class DomeSubgrid {
+ public:
+  explicit DomeSubgrid(std::uint32_t seed);
+  // n over the first `levels` levels (1..kDomeLevels - 1) at the shell point x (field frame)
+  double noise(const glm::dvec3& x, int levels) const;
+  // the value below which a fraction p of n(levels) lies (table over 65 536 shell points)
+  double quantile(double p, int levels) const;
+  // |n(levels)|_rms
+  double rms(int levels) const { return rms_[levels]; }
+  // the unit-aspect sub-grid top (m) at x where the first `levels` levels cover `covered`;
+  // negative outside the blobs, -floor_m at most
+  double top_m(const glm::dvec3& x, int levels, double covered, double floor_m) const;
+
+  // octaves 2l and 2l + 1 belong to level l
+  static constexpr int kOctaves = 2 * kDomeLevels;
+  struct Octave {
+    double wavelength_m, weight;
+    glm::dmat3 rotation;  // field axes -> the octave's lattice axes
+    std::uint32_t seed;
+  };
+  const Octave& octave(int i) const { return octave_[i]; }
+  const double* quantile_table(int levels) const { return quantiles_[levels]; }
+
+ private:
+  Octave octave_[kOctaves];
+  double quantiles_[kDomeLevels][kDomeSubgridQuantiles + 1] = {};
+  double rms_[kDomeLevels] = {};
+};
 
 // The rings a renderer reads a dome layer's tops from (weather/placement_rings.h): four
 // rings of 256^2 texels of 64 m to 512 m around the camera's nadir, reaching 8 to 64 km;

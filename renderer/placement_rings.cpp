@@ -21,15 +21,16 @@ struct RingJobGpu {
   float field_to_ecef[16];  // mat4, columns
   float plane_e[4], plane_n[4];
   float pole_south[4], pole_north[4];
+  float origin[2];
   float texel_m;
   std::int32_t size, first_level, end_level, warp_octaves;
   float floor_m;
   std::int32_t slice;
   float layer_coverage, map_height, map_blend;
   std::int32_t table_steps;
-  float pad[1];
+  float pad[3];
 };
-static_assert(sizeof(RingJobGpu) == 848, "std430 layout of RingJob");
+static_assert(sizeof(RingJobGpu) == 816, "std430 layout of RingJob");
 
 }  // namespace
 
@@ -89,10 +90,12 @@ void PlacementRings::fill(int slot, int ring, const weather::CloudPlacement& cp,
   }
   std::memcpy(job.pole_south, glm::value_ptr(in.pole_south), sizeof job.pole_south);
   std::memcpy(job.pole_north, glm::value_ptr(in.pole_north), sizeof job.pole_north);
+  job.origin[0] = static_cast<float>(in.origin.x);
+  job.origin[1] = static_cast<float>(in.origin.y);
   job.texel_m = static_cast<float>(weather::ring_texel_m(layout_, ring));
   job.size = layout_.size;
   job.first_level = weather::ring_first_level(layout_, cp.params(), ring);
-  job.end_level = weather::ring_end_level(layout_, cp.params(), ring);
+  job.end_level = cp.params().levels;
   job.warp_octaves = weather::dome_warp_octaves(weather::ring_texel_m(layout_, ring));
   job.floor_m = static_cast<float>(weather::dome_ring_floor_m(layout_, ring));
   job.slice = slice(slot, ring);

@@ -40,7 +40,7 @@ static_assert(sizeof(PlacementFrameGpu) == 352, "std430 layout of PlacementFrame
 // kPlacementMaxLevels levels.
 PlacementFrameGpu placement_frame_gpu(const weather::CloudPlacement& cp, const glm::dvec3& centre);
 
-inline constexpr int kDomeWarpOctavesGpu = 6;  // = DOME_WARP_OCTAVES (dome_warp.glsl)
+inline constexpr int kDomeWarpOctavesGpu = 5;  // = DOME_WARP_OCTAVES (dome_warp.glsl)
 static_assert(kDomeWarpOctavesGpu == weather::kDomeWarpOctaves, "dome_warp.glsl's octave count");
 
 // std430 image of DomeWarpFrame (shaders/dome_warp.glsl).
@@ -48,10 +48,10 @@ struct DomeWarpFrameGpu {
   std::int32_t cell[kDomeWarpOctavesGpu][4];
   float offset[kDomeWarpOctavesGpu][4];
   float amplitude[kDomeWarpOctavesGpu];
-  float pad[2];
+  float pad[3];
   std::uint32_t seed[kDomeWarpOctavesGpu][4];
 };
-static_assert(sizeof(DomeWarpFrameGpu) == 320, "std430 layout of DomeWarpFrame");
+static_assert(sizeof(DomeWarpFrameGpu) == 272, "std430 layout of DomeWarpFrame");
 
 // The warp's octaves around the centre C (field frame, m): C / lambda as an integer cell and
 // a fraction per octave, in double.
@@ -59,7 +59,8 @@ DomeWarpFrameGpu dome_warp_frame_gpu(const weather::DomeWarp& warp, const glm::d
 
 // What one ring is filled from.
 struct RingInputs {
-  glm::dvec3 centre{0.0};          // C: on the shell, field frame (m)
+  glm::dvec3 centre{0.0};          // C: on the shell, field frame (m): the plane's tangent point
+  glm::dvec2 origin{0.0};          // the ring's centre on the plane tangent at C (m)
   glm::dmat3 field_to_ecef{1.0};   // field axes -> ECEF axes
   double layer_coverage = 0.0;     // c_L, modulated by the map's coverage channel
   float map_height = 0.0f;         // weather map rows

@@ -4,7 +4,7 @@
 // coordinates of points near C come out exact in float. Needs gradient_noise.glsl and
 // cloud_placement.glsl (placement_project).
 
-const int DOME_WARP_OCTAVES = 6;  // = weather::kDomeWarpOctaves
+const int DOME_WARP_OCTAVES = 5;  // = weather::kDomeWarpOctaves
 
 struct DomeWarpFrame {
   ivec4 cell[DOME_WARP_OCTAVES];     // xyz: floor(C / lambda_o)

@@ -20,6 +20,7 @@ struct RingJob {
   mat4 field_to_ecef;    // upper 3 x 3: field axes -> ECEF axes
   vec4 plane_e, plane_n; // xyz: unit tangents at C (RingPlane e, n)
   vec4 pole_south, pole_north;  // the weather map's pole values (blended keyframes)
+  vec2 origin;           // the ring's centre on the plane (m; weather::DomeRings::origin)
   float texel_m;         // h_k
   int size;              // texels a side
   int first_level;       // the ring's levels: [first_level, end_level)
@@ -69,7 +70,7 @@ vec3 ring_point(vec2 uv) {
 void main() {
   ivec2 t = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(t, ivec2(job.size)))) return;
-  vec2 uv = (vec2(t) + 0.5 - 0.5 * float(job.size)) * job.texel_m;
+  vec2 uv = job.origin + (vec2(t) + 0.5 - 0.5 * float(job.size)) * job.texel_m;
   vec3 x = ring_point(uv);
   float top = -job.floor_m;
   if (job.first_level < job.end_level)

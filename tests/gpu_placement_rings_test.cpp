@@ -17,6 +17,7 @@
 #include "renderer/gpu_interface.h"
 #include "renderer/placement_rings.h"
 #include "weather/cumulus_domes.h"
+#include "weather/dome_rings.h"
 #include "weather/placement_rings.h"
 #include "weather/weather_map.h"
 
@@ -52,7 +53,10 @@ TEST(GpuPlacementRings, MatchTheCpuPlacementAtTheirTexels) {
   PlacementRings rings(layout, 1);
   for (auto [lat, lon] : {std::pair{47.4, 8.5}, {89.995, 40.0}, {-20.0, 179.99}}) {
     const double la = lat * kPi / 180.0, lo = lon * kPi / 180.0;
-    const glm::dvec3 C = R * glm::transpose(field_to_ecef) * glm::dvec3(std::cos(la) * std::cos(lo), std::cos(la) * std::sin(lo), std::sin(la));
+    const glm::dvec3 camera = (R + 2500.0) * glm::transpose(field_to_ecef) *
+                              glm::dvec3(std::cos(la) * std::cos(lo), std::cos(la) * std::sin(lo), std::sin(la));
+    const weather::DomeRings dome_rings = weather::dome_rings_for(layout, camera);
+    const glm::dvec3 C = dome_rings.anchor;
     RingInputs in;
     in.centre = C;
     in.field_to_ecef = field_to_ecef;
@@ -62,6 +66,7 @@ TEST(GpuPlacementRings, MatchTheCpuPlacementAtTheirTexels) {
     in.pole_north = glm::vec4(north[0], north[1], north[2], north[3]);
     const weather::RingPlane plane = weather::ring_plane(C);
     for (int ring = 0; ring < layout.rings; ++ring) {
+      in.origin = dome_rings.origin[ring];
       rings.fill(0, ring, cp, warp, in);
       std::vector<float> texels(static_cast<std::size_t>(layout.size) * layout.size * 2);
       glGetTextureSubImage(rings.texture(), 0, 0, 0, rings.slice(0, ring), layout.size, layout.size, 1, GL_RG, GL_FLOAT,
@@ -71,7 +76,8 @@ TEST(GpuPlacementRings, MatchTheCpuPlacementAtTheirTexels) {
       double worst_below = 0.0, worst_top = 0.0;
       for (int j = 3; j < layout.size; j += 9)
         for (int i = 5; i < layout.size; i += 9) {
-          const weather::DomeRingTexel cpu = weather::dome_ring_texel(cp, warp, layout, plane, C, ring, i, j, coverage);
+          const glm::dvec2 uv = in.origin + weather::ring_texel_uv(layout, ring, i, j);
+          const weather::DomeRingTexel cpu = weather::dome_ring_texel_at(cp, warp, layout, plane, C, ring, uv, coverage);
           const std::size_t k = (static_cast<std::size_t>(j) * layout.size + i) * 2;
           ++compared;
           covered += cpu.top_m > 0.0;
@@ -83,7 +89,7 @@ TEST(GpuPlacementRings, MatchTheCpuPlacementAtTheirTexels) {
       std::printf("%.3f, %.2f ring %d (%.0f m texels, levels %d..%d): %d of %d texels under a cloud, %d differ, the rest "
                   "within %.3f m; covered below: worst difference %.1e\n",
                   lat, lon, ring, weather::ring_texel_m(layout, ring), weather::ring_first_level(layout, cp.params(), ring),
-                  weather::ring_end_level(layout, cp.params(), ring) - 1, covered, compared, mismatched, worst_top,
+                  cp.params().levels - 1, covered, compared, mismatched, worst_top,
                   worst_below);
       // a cloud's acceptance reads the map at its centre: the GPU's bilinear weights (8-bit
       // fractions) can tip a candidate whose hash is within ~1e-3 of its probability

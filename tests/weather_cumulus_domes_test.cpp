@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include "weather/cumulus_domes.h"
+#include "weather/dome_rings.h"
 
 namespace cloudsvc::weather {
 namespace {
@@ -64,8 +65,8 @@ TEST(CumulusDomes, WarpStaysOnTheShellWithinItsBound) {
   EXPECT_GT(largest, 0.2 * DomeWarp::max_displacement_m()) << "the warp displaces by hundreds of metres";
   // level of detail: octaves of wavelength >= 4 texels
   EXPECT_EQ(dome_warp_octaves(32.0), kDomeWarpOctaves);
-  EXPECT_EQ(dome_warp_octaves(250.0), 4);  // 8, 4, 2, 1 km
-  EXPECT_EQ(dome_warp_octaves(256.0), 3);
+  EXPECT_EQ(dome_warp_octaves(256.0), 4);  // 8, 4, 2, 1 km: wavelengths of >= 3.5 texels
+  EXPECT_EQ(dome_warp_octaves(300.0), 3);
   EXPECT_EQ(dome_warp_octaves(4000.0), 0);
 }
 
@@ -89,6 +90,38 @@ TEST(CumulusDomes, TopIsContinuousAcrossTheAntimeridianAndThePoles) {
   }
   std::printf("largest change over 1 m: across the seams %.3f m, elsewhere %.3f m\n", step_seam, step_elsewhere);
   EXPECT_LT(step_seam, std::max(3.0 * step_elsewhere, 1.0));
+}
+
+// The rings follow the camera in steps (a pure function of its position, which the CPU
+// reference recomputes): every ring keeps the nadir within 1/16 of its width of its centre,
+// their texels stay on one grid of the anchor's plane, and a camera moving 100 m mostly
+// keeps its rings.
+TEST(DomeRings, FollowTheCameraInStepsOnOneTexelGrid) {
+  const RingLayout layout = dome_ring_layout();
+  int unchanged = 0, moves = 0;
+  for (double lat = -89.9; lat < 90.0; lat += 7.3)
+    for (double lon = -179.95; lon < 180.0; lon += 23.9) {
+      const glm::dvec3 camera = (kR + 4000.0) / kR * shell_point(lat, lon);
+      const DomeRings r = dome_rings_for(layout, camera);
+      EXPECT_NEAR(glm::length(r.anchor), kR, 1e-6);
+      EXPECT_LT(glm::distance(r.anchor, kR * glm::normalize(camera)), kDomeAnchorCell_m) << lat << " " << lon;
+      const glm::dvec2 nadir = ring_plane_coords(r.plane, kR, camera);
+      for (int k = 0; k < layout.rings; ++k) {
+        const double h = ring_texel_m(layout, k);
+        const glm::dvec2 off = glm::abs(nadir - r.origin[k]) / h;
+        EXPECT_LE(std::max(off.x, off.y), layout.size / 16.0 + 1e-9) << k;
+        // the origin is a whole number of texels from the plane's origin: one texel grid
+        const glm::dvec2 t = r.origin[k] / h;
+        EXPECT_NEAR(t.x, std::round(t.x), 1e-9);
+        EXPECT_NEAR(t.y, std::round(t.y), 1e-9);
+        EXPECT_DOUBLE_EQ(dome_ring_weight(layout, r, k, nadir), 1.0);
+      }
+      const DomeRings moved = dome_rings_for(layout, camera + 100.0 * r.plane.e);
+      ++moves;
+      unchanged += moved == r;
+    }
+  std::printf("%d of %d 100 m moves keep every ring\n", unchanged, moves);
+  EXPECT_GT(unchanged, moves * 8 / 10);
 }
 
 }  // namespace

@@ -68,7 +68,7 @@ double DomeWarp::max_displacement_m() {
 
 int dome_warp_octaves(double texel_m) {
   int n = 0;
-  while (n < kDomeWarpOctaves && std::ldexp(kDomeWarpLongest_m, -n) >= 4.0 * texel_m) ++n;
+  while (n < kDomeWarpOctaves && std::ldexp(kDomeWarpLongest_m, -n) >= 3.5 * texel_m) ++n;
   return n;
 }
 
@@ -111,7 +111,7 @@ DomeSubgrid::DomeSubgrid(std::uint32_t seed) {
   // noise is stationary, so any large set gives the same table)
   constexpr int kPoints = 65536;
   std::vector<double> v(kPoints);
-  for (int levels = 1; levels < kDomeLevels; ++levels) {
+  for (int levels = 1; levels <= kDomeLevels; ++levels) {
     double sum2 = 0.0;
     for (int i = 0; i < kPoints; ++i) {
       const double z = 1.0 - (2.0 * i + 1.0) / kPoints, r = std::sqrt(1.0 - z * z);
@@ -160,12 +160,11 @@ RingLayout dome_ring_layout() {
 
 double dome_ring_floor_m(const RingLayout& layout, int ring) { return 4.0 * ring_texel_m(layout, ring); }
 
-DomeRingTexel dome_ring_texel(const CloudPlacement& cp, const DomeWarp& warp, const RingLayout& layout,
-                              const RingPlane& plane, const glm::dvec3& centre, int ring, int i, int j,
-                              const CloudPlacement::CoverageAt& coverage) {
-  const glm::dvec3 x =
-      centre + ring_point_from_centre(plane, cp.shell_radius_m(), ring_texel_uv(layout, ring, i, j));
-  const int first = ring_first_level(layout, cp.params(), ring), end = ring_end_level(layout, cp.params(), ring);
+DomeRingTexel dome_ring_texel_at(const CloudPlacement& cp, const DomeWarp& warp, const RingLayout& layout,
+                                 const RingPlane& plane, const glm::dvec3& centre, int ring, const glm::dvec2& uv,
+                                 const CloudPlacement::CoverageAt& coverage) {
+  const glm::dvec3 x = centre + ring_point_from_centre(plane, cp.shell_radius_m(), uv);
+  const int first = ring_first_level(layout, cp.params(), ring), end = cp.params().levels;
   DomeRingTexel t;
   t.top_m = dome_top_unit_aspect(cp, warp, x, coverage, first, end, dome_ring_floor_m(layout, ring),
                                  dome_warp_octaves(ring_texel_m(layout, ring)));

@@ -16,18 +16,19 @@
 // takes b = 1.1 - 0.4 c with c the layer's coverage, so that a broken field holds larger
 // clouds than a scattered one, not only more of them.
 //
-// Outlines: the point x looks up the placement at x + w(x), w a six-octave gradient-noise
-// displacement (wavelengths 8 km / 2^o down to 250 m, amplitude 1100 m (lambda / 8 km)^0.3,
-// i.e. a displacement of a third of the wavelength at 1 km): the discs' smooth rims become
-// outlines of perimeter-area dimension near the 1.35 of satellite and radar cloud fields
-// (Lovejoy 1982); tests/reference_cumulus_domes_test.cpp measures it (weaker warps give
-// 1.2-1.3: rims stay smooth at the scale of the many small clouds).
+// Outlines: the point x looks up the placement at x + w(x), w a five-octave gradient-noise
+// displacement (wavelengths 8 km / 2^o down to 500 m, amplitude 1500 m (lambda / 8 km)^0.3,
+// i.e. about the wavelength's size at 500 m): the discs' smooth rims become outlines of
+// perimeter-area dimension near the 1.35 of satellite and radar cloud fields (Lovejoy 1982);
+// tests/reference_cumulus_domes_test.cpp measures it (weaker warps give 1.2-1.3: rims stay
+// smooth at the scale of the many small clouds).
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 
 #include <glm/mat3x3.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "weather/cloud_layer.h"
@@ -43,9 +44,9 @@ inline constexpr double kDomeSmallestCell_m = 500.0;  // the smallest clouds: 10
 inline constexpr int kDomeLevels = 4;  // cells 500 m .. 4 km
 
 // The domain warp of the outlines (see above).
-inline constexpr int kDomeWarpOctaves = 6;
+inline constexpr int kDomeWarpOctaves = 5;
 inline constexpr double kDomeWarpLongest_m = 8000.0;  // octave o: wavelength 8 km / 2^o
-inline constexpr double kDomeWarpAmplitude_m = 1100.0; // at 8 km; times (lambda / 8 km)^0.3
+inline constexpr double kDomeWarpAmplitude_m = 1500.0; // at 8 km; times (lambda / 8 km)^0.3
 inline constexpr double kDomeWarpAmplitudeSlope = 0.3;
 
 // Cumulus layers are drawn as domes; every other type keeps the noise-threshold field.
@@ -64,7 +65,7 @@ std::uint32_t dome_placement_seed(const Weather& w, std::size_t index);
 
 // The warp's displacement at the shell point x (field frame, m), as the shell point it
 // moves x to: x + w(x) projected onto the shell of x's radius. octaves: how many of the
-// octaves, longest first (a grid of texel h draws those of wavelength >= 4 h:
+// octaves, longest first (a grid of texel h draws those of wavelength >= 3.5 h:
 // dome_warp_octaves).
 class DomeWarp {
  public:
@@ -83,7 +84,7 @@ class DomeWarp {
   Octave octave_[kDomeWarpOctaves];
 };
 
-// The warp octaves a grid of texel texel_m draws: those of wavelength >= 4 texels (finer
+// The warp octaves a grid of texel texel_m draws: those of wavelength >= 3.5 texels (finer
 // ones would alias).
 int dome_warp_octaves(double texel_m);
 
@@ -107,7 +108,7 @@ inline constexpr int kDomeSubgridQuantiles = 64;  // quantile table entries, 0..
 class DomeSubgrid {
  public:
   explicit DomeSubgrid(std::uint32_t seed);
-  // n over the first `levels` levels (1..kDomeLevels - 1) at the shell point x (field frame)
+  // n over the first `levels` levels (1..kDomeLevels) at the shell point x (field frame)
   double noise(const glm::dvec3& x, int levels) const;
   // the value below which a fraction p of n(levels) lies (table over 65 536 shell points)
   double quantile(double p, int levels) const;
@@ -129,28 +130,30 @@ class DomeSubgrid {
 
  private:
   Octave octave_[kOctaves];
-  double quantiles_[kDomeLevels][kDomeSubgridQuantiles + 1] = {};
-  double rms_[kDomeLevels] = {};
+  double quantiles_[kDomeLevels + 1][kDomeSubgridQuantiles + 1] = {};
+  double rms_[kDomeLevels + 1] = {};
 };
 
 // The rings a renderer reads a dome layer's tops from (weather/placement_rings.h): four
 // rings of 256^2 texels of 64 m to 512 m around the camera's nadir, reaching 8 to 64 km;
-// a level is drawn by the coarsest ring whose texel is no larger than its smallest radius
-// (ring k holds level k) and is sub-grid cloud in coarser ones.
+// ring k draws the levels whose smallest radius is at least one of its texels (ring 0 all
+// four, ring 3 the largest only: ring_first_level), with every warp octave it can resolve,
+// and the finer levels are sub-grid cloud there. A point reads the finest ring holding it.
 RingLayout dome_ring_layout();
 
-// Texel (i, j) of ring `ring` centred at C (on the shell, field frame, m): the unit-aspect
-// top of the ring's own levels [ring_first_level, ring_end_level) at its centre with the warp
-// octaves its texel draws, never below -4 texels (dome_ring_floor_m), and the fraction of the
-// shell the levels below ring_first_level cover at the layer's coverage there
+// The texel of ring `ring` centred at plane coordinates uv (m) of the plane tangent to the
+// shell at `centre` (field frame, m; weather/dome_rings.h places the rings): the unit-aspect
+// top of the levels the ring draws (from ring_first_level up) at the texel's shell point with
+// the warp octaves its texel draws, never below -4 texels (dome_ring_floor_m), and the
+// fraction of the shell the finer levels cover at the layer's coverage there
 // (CloudPlacement::covered_below), which a renderer draws as sub-grid cloud.
 struct DomeRingTexel {
   double top_m = 0.0;
   double covered_below = 0.0;
 };
-DomeRingTexel dome_ring_texel(const CloudPlacement& cp, const DomeWarp& warp, const RingLayout& layout,
-                              const RingPlane& plane, const glm::dvec3& centre, int ring, int i, int j,
-                              const CloudPlacement::CoverageAt& coverage);
+DomeRingTexel dome_ring_texel_at(const CloudPlacement& cp, const DomeWarp& warp, const RingLayout& layout,
+                                 const RingPlane& plane, const glm::dvec3& centre, int ring, const glm::dvec2& uv,
+                                 const CloudPlacement::CoverageAt& coverage);
 double dome_ring_floor_m(const RingLayout& layout, int ring);
 
 }  // namespace cloudsvc::weather

@@ -15,10 +15,6 @@ int ring_first_level(const RingLayout& layout, const PlacementParams& params, in
   return params.levels;
 }
 
-int ring_end_level(const RingLayout& layout, const PlacementParams& params, int ring) {
-  return ring + 1 < layout.rings ? ring_first_level(layout, params, ring + 1) : params.levels;
-}
-
 RingPlane ring_plane(const glm::dvec3& centre) {
   RingPlane p;
   p.c = glm::normalize(centre);

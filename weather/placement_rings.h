@@ -32,17 +32,12 @@ double ring_texel_m(const RingLayout& layout, int ring);  // h_k (m)
 // The first placement level ring `ring` draws (levels below it are folded into the
 // covered fraction); params.levels when none is large enough.
 int ring_first_level(const RingLayout& layout, const PlacementParams& params, int ring);
-// The end of the levels ring `ring` holds when each ring holds only its own levels, those
-// the next coarser ring cannot draw: [ring_first_level(ring),
-// ring_end_level(ring)), the last ring all the rest. A point the finest ring k covers reads
-// the levels from ring_first_level(k) up as the max over rings k and coarser (every coarser
-// ring reaches further, so covers it too).
-int ring_end_level(const RingLayout& layout, const PlacementParams& params, int ring);
 
 // The tangent frame at a centre on the shell (field frame): c = C / |C|; e perpendicular to c
 // and the field's z axis (to its x axis where c is that axis, |c.z| > 1 - 1e-12), n = c x e.
 struct RingPlane {
   glm::dvec3 c{0.0, 0.0, 1.0}, e{1.0, 0.0, 0.0}, n{0.0, 1.0, 0.0};
+  bool operator==(const RingPlane&) const = default;
 };
 RingPlane ring_plane(const glm::dvec3& centre);
 

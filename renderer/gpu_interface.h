@@ -38,7 +38,8 @@ namespace cloudsvc::gpu {
   X(CLOUD_RADIANCE, 16)    /* this frame's resolved cloud buffer (composite) */            \
   X(PRESENT_FRAME, 17)     /* the frame a window shows (present.frag) */              \
   X(BASE_NOISE_MAX, 18)    /* base-noise max pyramid as mip levels (long-step probes) */ \
-  X(CLOUD_DEPTH, 19)       /* ... its depth, ground-share shift, layer (composite) */
+  X(CLOUD_DEPTH, 19)       /* ... its depth, ground-share shift, layer (composite) */ \
+  X(DOME_RINGS, 20)        /* cumulus dome rings, RG32F array (cumulus_domes.glsl) */
 
 // Image units: each pass binds the images it writes right before its dispatch, so outputs
 // of different passes share units. GLSL: IMG_<NAME>.
@@ -62,7 +63,8 @@ namespace cloudsvc::gpu {
   X(TEST_INPUT_A, 2)     /* test programs' inputs and output */                   \
   X(TEST_INPUT_B, 3)                                                              \
   X(TEST_OUTPUT, 4)                                                               \
-  X(PLACEMENT_RING_JOB, 5) /* one ring's job and acceptance table (placement_rings.comp) */
+  X(PLACEMENT_RING_JOB, 5) /* one ring's job and acceptance table (placement_rings.comp) */ \
+  X(DOME_LAYERS, 6)        /* per layer: where its dome rings lie, its sub-grid (cumulus_domes.glsl) */
 
 // Uniform blocks. GLSL: UBO_<NAME>.
 #define CLOUDSVC_GPU_UNIFORM_BLOCKS(X) \

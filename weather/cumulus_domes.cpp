@@ -144,8 +144,7 @@ double DomeSubgrid::quantile(double p, int levels) const {
 
 double DomeSubgrid::top_m(const glm::dvec3& x, int levels, double covered, double floor_m) const {
   if (levels <= 0 || covered <= 0.0) return -floor_m;
-  const double mean_radius = 0.35 * kDomeSmallestCell_m;  // (rho_min + rho_max) / 2 of level 0
-  const double t = mean_radius * (noise(x, levels) - quantile(1.0 - covered, levels)) / rms_[levels];
+  const double t = kDomeSubgridMeanRadius_m * (noise(x, levels) - quantile(1.0 - covered, levels)) / rms_[levels];
   return std::max(t, -floor_m);
 }
 

@@ -105,6 +105,8 @@ double dome_top_unit_aspect(const CloudPlacement& cp, const DomeWarp& warp, cons
 // The unit-aspect top there is (n - q) / |n|_rms times the mean radius of the finest
 // level (dome_subgrid_top_m): a blob's height grows from its rim like a dome's.
 inline constexpr int kDomeSubgridQuantiles = 64;  // quantile table entries, 0..1 in equal steps
+// The sub-grid top's scale: the mean radius of the finest level, (rho_min + rho_max) / 2 of its cell.
+inline constexpr double kDomeSubgridMeanRadius_m = 0.35 * kDomeSmallestCell_m;
 class DomeSubgrid {
  public:
   explicit DomeSubgrid(std::uint32_t seed);

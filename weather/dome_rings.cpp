@@ -108,8 +108,10 @@ double DomeTopSampler::top_m(const DomeRings& rings, const glm::dvec3& x, double
     result += remaining * w * rep;
     remaining -= remaining * w;
   }
+  // over every level the covered fraction is the coverage itself (as far as the placement
+  // reaches; CloudPlacement::covered_below agrees within 2e-3)
   if (remaining > 0.0)
-    result += remaining * subgrid_.top_m(x, levels, cp_.covered_below(levels, coverage_here), floor_m);
+    result += remaining * subgrid_.top_m(x, levels, std::min(coverage_here, cp_.max_coverage()), floor_m);
   return result;
 }
 

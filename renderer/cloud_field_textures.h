@@ -6,6 +6,8 @@
 // Needs a current GL 4.5 context.
 #pragma once
 
+#include <string>
+#include <vector>
 #include <cstddef>
 #include <cstdint>
 
@@ -21,7 +23,16 @@ struct RendererConfig {
   std::uint32_t noise_seed = 1;
   int weather_map_width = 1024;  // global map, 0.35 deg per texel
   int weather_map_height = 512;
+  // Cumulus layers as individual domes over the cloud placement (weather/cumulus_domes.h,
+  // renderer/dome_field.h) instead of the thresholded noise field. Off by default while the
+  // default preset's accuracy on them is brought to its floors (docs/MORPHOLOGY.md).
+  bool cumulus_domes = false;
 };
+
+// The preprocessor defines of the programs that evaluate the cloud density
+// (shaders/cloud_density.glsl): CLOUDSVC_CUMULUS_DOMES where config draws domes, so a
+// renderer without them compiles none of their code.
+std::vector<std::string> cloud_density_defines(const RendererConfig& config);
 
 class CloudFieldTextures {
  public:

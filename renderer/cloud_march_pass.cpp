@@ -5,7 +5,8 @@
 
 namespace cloudsvc {
 
-CloudMarchPass::CloudMarchPass() : program_(gl::ShaderProgram::compute("cloud_march.comp")) {}
+CloudMarchPass::CloudMarchPass(const std::vector<std::string>& density_defines)
+    : program_(gl::ShaderProgram::compute("cloud_march.comp", density_defines)) {}
 
 void CloudMarchPass::run(const CloudPassInputs& inputs, const GroundShadowMap& shadows, const CloudBuffer& buffer, const TemporalPlan& plan) const {
   program_.use();

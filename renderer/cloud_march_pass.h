@@ -14,7 +14,8 @@ namespace cloudsvc {
 
 class CloudMarchPass {
  public:
-  CloudMarchPass();
+  // density_defines: the cloud density's variant (cloud_density_defines, cloud_field_textures.h)
+  explicit CloudMarchPass(const std::vector<std::string>& density_defines = {});
   void run(const CloudPassInputs& inputs, const GroundShadowMap& shadows, const CloudBuffer& buffer, const TemporalPlan& plan) const;
 
  private:

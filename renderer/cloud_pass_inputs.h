@@ -6,6 +6,7 @@
 
 #include "renderer/atmosphere_luts.h"
 #include "renderer/cloud_field_textures.h"
+#include "renderer/dome_field.h"
 #include "renderer/frame_buffers.h"
 
 namespace cloudsvc {
@@ -14,11 +15,13 @@ struct CloudPassInputs {
   const FrameBuffers& frame;
   const CloudFieldTextures& field;
   const AtmosphereLuts& atmosphere;
+  const DomeField* domes = nullptr;  // the cumulus dome fields, where the renderer draws them
 
   void bind() const {
     frame.bind();
     field.bind();
     atmosphere.bind_lookups();
+    if (domes) domes->bind();
   }
 };
 

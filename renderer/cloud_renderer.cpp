@@ -16,7 +16,13 @@ namespace {
 enum TimedPass { kLutsPass = 0, kMarchPass = 1, kResolvePass = 2, kCompositePass = 3, kShadowMapPass = 4 };
 }  // namespace
 
-CloudRenderer::CloudRenderer(const RendererConfig& config) : config_(config), field_(config) {
+CloudRenderer::CloudRenderer(const RendererConfig& config)
+    : config_(config),
+      field_(config),
+      shadow_map_(cloud_density_defines(config)),
+      march_(cloud_density_defines(config)),
+      composite_(cloud_density_defines(config)) {
+  if (config.cumulus_domes) domes_ = std::make_unique<DomeField>();
   set_weather(weather::Weather{});
 }
 
@@ -115,11 +121,19 @@ FrameImage CloudRenderer::render(const ViewRequest& view, const RenderQuality& q
 
   // 1. The frame's state, once, in double; every step below reads it, the uniforms last.
   FrameContext frame = make_frame_context(view, weather_, *wind_anchor_);
+  if (domes_)
+    for (int i = 0; i < frame.layer_count; ++i)
+      frame.layers[static_cast<std::size_t>(i)].domes = weather::uses_domes(frame.layers[static_cast<std::size_t>(i)].layer.type);
   cull_layers_without_cloud_in_view(frame, blend);
   const AtmosphereLuts::ViewLutUpdate view_luts = atmosphere_.plan_view_dependent(frame);  // sets frame.ap
   const FrameRays rays = classify_frame_rays(frame);
-  frame_buffers_.start_frame(pack_frame_uniforms(frame, quality, field_.summary()));
-  const CloudPassInputs inputs{frame_buffers_, field_, atmosphere_};
+  const FrameUniforms uniforms = pack_frame_uniforms(frame, quality, field_.summary());
+  frame_buffers_.start_frame(uniforms);
+  if (domes_) {
+    field_.bind();  // the ring fill reads the weather map
+    domes_->update(frame, weather_, weather_generation_, uniforms);
+  }
+  const CloudPassInputs inputs{frame_buffers_, field_, atmosphere_, domes_.get()};
 
   timer_.reset();
   timer_.begin(kLutsPass);  // 2.

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 
 #include "renderer/api/frame_image.h"
@@ -20,6 +21,7 @@
 #include "renderer/atmosphere_luts.h"
 #include "renderer/cloud_buffer.h"
 #include "renderer/cloud_field_textures.h"
+#include "renderer/dome_field.h"
 #include "renderer/cloud_march_pass.h"
 #include "renderer/cloud_resolve_pass.h"
 #include "renderer/composite_pass.h"
@@ -74,6 +76,7 @@ class CloudRenderer {
   unsigned culled_layers_ = 0;             // bit i: layer i had no cloud within reach last frame
 
   CloudFieldTextures field_;
+  std::unique_ptr<DomeField> domes_;  // config_.cumulus_domes only
   FrameBuffers frame_buffers_;
   AtmosphereLuts atmosphere_;
   GroundShadowMap shadow_map_;

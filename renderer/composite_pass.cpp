@@ -5,7 +5,8 @@
 
 namespace cloudsvc {
 
-CompositePass::CompositePass() : program_(gl::ShaderProgram::compute("composite.comp")) {}
+CompositePass::CompositePass(const std::vector<std::string>& density_defines)
+    : program_(gl::ShaderProgram::compute("composite.comp", density_defines)) {}
 
 void CompositePass::ensure_size(int w, int h) {
   if (target_ && w == w_ && h == h_) return;

@@ -17,7 +17,8 @@ namespace cloudsvc {
 
 class CompositePass {
  public:
-  CompositePass();
+  // density_defines: the cloud density's variant (cloud_density_defines, cloud_field_textures.h)
+  explicit CompositePass(const std::vector<std::string>& density_defines = {});
   // Sizes the frame target (w x h pixels).
   void ensure_size(int w, int h);
   void run(const CloudPassInputs& inputs, const GroundShadowMap& shadows, const CloudBuffer& buffer) const;

@@ -8,7 +8,8 @@
 namespace cloudsvc {
 
 DomeLayerGpu dome_layer_gpu(const weather::DomeRings& rings, const weather::RingLayout& layout,
-                            const weather::CloudPlacement& cp, const weather::DomeSubgrid& subgrid, int first_slice) {
+                            const weather::CloudPlacement& cp, const weather::DomeSubgrid& subgrid, int first_slice,
+                            const glm::dvec3& camera_field) {
   DomeLayerGpu d{};
   for (int i = 0; i < 3; ++i) {
     d.plane_e[i] = static_cast<float>(rings.plane.e[i]);
@@ -29,6 +30,11 @@ DomeLayerGpu dome_layer_gpu(const weather::DomeRings& rings, const weather::Ring
   d.params[0] = static_cast<float>(weather::dome_ring_floor_m(layout, layout.rings - 1));
   d.params[1] = static_cast<float>(weather::kDomeSubgridMeanRadius_m);
   d.params[2] = static_cast<float>(cp.max_coverage());
+  d.shape[0] = static_cast<float>(weather::kDomeTopScale_m);
+  d.shape[1] = static_cast<float>(weather::kDomeCauliflower_m);
+  d.shape[2] = static_cast<float>(weather::kDomeEdge_m);
+  d.shape[3] = static_cast<float>(weather::kDomeBaseRamp_m);
+  for (int i = 0; i < 3; ++i) d.camera_q[i] = static_cast<float>(camera_field[i] - rings.anchor[i]);
   for (int i = 0; i < kDomeSubgridOctavesGpu; ++i) {
     const weather::DomeSubgrid::Octave& oc = subgrid.octave(i);
     // glm is column-major: row r of the rotation is (m[0][r], m[1][r], m[2][r])

@@ -19,6 +19,8 @@ struct DomeLayerGpu {
   float ring[weather::kDomeMaxRings][4];
   std::int32_t info[4];
   float params[4];
+  float shape[4];
+  float camera_q[4];
   float oct_rot[kDomeSubgridOctavesGpu * 3][4];
   std::int32_t oct_cell[kDomeSubgridOctavesGpu][4];
   float oct_frac[kDomeSubgridOctavesGpu][4];
@@ -26,11 +28,13 @@ struct DomeLayerGpu {
   float rms[weather::kDomeLevels + 1];
   float pad[2];
 };
-static_assert(sizeof(DomeLayerGpu) == 2112, "std430 layout of DomeLayerGpu");
+static_assert(sizeof(DomeLayerGpu) == 2144, "std430 layout of DomeLayerGpu");
 
 // The data of a layer whose rings `rings` (of `layout`, slices first_slice..) hold placement
-// cp, with sub-grid `subgrid`.
+// cp, with sub-grid `subgrid`, for a camera at camera_field (field frame, m; the point the
+// GPU's local frame origin maps to).
 DomeLayerGpu dome_layer_gpu(const weather::DomeRings& rings, const weather::RingLayout& layout,
-                            const weather::CloudPlacement& cp, const weather::DomeSubgrid& subgrid, int first_slice);
+                            const weather::CloudPlacement& cp, const weather::DomeSubgrid& subgrid, int first_slice,
+                            const glm::dvec3& camera_field = glm::dvec3(0.0));
 
 }  // namespace cloudsvc

@@ -34,6 +34,8 @@ struct LayerFrame {
   // No cloud of this layer anywhere the frame can reach (CloudRenderer culling,
   // renderer/coverage_cull.h): not marched, coverage 0 on the GPU.
   bool culled = false;
+  // Drawn as individual cumulus domes (weather/cumulus_domes.h; RendererConfig::cumulus_domes).
+  bool domes = false;
 
   // Coverage the march uses: 0 for a culled layer.
   double drawn_coverage() const { return culled ? 0.0 : layer.coverage; }

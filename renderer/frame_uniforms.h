@@ -29,7 +29,7 @@ struct CloudLayerGpu {
   alignas(16) glm::vec3 base_noise_offset;  // camera's field position, base-noise periods, wrapped
   int stratiform;                            // 1: sheet not driven by the map's type channel
   alignas(16) glm::vec3 detail_noise_offset;  // ... in detail-noise periods, wrapped
-  float unused_pad;
+  int dome;                                    // 1: individual cumulus domes (cumulus_domes.glsl, slot = layer)
   alignas(16) glm::vec4 anvil;  // weather::Anvil: spread (0: none), base, top, density_ratio
   glm::mat4 noise_rotation;  // upper 3x3: local ENU -> ECEF axes of the wind-rotated field
 };

@@ -122,6 +122,7 @@ FrameUniforms pack_frame_uniforms(const FrameContext& c, const RenderQuality& qu
     g.base_noise_offset = wrapped_offset(lf.camera_field_m, lf.base_period_m);
     g.stratiform = tr.stratiform ? 1 : 0;
     g.detail_noise_offset = wrapped_offset(lf.camera_field_m, lf.detail_period_m);
+    g.dome = lf.domes ? 1 : 0;
     g.anvil = glm::vec4(tr.anvil.spread, tr.anvil.base, tr.anvil.top, tr.anvil.density_ratio);
     g.noise_rotation = glm::mat4(glm::mat3(lf.field_rotation * c.enu_to_ecef));
   }

@@ -40,9 +40,9 @@ std::string shadow_map_stale_reason(const ShadowMapKey& key, const FrameContext&
   return "";
 }
 
-GroundShadowMap::GroundShadowMap()
-    : build_prog_(gl::ShaderProgram::compute("ground_shadow_map.comp")),
-      volume_prog_(gl::ShaderProgram::compute("light_volume.comp")),
+GroundShadowMap::GroundShadowMap(const std::vector<std::string>& density_defines)
+    : build_prog_(gl::ShaderProgram::compute("ground_shadow_map.comp", density_defines)),
+      volume_prog_(gl::ShaderProgram::compute("light_volume.comp", density_defines)),
       map_(gl::make_texture_2d_array(GL_R32F, kSize, kSize, gpu::kMaxLayers)),
       volume_(gl::make_texture_3d(GL_R32F, kVolumeSize, kVolumeSize, kVolumeLevels * gpu::kMaxLayers, GL_CLAMP_TO_EDGE)),
       uniforms_(gl::make_buffer(sizeof(ShadowMapUniforms), nullptr, GL_DYNAMIC_DRAW)) {}

@@ -18,6 +18,8 @@
 // lookup; docs/RENDERING.md).
 #pragma once
 
+#include <string>
+#include <vector>
 #include <cstdint>
 #include <optional>
 
@@ -62,7 +64,8 @@ class GroundShadowMap {
  public:
   static constexpr int kSize = 512;  // texels per side
 
-  GroundShadowMap();
+  // density_defines: the cloud density's variant (cloud_density_defines, cloud_field_textures.h)
+  explicit GroundShadowMap(const std::vector<std::string>& density_defines = {});
 
   // Rebuilds the map if stale (from `inputs`, which hold the frame uniforms packed from
   // `frame`), then uploads the lookup uniforms for this view. Returns true if it rebuilt.

@@ -2,6 +2,13 @@
 // Zero Dawn"; Ford 2024 §3.1, §4.2): coverage from the layer and the global weather map, a
 // vertical profile by cloud type, Perlin-Worley base shape and Worley detail erosion. Returns the extinction coefficient sigma_t in 1/m.
 // Needs frame_uniforms.glsl, common.glsl and weather_map_sampling.glsl.
+// Cumulus layers drawn as individual domes (CloudLayerGpu.dome, weather/cumulus_domes.h)
+// read their tops through cumulus_domes.glsl; programs compiled without
+// CLOUDSVC_CUMULUS_DOMES (renderer::cloud_density_defines) hold none of that code.
+#ifdef CLOUDSVC_CUMULUS_DOMES
+#include "gradient_noise.glsl"
+#include "cumulus_domes.glsl"
+#endif
 
 layout(binding = TEX_BASE_NOISE) uniform sampler3D base_noise;      // tiles (REPEAT)
 layout(binding = TEX_DETAIL_NOISE) uniform sampler3D detail_noise;  // tiles (REPEAT)
@@ -136,6 +143,11 @@ bool cloud_may_be_on_segment(int li, vec3 a, vec3 b, vec4 w) {
   float span = (L.top_m - L.base_m) * depth_fraction(L, w);
   // the segment's heights above the base (1 m of slack: the ray's altitude between the ends)
   float h_lo = min(alt_a, alt_b) - 1.0 - L.base_m, h_hi = max(alt_a, alt_b) + 1.0 - L.base_m;
+  // domes: anywhere between the base and the ceiling raised by the cauliflower tops (a
+  // bound by height only)
+#ifdef CLOUDSVC_CUMULUS_DOMES
+  if (L.dome != 0) return h_hi > 0.0 && h_lo < span + dome_layers[li].shape.y;
+#endif
   float g0 = h_lo / span, g1 = h_hi / span;  // height fractions of the profile
   if (g1 <= 0.0 || g0 >= 1.0) return false;
   // the anvil widens the coverage (never narrows it): its largest weight over the layer's
@@ -149,6 +161,30 @@ bool cloud_may_be_on_segment(int li, vec3 a, vec3 b, vec4 w) {
   float shape_bound = base_noise_max_over(min(ua, ub) - pad, max(ua, ub) + pad);
   return shape_bound * profile_bound > noise_quantile(1.0 - coverage);
 }
+
+#ifdef CLOUDSVC_CUMULUS_DOMES
+// sigma_t (1/m) of dome layer li (weather/cumulus_domes.h) at local point p with altitude alt,
+// local coverage c and ceiling (m above the base): the dome fraction under the layer's top
+// with cauliflower tops from the base-shape noise, then the detail erosion and density as
+// for every layer. The placement's field point is unstretched: q = camera_q + W E p.
+float dome_extinction(int li, CloudLayerGpu L, vec3 p, float alt, int detail, vec4 w, float c, float ceiling) {
+  float h = alt - L.base_m;
+  if (h >= ceiling + dome_layers[li].shape.y) return 0.0;
+  vec3 q = dome_layers[li].camera_q.xyz + mat3(L.noise_rotation) * p;
+  float unit_top = dome_top(li, q, c);
+  if (unit_top <= 0.0) return 0.0;
+  vec3 p_field = field_point(L, p, alt);
+  float shape = textureLod(base_noise, p_field * L.base_noise_frequency + L.base_noise_offset, 0.0).r;
+  float d = dome_fraction(li, unit_top, ceiling, h, shape - noise_quantile(0.5));
+  if (d <= 0.0) return 0.0;
+  if (detail != DETAIL_NONE && d < 1.0) {
+    float dn = detail == DETAIL_SAMPLED ? textureLod(detail_noise, p_field * L.detail_noise_frequency + L.detail_noise_offset, 0.0).r
+                                        : frame.detail_noise_mean;
+    d = saturate(remap(d, dn * L.detail_erosion, 1.0, 0.0, 1.0));
+  }
+  return d * L.density_scale * exp2(2.0 * (w.b - 0.5)) * L.extinction_max;
+}
+#endif
 
 // sigma_t (1/m) of layer li at local point p with altitude alt, where the weather map
 // reads w (weather_at; the light march passes its sample's value: the map's texels are
@@ -164,6 +200,9 @@ float cloud_extinction_in(int li, vec3 p, float alt, int detail, vec4 w, out flo
   coverage = local_coverage(L, w);
   if (coverage <= 0.0) return 0.0;
   float df = depth_fraction(L, w);
+#ifdef CLOUDSVC_CUMULUS_DOMES
+  if (L.dome != 0) return dome_extinction(li, L, p, alt, detail, w, coverage, df * thickness);
+#endif
   float profile = height_profile(L, f / df) * step(f, df);
   if (profile <= 0.0) return 0.0;
   vec3 p_field = field_point(L, p, alt);

@@ -12,7 +12,7 @@ struct CloudLayerGpu {
   vec3 base_noise_offset;
   int stratiform;
   vec3 detail_noise_offset;
-  float unused_pad;
+  int dome;    // 1: individual cumulus domes (cumulus_domes.glsl; dome slot = layer index)
   vec4 anvil;  // weather::Anvil: spread (0: none), base, top, density_ratio
   mat4 noise_rotation;
 };

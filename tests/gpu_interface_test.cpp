@@ -82,7 +82,7 @@ Offsets expected_frame_uniforms() {
       MEMBER(CloudLayerGpu, detail_erosion), MEMBER(CloudLayerGpu, bottom_ramp), MEMBER(CloudLayerGpu, top_ramp),
       MEMBER(CloudLayerGpu, top_weight), MEMBER(CloudLayerGpu, noise_vertical_scale),
       MEMBER(CloudLayerGpu, base_noise_offset), MEMBER(CloudLayerGpu, stratiform),
-      MEMBER(CloudLayerGpu, detail_noise_offset), MEMBER(CloudLayerGpu, unused_pad),
+      MEMBER(CloudLayerGpu, detail_noise_offset), MEMBER(CloudLayerGpu, dome),
       MEMBER(CloudLayerGpu, anvil), MEMBER(CloudLayerGpu, noise_rotation)};
   for (int i = 0; i < gpu::kMaxLayers; ++i)
     for (const auto& [name, offset] : layer)

@@ -26,6 +26,13 @@ constexpr double kSubgridWavelengthA = 1.0, kSubgridWavelengthB = 0.41, kSubgrid
 constexpr double kPerlinBound = 1.1;
 }  // namespace
 
+double dome_fraction(double unit_top_m, double ceiling_m, double h_m, double shape_minus_median) {
+  const double A = kDomeCauliflower_m;
+  const double T = std::min(std::sqrt(std::max(unit_top_m, 0.0) * kDomeTopScale_m), ceiling_m);
+  const double top = T + A * std::clamp(T / A, 0.0, 1.0) * 2.0 * shape_minus_median;
+  return std::clamp((top - h_m) / kDomeEdge_m, 0.0, 1.0) * std::clamp(h_m / kDomeBaseRamp_m, 0.0, 1.0);
+}
+
 bool uses_domes(CloudType t) { return t == CloudType::Cumulus; }
 
 PlacementParams dome_placement_params(double layer_coverage) {

@@ -3,13 +3,15 @@
 // domain warp. This file holds what the GPU and the CPU reference share: the placement's
 // parameters per layer, its seed, the warp and the dome top at a shell point.
 //
-// Shape of one cloud of radius r (m) at horizontal distance d from its centre:
-//   top(d) = a (r^2 - d^2) / r   (m above the layer base; a parabola, 0 on the rim)
-// with one aspect a per layer, a = ceiling / r_largest, so that the layer's largest clouds
-// reach its ceiling (the type channel's f_v times the layer depth, weather/cloud_layer.h)
-// and smaller ones are proportionally lower (fair-weather cumulus grow taller as they grow
-// wider), and a low type channel (humilis) flattens the whole field. The union's height
-// field is max over clouds.
+// Shape of one cloud of radius r (m) at horizontal distance d from its centre: over the
+// parabolic footprint u = (r^2 - d^2) / r (r at the centre, 0 on the rim) the top is
+//   top = min(sqrt(u L), ceiling)   (m above the layer base; L = kDomeTopScale_m)
+// a dome with vertical sides at the rim, as cumulus have, sqrt(r L) tall: 320 m for a cloud
+// of 100 m radius, 1.4 km for one of 2 km (larger cumulus are taller, smaller ones
+// relatively taller still), capped by the layer's ceiling (the type channel's f_v times the
+// layer depth, weather/cloud_layer.h): the larger clouds of a shallow layer (humilis, under
+// an inversion) spread flat under it. The union's height field is the max over clouds (the
+// max of u: the top is monotonic in it).
 //
 // Sizes: cells of 500 m to 4 km (four levels), radii 0.2-0.5 of the cell (100 m to 2 km).
 // Cumulus fields follow power laws N(>A) ∝ A^(-b) (Cahalan & Joseph 1989); this model
@@ -42,6 +44,19 @@ namespace cloudsvc::weather {
 inline constexpr double kDomeShellRadius_m = 6371000.0;
 inline constexpr double kDomeSmallestCell_m = 500.0;  // the smallest clouds: 100 m radius
 inline constexpr int kDomeLevels = 4;  // cells 500 m .. 4 km
+
+// The cloud inside a dome (shaders/cloud_density.glsl and the CPU reference evaluate it):
+// at height h above the base under the top T = min(sqrt(unit top L), ceiling), with the
+// layer's base-shape noise S (its median subtracted) raising and lowering the top by up to
+// kDomeCauliflower_m where the dome is at least that tall (cauliflower tops; a flat base),
+// the cloud fraction is
+//   d = saturate((T + A saturate(T / A) 2 (S - S_median) - h) / edge) * saturate(h / base_ramp)
+// (crisp convective edges: tens of metres).
+inline constexpr double kDomeTopScale_m = 1000.0;  // L
+inline constexpr double kDomeCauliflower_m = 150.0;
+inline constexpr double kDomeEdge_m = 60.0;
+inline constexpr double kDomeBaseRamp_m = 40.0;
+double dome_fraction(double unit_top_m, double ceiling_m, double h_m, double shape_minus_median);
 
 // The domain warp of the outlines (see above).
 inline constexpr int kDomeWarpOctaves = 5;

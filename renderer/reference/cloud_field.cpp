@@ -1,6 +1,9 @@
 // Cloud density field of the reference (see cloud_field.h).
 #include "renderer/reference/cloud_field.h"
 
+#include "weather/cumulus_domes.h"
+#include "weather/dome_rings.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -20,9 +23,65 @@ double smoothstep(double e0, double e1, double x) {
 
 }  // namespace
 
-CloudField::CloudField(const ReferenceScene& scene, const ReferenceInputs& inputs, bool honour_stratiform)
+// A dome layer's placement, warp, sub-grid, the rings for this camera and their reader.
+struct CloudField::Domes {
+  weather::CloudPlacement placement;
+  weather::DomeWarp warp;
+  weather::DomeSubgrid subgrid;
+  weather::RingLayout layout = weather::dome_ring_layout();
+  glm::dvec3 camera_field{0.0};  // the local frame's origin in the field frame (m)
+  weather::DomeRings rings;
+  weather::DomeTopSampler sampler;
+  Domes(const ReferenceLayer& L, const CloudField& field, int li, const glm::dvec3& camera)
+      : placement(weather::dome_placement_params(L.coverage), weather::kDomeShellRadius_m, L.dome_seed),
+        warp(L.dome_seed),
+        subgrid(L.dome_seed),
+        camera_field(camera),
+        rings(weather::dome_rings_for(layout, camera)),
+        sampler(placement, warp, subgrid, layout,
+                [&field, li](const glm::dvec3& x) { return field.coverage_at_field_point(li, x); }) {}
+};
+
+CloudField::CloudField(const ReferenceScene& scene, const ReferenceInputs& inputs, bool honour_stratiform,
+                       bool cumulus_domes)
     : scene_(scene), inputs_(inputs), honour_stratiform_(honour_stratiform),
-      centre_to_camera_ecef_(scene.shell.enu_to_ecef[2] * (scene.shell.radius_m + scene.shell.camera_alt_m)) {}
+      centre_to_camera_ecef_(scene.shell.enu_to_ecef[2] * (scene.shell.radius_m + scene.shell.camera_alt_m)) {
+  domes_.resize(scene.layers.size());
+  if (!cumulus_domes) return;
+  for (std::size_t i = 0; i < scene.layers.size(); ++i) {
+    const ReferenceLayer& L = scene.layers[i];
+    if (!weather::uses_domes(L.type)) continue;
+    // field position of the local origin: W (E 0 + centre_to_camera), W = field_from_local E^T
+    const glm::dvec3 camera = L.field_from_local * (glm::transpose(scene.shell.enu_to_ecef) * centre_to_camera_ecef_);
+    domes_[i] = std::make_unique<Domes>(L, *this, static_cast<int>(i), camera);
+  }
+}
+
+CloudField::~CloudField() = default;
+
+double CloudField::coverage_at_field_point(int li, const glm::dvec3& x) const {
+  const ReferenceLayer& L = scene_.layers[static_cast<std::size_t>(li)];
+  // ECEF direction: W^T x, W = field_from_local E^T
+  const glm::dvec3 q = scene_.shell.enu_to_ecef * (glm::transpose(L.field_from_local) * x);
+  const double lat = std::atan2(q.z, std::sqrt(q.x * q.x + q.y * q.y)), lon = std::atan2(q.y, q.x);
+  const glm::dvec4 w = sample_weather_map(inputs_.weather_map, inputs_.pole_south, inputs_.pole_north, lat, lon);
+  const double c = L.coverage;
+  return std::clamp(c + 1.2 * std::min(c, 1.0 - c) * (2.0 * w.r - 1.0), 0.0, 1.0);
+}
+
+double CloudField::dome_fraction(int li, const glm::dvec3& p, double alt, double coverage, double ceiling_m,
+                                 double shape) const {
+  const ReferenceLayer& L = scene_.layers[static_cast<std::size_t>(li)];
+  const Domes& D = *domes_[static_cast<std::size_t>(li)];
+  const double h = alt - L.base_m;
+  if (h >= ceiling_m + weather::kDomeCauliflower_m) return 0.0;
+  const glm::dvec3 x = D.camera_field + L.field_from_local * p;
+  const glm::dvec3 shell = weather::kDomeShellRadius_m * glm::normalize(x);
+  const double unit_top = D.sampler.top_m(D.rings, shell, coverage);
+  if (unit_top <= 0.0) return 0.0;
+  return weather::dome_fraction(unit_top, ceiling_m, h,
+                                shape - interpolate_quantile(inputs_.base_quantiles, 0.5));
+}
 
 glm::dvec4 CloudField::weather_at(const glm::dvec3& p) const {
   // Direction from the shell centre in ECEF axes: E (p + (0, 0, R + h)) = E p + (R + h) up_camera.
@@ -63,6 +122,22 @@ CloudSample CloudField::sample(int li, const glm::dvec3& p, double alt, bool det
   out.coverage = std::clamp(c + 1.2 * std::min(c, 1.0 - c) * (2.0 * w.r - 1.0), 0.0, 1.0);
   if (out.coverage <= 0.0) return out;
   const double depth_fraction = (honour_stratiform_ && L.stratiform) ? 1.0 : std::clamp(0.5 + w.g, 0.3, 1.0);
+  if (domes_[static_cast<std::size_t>(li)]) {
+    // the cumulus domes (weather::dome_fraction), then the detail and density as below
+    const glm::dvec3 stretched =
+        L.noise_vertical_scale == 1.0 ? p : p + (L.noise_vertical_scale - 1.0) * alt * scene_.shell.up_at(p);
+    const glm::dvec3 field = L.camera_field + L.field_from_local * stretched;
+    const double shape = sample_r8_trilinear_repeat(inputs_.base_noise, field / L.base_period_m);
+    double d = dome_fraction(li, p, alt, out.coverage, depth_fraction * (L.top_m - L.base_m), shape);
+    if (d <= 0.0) return out;
+    if (detail && d < 1.0) {
+      const double dn = sample_r8_trilinear_repeat(inputs_.detail_noise, field / L.detail_period_m);
+      const double floor_value = dn * L.erosion;
+      d = saturate((d - floor_value) / (1.0 - floor_value));
+    }
+    out.sigma_t = d * L.density_scale * std::exp2(2.0 * (w.b - 0.5)) * L.sigma_max_per_m;
+    return out;
+  }
   if (f > depth_fraction) return out;
   const double profile = height_profile(L, f / depth_fraction);
   if (profile <= 0.0) return out;

@@ -23,6 +23,8 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -44,7 +46,12 @@ class CloudField {
   // layers ignore the weather map's cloud-type channel G (f_v = 1), as
   // weather/cloud_layer.h and docs/WEATHER.md describe them; false applies f_v to every
   // layer, for comparisons (docs/REFERENCE.md, "GPU vs reference").
-  CloudField(const ReferenceScene& scene, const ReferenceInputs& inputs, bool honour_stratiform = true);
+  // cumulus_domes: cumulus layers as individual domes (weather/cumulus_domes.h), read through
+  // the rings the GPU would place for this camera (weather::DomeTopSampler), as the renderer
+  // does with RendererConfig::cumulus_domes.
+  CloudField(const ReferenceScene& scene, const ReferenceInputs& inputs, bool honour_stratiform = true,
+             bool cumulus_domes = false);
+  ~CloudField();
 
   // Extinction of layer li at local point p with altitude alt (above the shell sphere).
   // Increments evals when the point lies inside the layer's altitude range (the same
@@ -62,12 +69,17 @@ class CloudField {
   static double anvil_coverage(const ReferenceLayer& layer, double c, double w);
 
   const ReferenceScene& scene() const { return scene_; }
+  // The coverage of layer li at a point of its field frame (m): the map read at its direction.
+  double coverage_at_field_point(int li, const glm::dvec3& x) const;
 
  private:
+  struct Domes;
+  double dome_fraction(int li, const glm::dvec3& p, double alt, double coverage, double ceiling_m, double shape) const;
   const ReferenceScene& scene_;
   const ReferenceInputs& inputs_;
   bool honour_stratiform_;
   glm::dvec3 centre_to_camera_ecef_;  // shell centre -> camera, ECEF axes, m
+  std::vector<std::unique_ptr<Domes>> domes_;  // per layer; null where not drawn as domes
 };
 
 }  // namespace cloudsvc::reference

@@ -51,6 +51,8 @@ struct ReferenceSettings {
                                      // tests/reference_atmosphere_test.cpp); threads are set from `threads`
   // Model variant (see cloud_field.h); false = the shader's definition
   bool honour_stratiform = true;
+  // Cumulus layers as individual domes (RendererConfig::cumulus_domes; cloud_field.h)
+  bool cumulus_domes = false;
   // Rays per pixel along each axis (stratified: the centres of n x n sub-pixels), averaged:
   // 1 = the pixel centre (what the GPU's march samples without footprint jitter).
   int pixel_samples = 1;

@@ -1,6 +1,8 @@
 // View geometry, sun and per-layer parameters of the reference (see reference_scene.h).
 #include "renderer/reference/reference_scene.h"
 
+#include "weather/cumulus_domes.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -101,6 +103,8 @@ ReferenceScene make_reference_scene(const ViewRequest& view, const weather::Weat
     r.noise_vertical_scale = tr.noise_vertical_scale;
     r.stratiform = tr.stratiform;
     r.anvil = tr.anvil;
+    r.type = l.type;
+    r.dome_seed = weather::dome_placement_seed(weather, i);
     const glm::dmat3 rot = field_rotation(l.wind, a, view.unix_time_s);
     r.field_from_local = rot * s.shell.enu_to_ecef;
     r.camera_field = rot * s.shell.camera_ecef;

@@ -74,6 +74,8 @@ struct ReferenceLayer {
   double noise_vertical_scale = 1.0;  // k: the noise is sampled at X + (k - 1) a(X) n(X) (type trait)
   bool stratiform = false;
   weather::Anvil anvil;               // the type's anvil (spread 0: none)
+  weather::CloudType type = weather::CloudType::Cumulus;
+  std::uint32_t dome_seed = 0;        // weather::dome_placement_seed (cumulus domes)
   // The noise field coordinate (m, ECEF axes of the wind-rotated field) of a local point p
   // at altitude a with up vector n (shell frame) is
   //   camera_field + field_from_local * (p + (k - 1) a n),

@@ -105,7 +105,8 @@ int dome_warp_octaves(double texel_m);
 
 // The unit-aspect dome top (m) of placement cp over levels [first, end) at the shell point x
 // (before the warp; the warp's first `octaves` octaves are applied here), never below
-// -floor_m: what a renderer scales by the layer's aspect (CloudPlacement::dome_top).
+// -floor_m: the footprint height u a renderer turns into the cloud's top (dome_fraction;
+// CloudPlacement::dome_top).
 double dome_top_unit_aspect(const CloudPlacement& cp, const DomeWarp& warp, const glm::dvec3& x,
                             const CloudPlacement::CoverageAt& coverage, int first, int end, double floor_m,
                             int octaves = kDomeWarpOctaves);

@@ -65,8 +65,4 @@ void DomeField::bind() const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::ssbo::DOME_LAYERS, buffer_.id());
 }
 
-std::size_t DomeField::gpu_bytes() const {
-  return sizeof gpu_ + static_cast<std::size_t>(layout_.size) * layout_.size * layout_.rings * gpu::kMaxLayers * 8;
-}
-
 }  // namespace cloudsvc

@@ -34,8 +34,6 @@ class DomeField {
   // Binds the rings (gpu::tex::DOME_RINGS) and the per-layer data (gpu::ssbo::DOME_LAYERS).
   void bind() const;
 
-  std::size_t gpu_bytes() const;
-
  private:
   struct Layer {
     std::uint32_t seed = 0;

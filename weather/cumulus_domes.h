@@ -86,7 +86,7 @@ class DomeWarp {
  public:
   explicit DomeWarp(std::uint32_t seed);
   glm::dvec3 warped(const glm::dvec3& x, int octaves = kDomeWarpOctaves) const;
-  // |w| can never exceed this (m): the long-step bounds widen their boxes by it.
+  // |w| can never exceed this (m): sqrt(3) times the noise's bound times the summed amplitudes.
   static double max_displacement_m();
 
   struct Octave {

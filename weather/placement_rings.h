@@ -1,5 +1,5 @@
-// Nested grids ("rings") of the cloud placement envelope (weather/cloud_placement.h) around
-// a centre on the shell: what the GPU reads with one bilinear fetch instead of evaluating
+// Nested grids ("rings") of the cloud placement (weather/cloud_placement.h) around a centre
+// on the shell: what the GPU reads with one bilinear fetch instead of evaluating
 // the point process (27 cubes per level, a few hundred hashes) at every density sample.
 // As in the nested regular grids of geometry clipmaps (Losasso & Hoppe 2004), ring k has
 // texels 2^k times the finest and reaches 2^k times as far. Every ring covers a square of the
@@ -8,10 +8,10 @@
 // on which great circles are straight; within 400 km of C its scale departs from the
 // shell's by less than 0.5 %. Texel (i, j) of ring k is centred at
 //   (u, v) = ((i + 1/2 - N/2) h_k, (j + 1/2 - N/2) h_k),  h_k = h_0 2^k,  N texels a side.
-// A texel holds, at the shell point of its centre, the envelope of the levels the ring
-// draws as clouds (those whose smallest radius rho_min s_l spans at least resolve_texels
-// texels) and the fraction the smaller levels cover (CloudPlacement::covered_below), which
-// a renderer draws as sub-grid cloud.
+// A texel holds, at the shell point of its centre, a value of the levels the ring draws as
+// clouds (those whose smallest radius rho_min s_l spans at least resolve_texels texels; the
+// cumulus domes' top, weather::dome_ring_texel_at) and the fraction the smaller levels cover
+// (CloudPlacement::covered_below), which a renderer draws as sub-grid cloud.
 #pragma once
 
 #include <glm/vec2.hpp>

@@ -15,6 +15,9 @@ namespace {
 
 double saturate(double x) { return std::clamp(x, 0.0, 1.0); }
 
+// Step 1 of the header: the layer coverage c modulated by the map's coverage channel m.
+double modulated_coverage(double c, double m) { return std::clamp(c + 1.2 * std::min(c, 1.0 - c) * (2.0 * m - 1.0), 0.0, 1.0); }
+
 // GLSL smoothstep(e0, e1, x): t = clamp((x - e0) / (e1 - e0), 0, 1), t^2 (3 - 2 t).
 double smoothstep(double e0, double e1, double x) {
   const double t = saturate((x - e0) / (e1 - e0));
@@ -64,9 +67,7 @@ double CloudField::coverage_at_field_point(int li, const glm::dvec3& x) const {
   // ECEF direction: W^T x, W = field_from_local E^T
   const glm::dvec3 q = scene_.shell.enu_to_ecef * (glm::transpose(L.field_from_local) * x);
   const double lat = std::atan2(q.z, std::sqrt(q.x * q.x + q.y * q.y)), lon = std::atan2(q.y, q.x);
-  const glm::dvec4 w = sample_weather_map(inputs_.weather_map, inputs_.pole_south, inputs_.pole_north, lat, lon);
-  const double c = L.coverage;
-  return std::clamp(c + 1.2 * std::min(c, 1.0 - c) * (2.0 * w.r - 1.0), 0.0, 1.0);
+  return modulated_coverage(L.coverage, sample_weather_map(inputs_.weather_map, inputs_.pole_south, inputs_.pole_north, lat, lon).r);
 }
 
 double CloudField::dome_fraction(int li, const glm::dvec3& p, double alt, double coverage, double ceiling_m,
@@ -118,51 +119,47 @@ CloudSample CloudField::sample(int li, const glm::dvec3& p, double alt, bool det
   if (!(f > 0.0 && f < 1.0)) return out;
   ++evals;
   const glm::dvec4 w = weather_at(p);
-  const double c = L.coverage;
-  out.coverage = std::clamp(c + 1.2 * std::min(c, 1.0 - c) * (2.0 * w.r - 1.0), 0.0, 1.0);
+  out.coverage = modulated_coverage(L.coverage, w.r);
   if (out.coverage <= 0.0) return out;
   const double depth_fraction = (honour_stratiform_ && L.stratiform) ? 1.0 : std::clamp(0.5 + w.g, 0.3, 1.0);
-  if (domes_[static_cast<std::size_t>(li)]) {
-    // the cumulus domes (weather::dome_fraction), then the detail and density as below
+  // the noise-field point of p: m, wind-rotated ECEF axes, altitude scaled by k along the local up
+  const auto field_point = [&] {
     const glm::dvec3 stretched =
         L.noise_vertical_scale == 1.0 ? p : p + (L.noise_vertical_scale - 1.0) * alt * scene_.shell.up_at(p);
-    const glm::dvec3 field = L.camera_field + L.field_from_local * stretched;
-    const double shape = sample_r8_trilinear_repeat(inputs_.base_noise, field / L.base_period_m);
-    double d = dome_fraction(li, p, alt, out.coverage, depth_fraction * (L.top_m - L.base_m), shape);
-    if (d <= 0.0) return out;
+    return L.camera_field + L.field_from_local * stretched;
+  };
+  // steps 5 and 6 of the header for the cloud fraction d > 0
+  const auto extinction = [&](double d, double anvil_factor, const glm::dvec3& field) {
     if (detail && d < 1.0) {
       const double dn = sample_r8_trilinear_repeat(inputs_.detail_noise, field / L.detail_period_m);
       const double floor_value = dn * L.erosion;
       d = saturate((d - floor_value) / (1.0 - floor_value));
     }
-    out.sigma_t = d * L.density_scale * std::exp2(2.0 * (w.b - 0.5)) * L.sigma_max_per_m;
+    const double density_modulation = std::exp2(2.0 * (w.b - 0.5));
+    return d * anvil_factor * L.density_scale * density_modulation * L.sigma_max_per_m;
+  };
+  if (domes_[static_cast<std::size_t>(li)]) {  // the cumulus domes (weather::dome_fraction)
+    const glm::dvec3 field = field_point();
+    const double shape = sample_r8_trilinear_repeat(inputs_.base_noise, field / L.base_period_m);
+    const double d = dome_fraction(li, p, alt, out.coverage, depth_fraction * (L.top_m - L.base_m), shape);
+    if (d > 0.0) out.sigma_t = extinction(d, 1.0, field);
     return out;
   }
   if (f > depth_fraction) return out;
   const double profile = height_profile(L, f / depth_fraction);
   if (profile <= 0.0) return out;
-  // m, wind-rotated ECEF axes, altitude scaled by k along the local up
-  const glm::dvec3 stretched =
-      L.noise_vertical_scale == 1.0 ? p : p + (L.noise_vertical_scale - 1.0) * alt * scene_.shell.up_at(p);
-  const glm::dvec3 field = L.camera_field + L.field_from_local * stretched;
+  const glm::dvec3 field = field_point();
   const double shape = sample_r8_trilinear_repeat(inputs_.base_noise, field / L.base_period_m);
   const double threshold = interpolate_quantile(inputs_.base_quantiles, 1.0 - out.coverage);
   double d = saturate((shape * profile - threshold) / kCoverageEdge);
-  double anvil_factor = 1.0;  // step 5 of the header
+  double anvil_factor = 1.0;  // step 4 of the header
   if (const double w_anvil = anvil_weight(L, f); w_anvil > 0.0) {
     const double shield_threshold = interpolate_quantile(inputs_.base_quantiles, 1.0 - anvil_coverage(L, out.coverage, w_anvil));
     const double d_shield = saturate((shape * profile - shield_threshold) / kCoverageEdge);
     anvil_factor = 1.0 - w_anvil * (1.0 - static_cast<double>(L.anvil.density_ratio)) * (1.0 - d);
     d = std::max(d, d_shield);
   }
-  if (d <= 0.0) return out;
-  if (detail && d < 1.0) {
-    const double dn = sample_r8_trilinear_repeat(inputs_.detail_noise, field / L.detail_period_m);
-    const double floor_value = dn * L.erosion;
-    d = saturate((d - floor_value) / (1.0 - floor_value));
-  }
-  const double density_modulation = std::exp2(2.0 * (w.b - 0.5));
-  out.sigma_t = d * anvil_factor * L.density_scale * density_modulation * L.sigma_max_per_m;
+  if (d > 0.0) out.sigma_t = extinction(d, anvil_factor, field);
   return out;
 }
 

@@ -100,8 +100,9 @@ inline int run(int argc, char** argv) {
       if (!c.ok()) {
         ++failed;
         char buf[160];
-        std::snprintf(buf, sizeof buf, " | bad %lld, nonfinite %lld, gl %d, %s", static_cast<long long>(c.bad_values),
-                      static_cast<long long>(c.nonfinite_stat), c.gl_errors, c.exception.c_str());
+        std::snprintf(buf, sizeof buf, " | bad %lld, nonfinite %lld, loop-capped %lld, gl %d, %s",
+                      static_cast<long long>(c.bad_values), static_cast<long long>(c.nonfinite_stat),
+                      static_cast<long long>(c.loop_capped), c.gl_errors, c.exception.c_str());
         failures.push_back(stab::describe(pose) + buf);
       }
       if (frames % 500 == 0)

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include "renderer/coverage_cull.h"
@@ -160,6 +161,14 @@ FrameImage CloudRenderer::render(const ViewRequest& view, const RenderQuality& q
   img.stats = frame_stats(frame, view_luts, plan, shadow_rebuilt, counters);
   img.stats.render_ms = std::chrono::duration<double, std::milli>(end - start).count();
   img.stats.readback_ms = std::chrono::duration<double, std::milli>(end - readback_start).count();
+  if (img.stats.loop_capped_invocations > 0 && !warned_loop_cap_) {
+    std::fprintf(stderr,
+                 "cloudsvc: warning: the GL driver cut %lld shader invocations short (llvmpipe runs at most 65535 loop "
+                 "iterations per invocation): clouds are missing or wrongly lit; use fewer primary or light steps "
+                 "(FrameStats::loop_capped_invocations; warned once)\n",
+                 static_cast<long long>(img.stats.loop_capped_invocations));
+    warned_loop_cap_ = true;
+  }
   return img;
 }
 
@@ -185,6 +194,7 @@ FrameStats CloudRenderer::frame_stats(const FrameContext& frame, const Atmospher
   s.sun_azimuth_deg = frame.sun.azimuth_deg;
   s.cloud_pixels = counters.cloud_pixels;
   s.nonfinite_pixels = counters.nonfinite_pixels;
+  s.loop_capped_invocations = counters.loop_capped_invocations;
   s.density_evals_per_pixel =
       static_cast<double>(counters.density_evals) / (static_cast<double>(frame.view.width) * frame.view.height);
   return s;

@@ -72,6 +72,7 @@ class CloudRenderer {
   bool map_valid_ = false;
   weather::WeatherTimeline timeline_;
   std::optional<WindAnchor> wind_anchor_;  // latched at the first view after set_weather
+  bool warned_loop_cap_ = false;           // the loop-cap warning (render) is printed once
   std::uint64_t weather_generation_ = 0;   // bumped by every change of the cloud field's inputs
   unsigned culled_layers_ = 0;             // bit i: layer i had no cloud within reach last frame
 

@@ -15,6 +15,7 @@ struct FrameCounters {
   std::uint32_t density_evals = 0;     // cloud density evaluations (when counted)
   std::uint32_t nonfinite_pixels = 0;  // pixels the composite zeroed (NaN, Inf, negative)
   std::uint32_t cloud_pixels = 0;      // pixels with cloud opacity > kCloudPixelOpacity
+  std::uint32_t loop_capped_invocations = 0;  // invocations the driver's loop cap cut short (count_if_loops_capped)
 };
 
 class FrameBuffers {

@@ -302,4 +302,5 @@ void main() {
   if (frame.count_density_evaluations != 0) atomicAdd(counters.density_evals, g_density_evals);
   imageStore(fresh_radiance, cell, vec4(C, T));
   imageStore(fresh_depth, cell, vec4(depth, share_shift, float(layer), sample_weight));
+  count_if_loops_capped();
 }

@@ -222,4 +222,5 @@ void main() {
   if (opacity > CLOUD_PIXEL_OPACITY) atomicAdd(counters.cloud_pixels, 1u);
   if (frame.count_density_evaluations != 0 && g_density_evals > 0u) atomicAdd(counters.density_evals, g_density_evals);
   imageStore(out_image, px, vec4(radiance, opacity));
+  count_if_loops_capped();
 }

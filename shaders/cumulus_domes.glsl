@@ -45,14 +45,22 @@ vec2 dome_plane_coords(int slot, vec3 q) {
   return R * vec2(dot(q, dome_layers[slot].plane_e.xyz), dot(q, dome_layers[slot].plane_n.xyz)) / (R + dot(q, dome_layers[slot].plane_c.xyz));
 }
 
-// Sub-grid noise over the first `levels` levels at the shell point s (relative to A).
-float dome_subgrid_noise(int slot, vec3 s, int levels) {
-  float n = 0.0;
-  for (int i = 0; i < 2 * min(levels, DOME_LEVELS); ++i) {
-    vec3 r = vec3(dot(dome_layers[slot].oct_rot[3 * i].xyz, s), dot(dome_layers[slot].oct_rot[3 * i + 1].xyz, s), dot(dome_layers[slot].oct_rot[3 * i + 2].xyz, s));
-    n += dome_layers[slot].oct_rot[3 * i].w * perlin_noise_at(dome_layers[slot].oct_cell[i].xyz, dome_layers[slot].oct_frac[i].xyz + r * dome_layers[slot].oct_frac[i].w, uint(dome_layers[slot].oct_cell[i].w));
-  }
-  return n;
+// No loops on the way from a density evaluation to a dome top: llvmpipe caps the loop
+// iterations of an invocation (count_if_loops_capped, frame_counters.glsl), a loop costs
+// iterations even in a branch no lane takes (with the dome code compiled in but no dome
+// layer, 1024-step marches were cut short), and a density evaluation sits inside every
+// light-march step. The octaves and rings are written out instead.
+
+// Octave i of the sub-grid noise (weighted) at the shell point s (relative to A).
+float dome_subgrid_octave(int slot, int i, vec3 s) {
+  vec3 r = vec3(dot(dome_layers[slot].oct_rot[3 * i].xyz, s), dot(dome_layers[slot].oct_rot[3 * i + 1].xyz, s), dot(dome_layers[slot].oct_rot[3 * i + 2].xyz, s));
+  return dome_layers[slot].oct_rot[3 * i].w * perlin_noise_at(dome_layers[slot].oct_cell[i].xyz, dome_layers[slot].oct_frac[i].xyz + r * dome_layers[slot].oct_frac[i].w, uint(dome_layers[slot].oct_cell[i].w));
+}
+
+// The two octaves of level l of the sub-grid noise, 0 where l >= levels (a step of
+// dome_top's prefix sums).
+float dome_subgrid_level(int slot, int l, vec3 s, int levels) {
+  return l < levels ? dome_subgrid_octave(slot, 2 * l, s) + dome_subgrid_octave(slot, 2 * l + 1, s) : 0.0;
 }
 
 float dome_subgrid_quantile(int slot, float p, int levels) {
@@ -62,11 +70,11 @@ float dome_subgrid_quantile(int slot, float p, int levels) {
   return mix(dome_layers[slot].quantile[row + i], dome_layers[slot].quantile[row + i + 1], x - float(i));
 }
 
-// DomeSubgrid::top_m
-float dome_subgrid_top(int slot, vec3 s, int levels, float covered) {
+// DomeSubgrid::top_m over the first `levels` levels, from their noise sum n
+float dome_subgrid_top(int slot, float n, int levels, float covered) {
   float floor_m = dome_layers[slot].params.x;
   if (levels <= 0 || covered <= 0.0) return -floor_m;
-  float t = dome_layers[slot].params.y * (dome_subgrid_noise(slot, s, levels) - dome_subgrid_quantile(slot, 1.0 - covered, levels)) / dome_layers[slot].rms[levels];
+  float t = dome_layers[slot].params.y * (n - dome_subgrid_quantile(slot, 1.0 - covered, levels)) / dome_layers[slot].rms[levels];
   return max(t, -floor_m);
 }
 
@@ -89,25 +97,56 @@ float dome_ring_weight(int slot, int k, vec2 uv) {
   return clamp((inner - max(t.x, t.y)) / fade, 0.0, 1.0);
 }
 
+// Ring k's part of dome_top: where the ring exists and covers uv, its share (its weight of
+// what the finer rings left), its bilinear reading, and the sub-grid levels it needs.
+void dome_ring_share(int slot, int k, vec2 uv, out float share, out vec2 reading, inout float remaining, inout int needed) {
+  share = 0.0;
+  reading = vec2(0.0);
+  if (k >= dome_layers[slot].info.x || remaining <= 0.0) return;
+  float w = dome_ring_weight(slot, k, uv);
+  if (w <= 0.0) return;
+  reading = dome_ring_bilinear(slot, k, uv);
+  share = remaining * w;
+  remaining -= share;
+  needed = max(needed, int(dome_layers[slot].ring[k].w));
+}
+
+// Ring k's weighted top: the max of its reading and the sub-grid of the levels it does not draw.
+float dome_ring_top(int slot, int k, float share, vec2 reading, float prefix[DOME_LEVELS + 1]) {
+  if (share <= 0.0) return 0.0;
+  int levels = int(dome_layers[slot].ring[k].w);
+  return share * max(reading.x, dome_subgrid_top(slot, prefix[levels], levels, reading.y));
+}
+
 // The unit-aspect dome top (m) of dome layer `slot` above or below q (relative to the
 // anchor, field frame); coverage_here: the layer's coverage there (for the sub-grid beyond
-// the last ring).
+// the last ring). Each ring, finest first, takes its weight of what the finer ones left;
+// the sub-grid noise is summed once, over the most levels any of them needs.
 float dome_top(int slot, vec3 q, float coverage_here) {
-    vec2 uv = dome_plane_coords(slot, q);
+  vec2 uv = dome_plane_coords(slot, q);
   vec3 s = dome_shell_point(slot, q);
-  float result = 0.0, remaining = 1.0;
-  for (int k = 0; k < dome_layers[slot].info.x && remaining > 0.0; ++k) {
-    float w = dome_ring_weight(slot, k, uv);
-    if (w <= 0.0) continue;
-    vec2 t = dome_ring_bilinear(slot, k, uv);
-    float rep = max(t.x, dome_subgrid_top(slot, s, int(dome_layers[slot].ring[k].w), t.y));
-    result += remaining * w * rep;
-    remaining -= remaining * w;
-  }
-  if (remaining > 0.0) {
-    // over every level the covered fraction is the coverage itself (up to the placement's max)
-    result += remaining * dome_subgrid_top(slot, s, dome_layers[slot].info.w, min(coverage_here, dome_layers[slot].params.z));
-  }
+  vec4 weight = vec4(0.0);  // ring k's share: its blend weight times what the finer rings left
+  vec2 reading[DOME_RINGS] = vec2[DOME_RINGS](vec2(0.0), vec2(0.0), vec2(0.0), vec2(0.0));
+  float remaining = 1.0;
+  int needed = 0;  // sub-grid levels needed
+  dome_ring_share(slot, 0, uv, weight[0], reading[0], remaining, needed);
+  dome_ring_share(slot, 1, uv, weight[1], reading[1], remaining, needed);
+  dome_ring_share(slot, 2, uv, weight[2], reading[2], remaining, needed);
+  dome_ring_share(slot, 3, uv, weight[3], reading[3], remaining, needed);
+  int all_levels = dome_layers[slot].info.w;
+  if (remaining > 0.0) needed = all_levels;
+  // prefix sums of the sub-grid noise: prefix[l] over the first l levels (DOME_LEVELS = 4)
+  float prefix[DOME_LEVELS + 1];
+  prefix[0] = 0.0;
+  prefix[1] = prefix[0] + dome_subgrid_level(slot, 0, s, needed);
+  prefix[2] = prefix[1] + dome_subgrid_level(slot, 1, s, needed);
+  prefix[3] = prefix[2] + dome_subgrid_level(slot, 2, s, needed);
+  prefix[4] = prefix[3] + dome_subgrid_level(slot, 3, s, needed);
+  float result = dome_ring_top(slot, 0, weight[0], reading[0], prefix) + dome_ring_top(slot, 1, weight[1], reading[1], prefix) +
+                 dome_ring_top(slot, 2, weight[2], reading[2], prefix) + dome_ring_top(slot, 3, weight[3], reading[3], prefix);
+  // over every level the covered fraction is the coverage itself (up to the placement's max)
+  if (remaining > 0.0)
+    result += remaining * dome_subgrid_top(slot, prefix[all_levels], all_levels, min(coverage_here, dome_layers[slot].params.z));
   return result;
 }
 

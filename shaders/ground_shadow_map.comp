@@ -34,4 +34,5 @@ void main() {
   }
   if (frame.count_density_evaluations != 0) atomicAdd(counters.density_evals, g_density_evals);
   imageStore(shadow_map, id, vec4(tau));
+  count_if_loops_capped();
 }

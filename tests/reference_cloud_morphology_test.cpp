@@ -4,14 +4,19 @@
 // autocorrelation, and spectra of known slope.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <complex>
 #include <cstdint>
 #include <cstdio>
+#include <map>
 #include <numbers>
+#include <stdexcept>
 #include <vector>
 
 #include "geodesy/utc_time.h"
 #include "renderer/reference/cloud_morphology.h"
+#include "renderer/reference/fourier_transform.h"
 #include "renderer/reference/reference_inputs.h"
 #include "weather/cloud_layer.h"
 #include "weather/presets.h"
@@ -109,6 +114,61 @@ TEST(CloudMorphology, TiledFieldsShowAPeriodicPeakAndRandomOnesDoNot) {
   EXPECT_GT(p_tiled, 0.5);
   EXPECT_LT(p_scattered, 0.15);
   EXPECT_EQ(periodic_autocorrelation_peak(blank(32, 32), 2.0, 16.0), 0.0);  // constant: no structure
+}
+
+TEST(FourierTransform, FindsATonesFrequencyAndInvertsExactly) {
+  const std::size_t n = 64;
+  std::vector<std::complex<double>> a(n), original(n);
+  for (std::size_t j = 0; j < n; ++j) a[j] = original[j] = std::cos(2.0 * std::numbers::pi * 5.0 * j / n) + uniform(j) * 1e-3;
+  fourier_transform(a, false);
+  // a cosine of 5 cycles: N/2 at k = 5 and k = N - 5, the noise's share elsewhere
+  EXPECT_NEAR(std::abs(a[5]), n / 2.0, 0.05);
+  EXPECT_NEAR(std::abs(a[n - 5]), n / 2.0, 0.05);
+  EXPECT_LT(std::abs(a[7]), 0.05);
+  fourier_transform(a, true);
+  for (std::size_t j = 0; j < n; ++j) EXPECT_NEAR(std::abs(a[j] - original[j]), 0.0, 1e-12);
+  EXPECT_EQ(next_power_of_two(1), 1u);
+  EXPECT_EQ(next_power_of_two(570), 1024u);
+  std::vector<std::complex<double>> odd(12);
+  EXPECT_THROW(fourier_transform(odd, false), std::invalid_argument);
+}
+
+// The peak from transforms equals its definition summed lag by lag (a field of odd, unequal
+// sides, so padding and the overlap counts are exercised).
+TEST(CloudMorphology, AutocorrelationPeakMatchesItsDefinitionSummedDirectly) {
+  const int w = 37, h = 23;
+  Field f = blank(w, h);
+  for (std::size_t i = 0; i < f.v.size(); ++i) f.v[i] = uniform(1000 + i) + 0.5 * std::sin(0.9 * static_cast<double>(i % w));
+  const double r_min = 2.0, r_max = 11.5;
+  double mean = 0.0, var = 0.0;
+  for (double v : f.v) mean += v;
+  mean /= static_cast<double>(f.v.size());
+  for (double v : f.v) var += (v - mean) * (v - mean);
+  var /= static_cast<double>(f.v.size());
+  std::map<int, std::vector<double>> ring;
+  std::vector<std::pair<int, double>> lags;
+  for (int dy = 0; dy <= 11; ++dy)
+    for (int dx = -11; dx <= 11; ++dx) {
+      if (dy == 0 && dx <= 0) continue;
+      const double r = std::hypot(dx, dy);
+      if (r < r_min || r > r_max) continue;
+      double s = 0.0;
+      long n = 0;
+      for (int y = 0; y + dy < h; ++y)
+        for (int x = std::max(0, -dx); x < w && x + dx < w; ++x, ++n) s += (f.at(x, y) - mean) * (f.at(x + dx, y + dy) - mean);
+      const int ri = static_cast<int>(std::lround(r));
+      ring[ri].push_back(s / static_cast<double>(n) / var);
+      lags.emplace_back(ri, s / static_cast<double>(n) / var);
+    }
+  double expected = 0.0;
+  for (const auto& [ri, acf] : lags) {
+    std::vector<double> v = ring[ri];
+    std::sort(v.begin(), v.end());
+    const double median = v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+    expected = std::max(expected, acf - median);
+  }
+  EXPECT_GT(expected, 0.05);  // the sine's rows give the field a structure to find
+  EXPECT_NEAR(periodic_autocorrelation_peak(f, r_min, r_max), expected, 1e-12);
 }
 
 TEST(CloudMorphology, RowSpectrumSlopeIsRecovered) {

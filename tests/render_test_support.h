@@ -49,6 +49,7 @@ inline FrameImage render_weather(const weather::Weather& w, const ViewRequest& v
   CloudRenderer& r = shared_renderer();
   r.set_weather(w);
   FrameImage img = r.render(v, q);
+  EXPECT_EQ(img.stats.loop_capped_invocations, 0) << "the driver's loop cap cut rays short (FrameStats)";
   maybe_save(::testing::UnitTest::GetInstance()->current_test_info()->name() + std::string("_") + w.name, img);
   return img;
 }
@@ -62,6 +63,7 @@ inline FrameImage render_still_view(CloudRenderer& r, ViewRequest v, const Rende
     v.frame_index = static_cast<std::uint32_t>(f);
     v.reset_history = f == 0;
     img = r.render(v, q);
+    EXPECT_EQ(img.stats.loop_capped_invocations, 0) << "frame " << f << ": the driver's loop cap cut rays short";
   }
   return img;
 }

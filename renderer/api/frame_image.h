@@ -21,6 +21,11 @@ struct FrameStats {
   std::int64_t cloud_pixels = 0;      // pixels with cloud opacity > kCloudPixelOpacity
   double density_evals_per_pixel = 0.0;
   std::int64_t nonfinite_pixels = 0;  // pixels the shader had to clamp (must be 0)
+  // Shader invocations whose loops the GL driver cut short: Mesa's llvmpipe runs at most
+  // 65535 loop iterations per invocation in all and then silently ends every loop
+  // (shaders/frame_counters.glsl, count_if_loops_capped). Must be 0: where it is not, the
+  // image is wrong (clouds missing or unlit); fewer steps per ray (RenderQuality) fit.
+  std::int64_t loop_capped_invocations = 0;
   bool view_luts_recomputed = true;   // sky-view LUT or aerial-perspective volume redone this frame
   bool sky_view_recomputed = true;    // the sky-view LUT redone this frame (altitude or sun changed)
   int layers_without_cloud_in_view = 0;  // layers not marched: no cloud within reach (renderer/coverage_cull.h)

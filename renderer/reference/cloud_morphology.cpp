@@ -7,6 +7,8 @@
 #include <map>
 #include <numbers>
 
+#include "renderer/reference/fourier_transform.h"
+
 namespace cloudsvc::reference {
 
 namespace {
@@ -138,9 +140,18 @@ double periodic_autocorrelation_peak(const Field& f, double r_min, double r_max)
   for (double v : f.v) var += (v - mean) * (v - mean);
   var /= static_cast<double>(std::max<std::size_t>(f.v.size(), 1));
   if (!(var > 1e-20)) return 0.0;
-  std::vector<double> d(f.v.size());
-  for (std::size_t i = 0; i < d.size(); ++i) d[i] = f.v[i] - mean;
+  // Sums S(dx, dy) = sum of d(x, y) d(x + dx, y + dy) over the overlap, d = f - mean, for
+  // every lag at once: the inverse transform of |D|^2 (Wiener-Khinchin) on a grid padded
+  // with zeros to at least (w + R) x (h + R), so that no lag up to R wraps onto another.
   const int R = static_cast<int>(std::floor(r_max));
+  const std::size_t nx = next_power_of_two(static_cast<std::size_t>(w + std::min(R, w))),
+                    ny = next_power_of_two(static_cast<std::size_t>(h + std::min(R, h)));
+  std::vector<std::complex<double>> grid(nx * ny, 0.0);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) grid[static_cast<std::size_t>(y) * nx + x] = f.at(x, y) - mean;
+  fourier_transform_2d(grid, nx, ny, false);
+  for (auto& c : grid) c = std::norm(c);
+  fourier_transform_2d(grid, nx, ny, true);
   // lags (dx, dy) with dy >= 0 (acf(-l) = acf(l)); dy = 0 only for dx > 0
   std::map<int, std::vector<double>> ring;  // integer radius -> acf values
   std::vector<std::pair<int, double>> lag_acf;
@@ -149,15 +160,9 @@ double periodic_autocorrelation_peak(const Field& f, double r_min, double r_max)
       if (dy == 0 && dx <= 0) continue;
       const double r = std::hypot(static_cast<double>(dx), static_cast<double>(dy));
       if (r < r_min || r > r_max) continue;
-      double s = 0.0;
-      long n = 0;
-      for (int y = 0; y + dy < h; ++y) {
-        const double* row = &d[static_cast<std::size_t>(y) * w];
-        const double* row2 = &d[static_cast<std::size_t>(y + dy) * w];
-        for (int x = std::max(0, -dx); x < w && x + dx < w; ++x) s += row[x] * row2[x + dx];
-        n += std::max(0, w - std::abs(dx));
-      }
-      if (n == 0) continue;
+      const long n = static_cast<long>(w - std::abs(dx)) * (h - dy);  // pixels of the overlap
+      const std::size_t ix = static_cast<std::size_t>(dx < 0 ? static_cast<long>(nx) + dx : dx);
+      const double s = grid[static_cast<std::size_t>(dy) * nx + ix].real();
       const double acf = s / static_cast<double>(n) / var;
       const int ri = static_cast<int>(std::lround(r));
       ring[ri].push_back(acf);

@@ -24,8 +24,9 @@ struct RendererConfig {
   int weather_map_width = 1024;  // global map, 0.35 deg per texel
   int weather_map_height = 512;
   // Cumulus layers as individual domes over the cloud placement (weather/cumulus_domes.h,
-  // renderer/dome_field.h) instead of the thresholded noise field. Off by default while the
-  // default preset's accuracy on them is brought to its floors (docs/MORPHOLOGY.md).
+  // renderer/dome_field.h) instead of the thresholded noise field. Off by default until
+  // their shader path is cheap enough on llvmpipe and the default preset's accuracy on them
+  // is at its floors (docs/MORPHOLOGY.md, "Domes in the renderer and the reference").
   bool cumulus_domes = false;
 };
 

@@ -150,7 +150,7 @@ FrameImage CloudRenderer::render(const ViewRequest& view, const RenderQuality& q
   timer_.end();
   const TemporalPlan plan = march_and_resolve(frame, quality, rays.meets_a_layer, inputs);  // 4., 5.
   timer_.begin(kCompositePass);  // 6.
-  composite_.run(inputs, shadow_map_, cloud_buffer_);
+  composite_.run(inputs, shadow_map_, cloud_buffer_, !quality.ground_shadow_map);
   timer_.end();
 
   FrameImage img;

@@ -6,7 +6,9 @@
 namespace cloudsvc {
 
 CompositePass::CompositePass(const std::vector<std::string>& density_defines)
-    : program_(gl::ShaderProgram::compute("composite.comp", density_defines)) {}
+    : program_(gl::ShaderProgram::compute("composite.comp")), per_pixel_defines_(density_defines) {
+  per_pixel_defines_.push_back("CLOUDSVC_GROUND_SHADOWS_PER_PIXEL");
+}
 
 void CompositePass::ensure_size(int w, int h) {
   if (target_ && w == w_ && h == h_) return;
@@ -15,8 +17,11 @@ void CompositePass::ensure_size(int w, int h) {
   h_ = h;
 }
 
-void CompositePass::run(const CloudPassInputs& inputs, const GroundShadowMap& shadows, const CloudBuffer& buffer) const {
-  program_.use();
+void CompositePass::run(const CloudPassInputs& inputs, const GroundShadowMap& shadows, const CloudBuffer& buffer,
+                        bool shadows_per_pixel) {
+  if (shadows_per_pixel && !per_pixel_program_)
+    per_pixel_program_.emplace(gl::ShaderProgram::compute("composite.comp", per_pixel_defines_));
+  (shadows_per_pixel ? *per_pixel_program_ : program_).use();
   inputs.bind();
   buffer.bind_uniforms();
   shadows.bind_lookups();

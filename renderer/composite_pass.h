@@ -6,6 +6,10 @@
 // ground shadow map and the resolved cloud radiance. Needs a current GL 4.5 context.
 #pragma once
 
+#include <optional>
+#include <string>
+#include <vector>
+
 #include "renderer/api/frame_image.h"
 #include "renderer/cloud_buffer.h"
 #include "renderer/cloud_pass_inputs.h"
@@ -17,17 +21,23 @@ namespace cloudsvc {
 
 class CompositePass {
  public:
-  // density_defines: the cloud density's variant (cloud_density_defines, cloud_field_textures.h)
+  // density_defines: the cloud density's variant (cloud_density_defines, cloud_field_textures.h),
+  // for the program that marches ground shadows per pixel (compiled when first used).
   explicit CompositePass(const std::vector<std::string>& density_defines = {});
   // Sizes the frame target (w x h pixels).
   void ensure_size(int w, int h);
-  void run(const CloudPassInputs& inputs, const GroundShadowMap& shadows, const CloudBuffer& buffer) const;
+  // shadows_per_pixel: the ground's cloud shadows marched at every pixel (qualities without
+  // the ground shadow map) instead of read from the map.
+  void run(const CloudPassInputs& inputs, const GroundShadowMap& shadows, const CloudBuffer& buffer,
+           bool shadows_per_pixel);
   // The frame target into img (rgba float, rows from the top; sets width and height).
   void read_back(FrameImage& img) const;
   std::size_t gpu_bytes() const { return static_cast<std::size_t>(w_) * h_ * 16; }
 
  private:
-  gl::ShaderProgram program_;
+  gl::ShaderProgram program_;                           // shadows from the map: no density code
+  std::vector<std::string> per_pixel_defines_;
+  std::optional<gl::ShaderProgram> per_pixel_program_;  // CLOUDSVC_GROUND_SHADOWS_PER_PIXEL
   gl::Texture target_;
   int w_ = 0, h_ = 0;
 };

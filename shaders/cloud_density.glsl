@@ -163,33 +163,26 @@ bool cloud_may_be_on_segment(int li, vec3 a, vec3 b, vec4 w) {
 }
 
 #ifdef CLOUDSVC_CUMULUS_DOMES
-// sigma_t (1/m) of dome layer li (weather/cumulus_domes.h) at local point p with altitude alt,
-// local coverage c and ceiling (m above the base): the dome fraction under the layer's top
-// with cauliflower tops from the base-shape noise, then the detail erosion and density as
-// for every layer. The placement's field point is unstretched: q = camera_q + W E p.
-float dome_extinction(int li, CloudLayerGpu L, vec3 p, float alt, int detail, vec4 w, float c, float ceiling) {
-  float h = alt - L.base_m;
+// Cloud fraction of dome layer li (weather/cumulus_domes.h) at local point p, h m above its
+// base, with local coverage c, ceiling (m above the base) and the base-shape noise value
+// `shape` there: the dome fraction under the layer's top with cauliflower tops from the
+// shape noise. The placement's field point is unstretched: q = camera_q + W E p.
+float dome_cloud_fraction(int li, CloudLayerGpu L, vec3 p, float h, float c, float ceiling, float shape) {
   if (h >= ceiling + dome_layers[li].shape.y) return 0.0;
   vec3 q = dome_layers[li].camera_q.xyz + mat3(L.noise_rotation) * p;
   float unit_top = dome_top(li, q, c);
   if (unit_top <= 0.0) return 0.0;
-  vec3 p_field = field_point(L, p, alt);
-  float shape = textureLod(base_noise, p_field * L.base_noise_frequency + L.base_noise_offset, 0.0).r;
-  float d = dome_fraction(li, unit_top, ceiling, h, shape - noise_quantile(0.5));
-  if (d <= 0.0) return 0.0;
-  if (detail != DETAIL_NONE && d < 1.0) {
-    float dn = detail == DETAIL_SAMPLED ? textureLod(detail_noise, p_field * L.detail_noise_frequency + L.detail_noise_offset, 0.0).r
-                                        : frame.detail_noise_mean;
-    d = saturate(remap(d, dn * L.detail_erosion, 1.0, 0.0, 1.0));
-  }
-  return d * L.density_scale * exp2(2.0 * (w.b - 0.5)) * L.extinction_max;
+  return dome_fraction(li, unit_top, ceiling, h, shape - noise_quantile(0.5));
 }
 #endif
 
 // sigma_t (1/m) of layer li at local point p with altitude alt, where the weather map
 // reads w (weather_at; the light march passes its sample's value: the map's texels are
 // ~40 km, a light march spans at most LIGHT_MARCH_REACH_M, 4 km); also returns the local
-// coverage (0 outside the layer).
+// coverage (0 outside the layer). The cloud fraction d comes from the layer's model (a dome
+// layer's domes, or the noise threshold below); both read the base-shape noise once, and
+// the detail erosion and density follow for either. (On llvmpipe both models run for
+// every layer, docs/PERFORMANCE.md: the reads they share are made once.)
 float cloud_extinction_in(int li, vec3 p, float alt, int detail, vec4 w, out float coverage) {
   coverage = 0.0;
   CloudLayerGpu L = frame.layers[li];
@@ -200,25 +193,34 @@ float cloud_extinction_in(int li, vec3 p, float alt, int detail, vec4 w, out flo
   coverage = local_coverage(L, w);
   if (coverage <= 0.0) return 0.0;
   float df = depth_fraction(L, w);
-#ifdef CLOUDSVC_CUMULUS_DOMES
-  if (L.dome != 0) return dome_extinction(li, L, p, alt, detail, w, coverage, df * thickness);
-#endif
   float profile = height_profile(L, f / df) * step(f, df);
-  if (profile <= 0.0) return 0.0;
+  bool dome = false;
+#ifdef CLOUDSVC_CUMULUS_DOMES
+  dome = L.dome != 0;
+#endif
+  if (profile <= 0.0 && !dome) return 0.0;
   vec3 p_field = field_point(L, p, alt);
   float shape = textureLod(base_noise, p_field * L.base_noise_frequency + L.base_noise_offset, 0.0).r;
-  // Coverage threshold: the shape exceeds Q(1 - c) over a fraction c of the area (at
-  // mid-profile), with a soft edge; full cover (c = 1) keeps nearly all of the shape.
-  float d = saturate((shape * profile - noise_quantile(1.0 - coverage)) / COVERAGE_EDGE);
-  // In an anvil's band the cloud fills the wider coverage c_w too, the part outside the
-  // tower thinner: the extinction factor falls from 1 to density_ratio where the tower's
-  // own d is 0, by the anvil's weight w (1 again where w = 0: continuous at the band's edges).
+  float d;
   float anvil_factor = 1.0;
-  float w_anvil = anvil_weight(L, f);
-  if (w_anvil > 0.0) {
-    float d_shield = saturate((shape * profile - noise_quantile(1.0 - anvil_coverage(L, coverage, w_anvil))) / COVERAGE_EDGE);
-    anvil_factor = 1.0 - w_anvil * (1.0 - L.anvil.w) * (1.0 - d);
-    d = max(d, d_shield);
+#ifdef CLOUDSVC_CUMULUS_DOMES
+  if (dome) {
+    d = dome_cloud_fraction(li, L, p, alt - L.base_m, coverage, df * thickness, shape);
+  } else
+#endif
+  {
+    // Coverage threshold: the shape exceeds Q(1 - c) over a fraction c of the area (at
+    // mid-profile), with a soft edge; full cover (c = 1) keeps nearly all of the shape.
+    d = saturate((shape * profile - noise_quantile(1.0 - coverage)) / COVERAGE_EDGE);
+    // In an anvil's band the cloud fills the wider coverage c_w too, the part outside the
+    // tower thinner: the extinction factor falls from 1 to density_ratio where the tower's
+    // own d is 0, by the anvil's weight w (1 again where w = 0: continuous at the band's edges).
+    float w_anvil = anvil_weight(L, f);
+    if (w_anvil > 0.0) {
+      float d_shield = saturate((shape * profile - noise_quantile(1.0 - anvil_coverage(L, coverage, w_anvil))) / COVERAGE_EDGE);
+      anvil_factor = 1.0 - w_anvil * (1.0 - L.anvil.w) * (1.0 - d);
+      d = max(d, d_shield);
+    }
   }
   if (d <= 0.0) return 0.0;
   if (detail != DETAIL_NONE && d < 1.0) {

@@ -4,6 +4,10 @@
 // + sun disk) or the ground (lit by sun and sky, shadowed by the clouds' optical depth from
 // the ground shadow map, seen through the aerial perspective). Output: linear spectral radiance at 680/550/440 nm
 // (W m^-2 sr^-1 nm^-1) in rgb, cloud opacity (1 - cloud transmittance) in a.
+// Compiled with CLOUDSVC_GROUND_SHADOWS_PER_PIXEL (CompositePass, for qualities without the
+// ground shadow map), the shadows are marched through the cloud density at every ground
+// pixel instead; without it the program holds no density code, which llvmpipe would run
+// for every pixel whether a pixel marches or not (docs/PERFORMANCE.md).
 #include "common.glsl"
 #include "frame_counters.glsl"
 #include "frame_uniforms.glsl"
@@ -14,9 +18,13 @@
 #include "horizon_split.glsl"
 #include "ground_shadow_map.glsl"
 #include "phase_function.glsl"
+// (before the #ifdef: the #include expansion inserts each file once, where first named)
+#include "slab_transmittance.glsl"
+#ifdef CLOUDSVC_GROUND_SHADOWS_PER_PIXEL
 #include "weather_map_sampling.glsl"
 #include "cloud_density.glsl"
 #include "cloud_lighting.glsl"
+#endif
 #include "aerial_perspective_lookup.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -117,12 +125,15 @@ vec3 ground_radiance(vec3 dir, float t_ground) {
   float mu_s = dot(up, sun);
   vec3 T_atm = transmittance_to_space(ground_alt, mu_s);
   float tau = 0.0;  // cloud optical depth above the ground point, towards the sun
+#ifdef CLOUDSVC_GROUND_SHADOWS_PER_PIXEL
+  if (shadow.march_per_pixel != 0 && mu_s > 0.0)
+    for (int li = 0; li < frame.layer_count; ++li)
+      tau += layer_shadow_optical_depth(li, p, ground_alt, sun, mu_s, frame.ground_shadow_steps);
+#else
   if (shadow.map_valid != 0 && mu_s > 0.0)
     for (int li = 0; li < frame.layer_count; ++li)
       tau += textureLod(ground_shadow, vec3(shadow_map_uv((shadow.to_anchor[li] * vec4(p, 1.0)).xyz), float(li)), 0.0).r;
-  else if (shadow.march_per_pixel != 0 && mu_s > 0.0)
-    for (int li = 0; li < frame.layer_count; ++li)
-      tau += layer_shadow_optical_depth(li, p, ground_alt, sun, mu_s, frame.ground_shadow_steps);
+#endif
   // sun through the clouds: the delta-Eddington beam transmittance of their vertical
   // optical depth (direct + forward-scattered + diffuse); sky light: the diffuse one
   float tau_v = tau * max(mu_s, 0.0);
@@ -220,7 +231,9 @@ void main() {
     opacity = 0.0;
   }
   if (opacity > CLOUD_PIXEL_OPACITY) atomicAdd(counters.cloud_pixels, 1u);
+#ifdef CLOUDSVC_GROUND_SHADOWS_PER_PIXEL
   if (frame.count_density_evaluations != 0 && g_density_evals > 0u) atomicAdd(counters.density_evals, g_density_evals);
+#endif
   imageStore(out_image, px, vec4(radiance, opacity));
   count_if_loops_capped();
 }

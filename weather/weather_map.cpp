@@ -135,11 +135,19 @@ void WeatherMap::pole_value(bool north, float out[4]) const {
   for (int k = 0; k < 4; ++k) out[k] = width > 0 ? static_cast<float>(mean[k] / width) : (k < 3 ? 0.5f : 0.0f);
 }
 
-float local_coverage(float layer_coverage, float m) {
-  if (!std::isfinite(layer_coverage)) return 0.0f;
-  const float c = std::clamp(layer_coverage, 0.0f, 1.0f);
-  if (!std::isfinite(m)) m = 0.5f;
-  return std::clamp(c + 1.2f * std::min(c, 1.0f - c) * (m - 0.5f) * 2.0f, 0.0f, 1.0f);
+namespace {
+
+template <typename T>
+T modulated_layer_coverage(T layer_coverage, T m) {
+  if (!std::isfinite(layer_coverage)) return T(0);
+  const T c = std::clamp(layer_coverage, T(0), T(1));
+  if (!std::isfinite(m)) m = T(0.5);
+  return std::clamp(c + T(1.2) * std::min(c, T(1) - c) * (T(2) * m - T(1)), T(0), T(1));
 }
+
+}  // namespace
+
+float local_coverage(float layer_coverage, float m) { return modulated_layer_coverage(layer_coverage, m); }
+double local_coverage(double layer_coverage, double m) { return modulated_layer_coverage(layer_coverage, m); }
 
 }  // namespace cloudsvc::weather

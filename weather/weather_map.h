@@ -45,7 +45,10 @@ WeatherMap generate_procedural_map(std::uint32_t seed, int width = 1024, int hei
 
 // Combines a layer coverage c with the map's coverage modulation m (both [0, 1]):
 // local = clamp(c + 1.2 * min(c, 1 - c) * (m - 0.5) * 2, 0, 1): overcast (c = 1) and clear
-// (c = 0) layers stay as they are, partial layers vary with the map.
+// (c = 0) layers stay as they are, partial layers vary with the map. Float for the GPU
+// renderer's culling, double for the CPU reference and the path tracer (the shaders'
+// modulated_coverage is the same formula). A non-finite coverage gives 0, a non-finite m 0.5.
 float local_coverage(float layer_coverage, float m);
+double local_coverage(double layer_coverage, double m);
 
 }  // namespace cloudsvc::weather

@@ -3,6 +3,7 @@
 
 #include "weather/cumulus_domes.h"
 #include "weather/dome_rings.h"
+#include "weather/weather_map.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,9 +15,6 @@ namespace cloudsvc::reference {
 namespace {
 
 double saturate(double x) { return std::clamp(x, 0.0, 1.0); }
-
-// Step 1 of the header: the layer coverage c modulated by the map's coverage channel m.
-double modulated_coverage(double c, double m) { return std::clamp(c + 1.2 * std::min(c, 1.0 - c) * (2.0 * m - 1.0), 0.0, 1.0); }
 
 // GLSL smoothstep(e0, e1, x): t = clamp((x - e0) / (e1 - e0), 0, 1), t^2 (3 - 2 t).
 double smoothstep(double e0, double e1, double x) {
@@ -67,7 +65,7 @@ double CloudField::coverage_at_field_point(int li, const glm::dvec3& x) const {
   // ECEF direction: W^T x, W = field_from_local E^T
   const glm::dvec3 q = scene_.shell.enu_to_ecef * (glm::transpose(L.field_from_local) * x);
   const double lat = std::atan2(q.z, std::sqrt(q.x * q.x + q.y * q.y)), lon = std::atan2(q.y, q.x);
-  return modulated_coverage(L.coverage, sample_weather_map(inputs_.weather_map, inputs_.pole_south, inputs_.pole_north, lat, lon).r);
+  return weather::local_coverage(L.coverage, sample_weather_map(inputs_.weather_map, inputs_.pole_south, inputs_.pole_north, lat, lon).r);
 }
 
 double CloudField::dome_fraction(int li, const glm::dvec3& p, double alt, double coverage, double ceiling_m,
@@ -119,7 +117,7 @@ CloudSample CloudField::sample(int li, const glm::dvec3& p, double alt, bool det
   if (!(f > 0.0 && f < 1.0)) return out;
   ++evals;
   const glm::dvec4 w = weather_at(p);
-  out.coverage = modulated_coverage(L.coverage, w.r);
+  out.coverage = weather::local_coverage(L.coverage, w.r);
   if (out.coverage <= 0.0) return out;
   const double depth_fraction = (honour_stratiform_ && L.stratiform) ? 1.0 : std::clamp(0.5 + w.g, 0.3, 1.0);
   // the noise-field point of p: m, wind-rotated ECEF axes, altitude scaled by k along the local up

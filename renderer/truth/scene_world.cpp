@@ -8,6 +8,7 @@
 #include "renderer/model/scene_constants.h"
 #include "renderer/reference/atmosphere_monte_carlo.h"  // the air's majorant band edges
 #include "renderer/reference/reference_atmosphere.h"
+#include "weather/weather_map.h"
 
 namespace cloudsvc::truth {
 
@@ -68,8 +69,7 @@ void SceneMedium::at(const glm::dvec3& x, double altitude_m, MediumPoint& out) c
 double cloud_extinction_bound(const reference::ReferenceLayer& L, const FieldMaxima& maxima, bool honour_stratiform,
                               double a0, double a1) {
   if (a1 <= L.base_m || a0 >= L.top_m) return 0.0;
-  const double c = L.coverage;
-  const double c_max = std::clamp(c + 1.2 * std::min(c, 1.0 - c) * (2.0 * maxima.map_coverage - 1.0), 0.0, 1.0);
+  const double c_max = weather::local_coverage(L.coverage, maxima.map_coverage);
   if (c_max <= 0.0) return 0.0;
   const double f0 = (a0 - L.base_m) / (L.top_m - L.base_m), f1 = (a1 - L.base_m) / (L.top_m - L.base_m);
   // x = f / f_v with the depth fraction f_v in [0.3, 1] (1 for a stratiform layer honoured as such)
@@ -165,8 +165,7 @@ double SceneLocalMajorant::cloud_bound(int band, const glm::dvec3& a, const glm:
     if (prof[li] <= 0.0) continue;
     const reference::ReferenceLayer& L = scene_.layers[li];
     if (map_max.x < 0.0) map_max = map_maxima(a, b);
-    const double c = L.coverage;
-    const double c_max = std::clamp(c + 1.2 * std::min(c, 1.0 - c) * (2.0 * map_max.x - 1.0), 0.0, 1.0);
+    const double c_max = weather::local_coverage(L.coverage, map_max.x);
     if (c_max <= 0.0) continue;
     // Noise-space box of the stretch (m), then texture units.
     glm::dvec3 f[2];

@@ -10,11 +10,6 @@
 
 namespace cloudsvc {
 
-std::vector<std::string> cloud_density_defines(const RendererConfig& config) {
-  if (config.cumulus_domes) return {"CLOUDSVC_CUMULUS_DOMES"};
-  return {};
-}
-
 namespace {
 
 gl::Texture upload_noise(const weather::NoiseVolume& v) {

@@ -30,11 +30,6 @@ struct RendererConfig {
   bool cumulus_domes = false;
 };
 
-// The preprocessor defines of the programs that evaluate the cloud density
-// (shaders/cloud_density.glsl): CLOUDSVC_CUMULUS_DOMES where config draws domes, so a
-// renderer without them compiles none of their code.
-std::vector<std::string> cloud_density_defines(const RendererConfig& config);
-
 class CloudFieldTextures {
  public:
   explicit CloudFieldTextures(const RendererConfig& config);

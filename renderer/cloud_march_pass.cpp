@@ -5,11 +5,8 @@
 
 namespace cloudsvc {
 
-CloudMarchPass::CloudMarchPass(const std::vector<std::string>& density_defines)
-    : program_(gl::ShaderProgram::compute("cloud_march.comp", density_defines)) {}
-
 void CloudMarchPass::run(const CloudPassInputs& inputs, const GroundShadowMap& shadows, const CloudBuffer& buffer, const TemporalPlan& plan) const {
-  program_.use();
+  inputs.use(programs_);
   inputs.bind();
   shadows.bind_lookups();
   buffer.bind_uniforms();

@@ -7,19 +7,17 @@
 
 #include "renderer/cloud_buffer.h"
 #include "renderer/cloud_pass_inputs.h"
-#include "renderer/gl/shader_program.h"
+#include "renderer/density_programs.h"
 #include "renderer/ground_shadow_map.h"
 
 namespace cloudsvc {
 
 class CloudMarchPass {
  public:
-  // density_defines: the cloud density's variant (cloud_density_defines, cloud_field_textures.h)
-  explicit CloudMarchPass(const std::vector<std::string>& density_defines = {});
   void run(const CloudPassInputs& inputs, const GroundShadowMap& shadows, const CloudBuffer& buffer, const TemporalPlan& plan) const;
 
  private:
-  gl::ShaderProgram program_;
+  DensityPrograms programs_{"cloud_march.comp"};
 };
 
 }  // namespace cloudsvc

@@ -6,6 +6,7 @@
 
 #include "renderer/atmosphere_luts.h"
 #include "renderer/cloud_field_textures.h"
+#include "renderer/density_programs.h"
 #include "renderer/dome_field.h"
 #include "renderer/frame_buffers.h"
 
@@ -15,7 +16,15 @@ struct CloudPassInputs {
   const FrameBuffers& frame;
   const CloudFieldTextures& field;
   const AtmosphereLuts& atmosphere;
-  const DomeField* domes = nullptr;  // the cumulus dome fields, where the renderer draws them
+  // The cumulus dome fields, where this frame draws dome layers; the passes then run their
+  // programs' dome variant (renderer/density_programs.h).
+  const DomeField* domes = nullptr;
+  // The quality's marches leave llvmpipe's loop budget for the dome sub-grid's loop
+  // (density_loops_fit, renderer/density_programs.h).
+  bool density_loops = false;
+
+  // Binds the density program variant for this frame (before bind()).
+  void use(const DensityPrograms& programs) const { programs.use(domes != nullptr, density_loops); }
 
   void bind() const {
     frame.bind();

@@ -19,10 +19,7 @@ enum TimedPass { kLutsPass = 0, kMarchPass = 1, kResolvePass = 2, kCompositePass
 
 CloudRenderer::CloudRenderer(const RendererConfig& config)
     : config_(config),
-      field_(config),
-      shadow_map_(cloud_density_defines(config)),
-      march_(cloud_density_defines(config)),
-      composite_(cloud_density_defines(config)) {
+      field_(config) {
   if (config.cumulus_domes) domes_ = std::make_unique<DomeField>();
   set_weather(weather::Weather{});
 }
@@ -122,19 +119,26 @@ FrameImage CloudRenderer::render(const ViewRequest& view, const RenderQuality& q
 
   // 1. The frame's state, once, in double; every step below reads it, the uniforms last.
   FrameContext frame = make_frame_context(view, weather_, *wind_anchor_);
-  if (domes_)
-    for (int i = 0; i < frame.layer_count; ++i)
-      frame.layers[static_cast<std::size_t>(i)].domes = weather::uses_domes(frame.layers[static_cast<std::size_t>(i)].layer.type);
   cull_layers_without_cloud_in_view(frame, blend);
+  // Dome layers with cloud in reach: the frame's programs carry the dome path only then
+  // (renderer/density_programs.h).
+  bool draws_domes = false;
+  if (domes_)
+    for (int i = 0; i < frame.layer_count; ++i) {
+      LayerFrame& lf = frame.layers[static_cast<std::size_t>(i)];
+      lf.domes = weather::uses_domes(lf.layer.type) && !lf.culled;
+      draws_domes = draws_domes || lf.domes;
+    }
   const AtmosphereLuts::ViewLutUpdate view_luts = atmosphere_.plan_view_dependent(frame);  // sets frame.ap
   const FrameRays rays = classify_frame_rays(frame);
   const FrameUniforms uniforms = pack_frame_uniforms(frame, quality, field_.summary());
   frame_buffers_.start_frame(uniforms);
-  if (domes_) {
+  if (draws_domes) {
     field_.bind();  // the ring fill reads the weather map
     domes_->update(frame, weather_, weather_generation_, uniforms);
   }
-  const CloudPassInputs inputs{frame_buffers_, field_, atmosphere_, domes_.get()};
+  const CloudPassInputs inputs{frame_buffers_, field_, atmosphere_, draws_domes ? domes_.get() : nullptr,
+                               density_loops_fit(quality)};
 
   timer_.reset();
   timer_.begin(kLutsPass);  // 2.
@@ -181,6 +185,7 @@ FrameStats CloudRenderer::frame_stats(const FrameContext& frame, const Atmospher
   s.history_used = plan.history;
   s.shadow_map_rebuilt = shadow_rebuilt;
   s.layers_without_cloud_in_view = static_cast<int>(__builtin_popcount(frame.culled_mask()));
+  for (int i = 0; i < frame.layer_count; ++i) s.dome_layers += frame.layers[static_cast<std::size_t>(i)].domes ? 1 : 0;
   s.marched_fraction = plan.stride == 0 ? 0.0 : plan.marched_fraction();
   s.gpu_memory_bytes = static_cast<std::int64_t>(field_.gpu_bytes() + AtmosphereLuts::gpu_bytes() +
                                                  GroundShadowMap::gpu_bytes() + composite_.gpu_bytes() +

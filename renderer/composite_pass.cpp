@@ -5,10 +5,7 @@
 
 namespace cloudsvc {
 
-CompositePass::CompositePass(const std::vector<std::string>& density_defines)
-    : program_(gl::ShaderProgram::compute("composite.comp")), per_pixel_defines_(density_defines) {
-  per_pixel_defines_.push_back("CLOUDSVC_GROUND_SHADOWS_PER_PIXEL");
-}
+CompositePass::CompositePass() : program_(gl::ShaderProgram::compute("composite.comp")) {}
 
 void CompositePass::ensure_size(int w, int h) {
   if (target_ && w == w_ && h == h_) return;
@@ -19,9 +16,10 @@ void CompositePass::ensure_size(int w, int h) {
 
 void CompositePass::run(const CloudPassInputs& inputs, const GroundShadowMap& shadows, const CloudBuffer& buffer,
                         bool shadows_per_pixel) {
-  if (shadows_per_pixel && !per_pixel_program_)
-    per_pixel_program_.emplace(gl::ShaderProgram::compute("composite.comp", per_pixel_defines_));
-  (shadows_per_pixel ? *per_pixel_program_ : program_).use();
+  if (shadows_per_pixel)
+    inputs.use(per_pixel_programs_);  // marches the density: its variant for the frame
+  else
+    program_.use();
   inputs.bind();
   buffer.bind_uniforms();
   shadows.bind_lookups();

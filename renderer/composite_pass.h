@@ -6,7 +6,6 @@
 // ground shadow map and the resolved cloud radiance. Needs a current GL 4.5 context.
 #pragma once
 
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,6 +13,7 @@
 #include "renderer/cloud_buffer.h"
 #include "renderer/cloud_pass_inputs.h"
 #include "renderer/gl/gl_objects.h"
+#include "renderer/density_programs.h"
 #include "renderer/gl/shader_program.h"
 #include "renderer/ground_shadow_map.h"
 
@@ -21,9 +21,7 @@ namespace cloudsvc {
 
 class CompositePass {
  public:
-  // density_defines: the cloud density's variant (cloud_density_defines, cloud_field_textures.h),
-  // for the program that marches ground shadows per pixel (compiled when first used).
-  explicit CompositePass(const std::vector<std::string>& density_defines = {});
+  CompositePass();
   // Sizes the frame target (w x h pixels).
   void ensure_size(int w, int h);
   // shadows_per_pixel: the ground's cloud shadows marched at every pixel (qualities without
@@ -36,8 +34,7 @@ class CompositePass {
 
  private:
   gl::ShaderProgram program_;                           // shadows from the map: no density code
-  std::vector<std::string> per_pixel_defines_;
-  std::optional<gl::ShaderProgram> per_pixel_program_;  // CLOUDSVC_GROUND_SHADOWS_PER_PIXEL
+  DensityPrograms per_pixel_programs_{"composite.comp", {"CLOUDSVC_GROUND_SHADOWS_PER_PIXEL"}};
   gl::Texture target_;
   int w_ = 0, h_ = 0;
 };

@@ -40,10 +40,8 @@ std::string shadow_map_stale_reason(const ShadowMapKey& key, const FrameContext&
   return "";
 }
 
-GroundShadowMap::GroundShadowMap(const std::vector<std::string>& density_defines)
-    : build_prog_(gl::ShaderProgram::compute("ground_shadow_map.comp", density_defines)),
-      volume_prog_(gl::ShaderProgram::compute("light_volume.comp", density_defines)),
-      map_(gl::make_texture_2d_array(GL_R32F, kSize, kSize, gpu::kMaxLayers)),
+GroundShadowMap::GroundShadowMap()
+    : map_(gl::make_texture_2d_array(GL_R32F, kSize, kSize, gpu::kMaxLayers)),
       volume_(gl::make_texture_3d(GL_R32F, kVolumeSize, kVolumeSize, kVolumeLevels * gpu::kMaxLayers, GL_CLAMP_TO_EDGE)),
       uniforms_(gl::make_buffer(sizeof(ShadowMapUniforms), nullptr, GL_DYNAMIC_DRAW)) {}
 
@@ -52,11 +50,11 @@ void GroundShadowMap::build(const FrameContext& frame, const CloudPassInputs& in
   glNamedBufferSubData(uniforms_.id(), 0, sizeof(ShadowMapUniforms), &su);
   inputs.bind();
   glBindBufferBase(GL_UNIFORM_BUFFER, gpu::ubo::SHADOW_MAP, uniforms_.id());
-  build_prog_.use();
+  inputs.use(build_prog_);
   glBindImageTexture(gpu::img::SHADOW_MAP_OUT, map_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
   gl::dispatch_2d(kSize, kSize, frame.layer_count);
   if (light_volume) {
-    volume_prog_.use();
+    inputs.use(volume_prog_);
     glBindImageTexture(gpu::img::LIGHT_VOLUME_OUT, volume_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
     gl::dispatch_2d(kVolumeSize, kVolumeSize, frame.layer_count * kVolumeLevels);
   }

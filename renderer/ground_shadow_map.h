@@ -27,6 +27,7 @@
 
 #include "renderer/frame_uniforms.h"
 #include "renderer/gl/gl_objects.h"
+#include "renderer/density_programs.h"
 #include "renderer/gl/shader_program.h"
 #include "renderer/cloud_pass_inputs.h"
 #include "renderer/frame_context.h"
@@ -64,8 +65,7 @@ class GroundShadowMap {
  public:
   static constexpr int kSize = 512;  // texels per side
 
-  // density_defines: the cloud density's variant (cloud_density_defines, cloud_field_textures.h)
-  explicit GroundShadowMap(const std::vector<std::string>& density_defines = {});
+  GroundShadowMap();
 
   // Rebuilds the map if stale (from `inputs`, which hold the frame uniforms packed from
   // `frame`), then uploads the lookup uniforms for this view. Returns true if it rebuilt.
@@ -93,8 +93,8 @@ class GroundShadowMap {
   // Builds the map (and the light volume) with the lookup uniforms su of the build frame.
   void build(const FrameContext& frame, const CloudPassInputs& inputs, const ShadowMapUniforms& su, bool light_volume);
 
-  gl::ShaderProgram build_prog_;
-  gl::ShaderProgram volume_prog_;
+  DensityPrograms build_prog_{"ground_shadow_map.comp"};
+  DensityPrograms volume_prog_{"light_volume.comp"};
   gl::Texture map_;
   gl::Texture volume_;
   gl::Buffer uniforms_;

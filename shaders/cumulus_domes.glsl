@@ -45,11 +45,15 @@ vec2 dome_plane_coords(int slot, vec3 q) {
   return R * vec2(dot(q, dome_layers[slot].plane_e.xyz), dot(q, dome_layers[slot].plane_n.xyz)) / (R + dot(q, dome_layers[slot].plane_c.xyz));
 }
 
-// No loops on the way from a density evaluation to a dome top: llvmpipe caps the loop
+// Loops on the way from a density evaluation to a dome top: llvmpipe caps the loop
 // iterations of an invocation (count_if_loops_capped, frame_counters.glsl), a loop costs
-// iterations even in a branch no lane takes (with the dome code compiled in but no dome
-// layer, 1024-step marches were cut short), and a density evaluation sits inside every
-// light-march step. The octaves and rings are written out instead.
+// iterations even in a branch no lane takes, and a density evaluation sits inside every
+// light-march step; but a loop is also llvmpipe's only way to skip code (it runs both
+// sides of every branch, docs/PERFORMANCE.md): it ends once no lane of the SIMD batch
+// needs another iteration. The sub-grid levels are therefore summed in a loop over the
+// levels the point needs where the quality's marches leave the budget for it
+// (CLOUDSVC_DENSITY_LOOPS, renderer/density_programs.h), and written out otherwise; the
+// rings are always written out.
 
 // Octave i of the sub-grid noise (weighted) at the shell point s (relative to A).
 float dome_subgrid_octave(int slot, int i, vec3 s) {
@@ -136,12 +140,15 @@ float dome_top(int slot, vec3 q, float coverage_here) {
   int all_levels = dome_layers[slot].info.w;
   if (remaining > 0.0) needed = all_levels;
   // prefix sums of the sub-grid noise: prefix[l] over the first l levels (DOME_LEVELS = 4)
-  float prefix[DOME_LEVELS + 1];
-  prefix[0] = 0.0;
+  float prefix[DOME_LEVELS + 1] = float[DOME_LEVELS + 1](0.0, 0.0, 0.0, 0.0, 0.0);
+#ifdef CLOUDSVC_DENSITY_LOOPS
+  for (int l = 0; l < needed; ++l) prefix[l + 1] = prefix[l] + dome_subgrid_level(slot, l, s, needed);
+#else
   prefix[1] = prefix[0] + dome_subgrid_level(slot, 0, s, needed);
   prefix[2] = prefix[1] + dome_subgrid_level(slot, 1, s, needed);
   prefix[3] = prefix[2] + dome_subgrid_level(slot, 2, s, needed);
   prefix[4] = prefix[3] + dome_subgrid_level(slot, 3, s, needed);
+#endif
   float result = dome_ring_top(slot, 0, weight[0], reading[0], prefix) + dome_ring_top(slot, 1, weight[1], reading[1], prefix) +
                  dome_ring_top(slot, 2, weight[2], reading[2], prefix) + dome_ring_top(slot, 3, weight[3], reading[3], prefix);
   // over every level the covered fraction is the coverage itself (up to the placement's max)

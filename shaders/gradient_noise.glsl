@@ -4,13 +4,16 @@
 // frame's coordinates are millions of metres) float keeps the offset exact where the
 // absolute coordinate would lose it. Needs common.glsl (hash32).
 
-// The 12 cube-edge gradients, indexed by hash % 12.
+// The 12 cube-edge gradients, indexed by k = hash % 12: k / 4 picks the pair of axes
+// ((x, y), (x, z), (y, z)), bit 0 negates the first, bit 1 the second:
+// k = 0: x + y, 1: -x + y, 2: x - y, 3: -x - y, 4..7 the same with (x, z), 8..11 with (y, z).
+// Written with selects, not a switch: llvmpipe runs every case of a switch for every lane
+// (docs/PERFORMANCE.md), and the sums are the same float operations either way.
 float gradient_dot(uint h, vec3 d) {
-  switch (h % 12u) {
-    case 0u: return d.x + d.y;   case 1u: return -d.x + d.y;  case 2u: return d.x - d.y;   case 3u: return -d.x - d.y;
-    case 4u: return d.x + d.z;   case 5u: return -d.x + d.z;  case 6u: return d.x - d.z;   case 7u: return -d.x - d.z;
-    case 8u: return d.y + d.z;   case 9u: return -d.y + d.z;  case 10u: return d.y - d.z;  default: return -d.y - d.z;
-  }
+  uint k = h % 12u;
+  float a = k < 8u ? d.x : d.y;
+  float b = k < 4u ? d.y : d.z;
+  return ((k & 1u) != 0u ? -a : a) + ((k & 2u) != 0u ? -b : b);
 }
 
 vec3 perlin_fade(vec3 t) { return t * t * t * (t * (t * 6.0 - 15.0) + 10.0); }

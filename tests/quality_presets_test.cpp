@@ -3,6 +3,7 @@
 // baseline, and the front presets grow in cost.
 #include <gtest/gtest.h>
 
+#include "renderer/density_programs.h"
 #include "renderer/quality_presets.h"
 
 namespace cloudsvc {
@@ -62,6 +63,21 @@ TEST(QualityPresets, FrontPresetsGrowInCostAndUnknownNamesAreRejected) {
   EXPECT_FALSE(quality_preset("Ultra"));
   EXPECT_FALSE(quality_preset(""));
   EXPECT_EQ(quality_preset_names().back(), "default");
+}
+
+// Every preset's marches leave llvmpipe's loop budget for the dome sub-grid's loop (the
+// faster variant); a march of tens of thousands of light samples per ray, like the accuracy
+// tests' fine march, gets the written-out variant instead of running into the cap.
+TEST(QualityPresets, EveryPresetFitsTheDensityLoopsAndTheFineMarchDoesNot) {
+  for (const std::string& name : quality_preset_names()) {
+    const auto q = quality_preset(name);
+    if (!q) continue;  // CPU-only names
+    EXPECT_TRUE(density_loops_fit(*q)) << name;
+  }
+  RenderQuality fine;
+  fine.primary_steps = 1024;
+  fine.light_steps = 32;
+  EXPECT_FALSE(density_loops_fit(fine));
 }
 
 }  // namespace

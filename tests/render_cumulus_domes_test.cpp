@@ -52,5 +52,31 @@ TEST(CumulusDomesRendered, GpuAndReferenceSeeTheSameClouds) {
   }
 }
 
+// Only frames with a dome layer in reach carry the dome path (renderer/density_programs.h;
+// on llvmpipe it would cost every density evaluation): a stratus deck, or cumulus the
+// weather map clears around the camera, runs the programs without it, and draws the same
+// image as a renderer without domes.
+TEST(CumulusDomesRendered, FramesWithoutDomeLayersInReachRunNoDomeCode) {
+  ViewRequest v = make_view(47.4, 8.5, 3000.0, 30.0, 5.0, "2026-06-21T10:00:00Z", 48, 27);
+  CloudRenderer& r = dome_renderer();
+  r.set_weather(*weather::preset("scattered-cumulus"));
+  EXPECT_EQ(render_still_view(r, v, *quality_preset("default")).stats.dome_layers, 1);
+  const weather::Weather stratus = *weather::preset("overcast-stratus");
+  r.set_weather(stratus);
+  const FrameImage with = render_still_view(r, v, *quality_preset("default"));
+  EXPECT_EQ(with.stats.dome_layers, 0);
+  weather::Weather cleared = *weather::preset("scattered-cumulus");
+  cleared.layers[0].coverage = 0.0;
+  r.set_weather(cleared);
+  EXPECT_EQ(render_still_view(r, v, *quality_preset("default")).stats.dome_layers, 0);
+  CloudRenderer plain;
+  plain.set_weather(stratus);
+  const FrameImage without = render_still_view(plain, v, *quality_preset("default"));
+  ASSERT_EQ(with.rgba.size(), without.rgba.size());
+  double worst = 0.0;
+  for (std::size_t i = 0; i < with.rgba.size(); ++i) worst = std::max(worst, std::abs(double(with.rgba[i]) - without.rgba[i]));
+  EXPECT_EQ(worst, 0.0) << "a stratus frame differs with domes enabled";
+}
+
 }  // namespace
 }  // namespace cloudsvc::test

@@ -29,6 +29,9 @@ struct FrameStats {
   bool view_luts_recomputed = true;   // sky-view LUT or aerial-perspective volume redone this frame
   bool sky_view_recomputed = true;    // the sky-view LUT redone this frame (altitude or sun changed)
   int layers_without_cloud_in_view = 0;  // layers not marched: no cloud within reach (renderer/coverage_cull.h)
+  // Layers drawn as individual cumulus domes (RendererConfig::cumulus_domes; those with
+  // cloud within reach). 0: the frame ran the programs without the dome path.
+  int dome_layers = 0;
   bool history_used = false;          // the previous frame's cloud buffer was reprojected
   bool shadow_map_rebuilt = false;    // the ground shadow map was rebuilt this frame
   double marched_fraction = 1.0;      // cloud pixels marched this frame / all cloud pixels

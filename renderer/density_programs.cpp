@@ -1,0 +1,31 @@
+#include "renderer/density_programs.h"
+
+#include <utility>
+
+#include "weather/cumulus_domes.h"
+
+namespace cloudsvc {
+
+bool density_loops_fit(const RenderQuality& q) {
+  constexpr double kLoopIterationBudget = 65535.0;  // llvmpipe, per invocation (gallivm)
+  constexpr double kMarchOverhead = 4.0;
+  const double evals = static_cast<double>(q.primary_steps) * (1.0 + q.light_steps);
+  return kMarchOverhead * evals * (1.0 + weather::kDomeLevels) <= kLoopIterationBudget;
+}
+
+DensityPrograms::DensityPrograms(std::string file, std::vector<std::string> defines)
+    : file_(std::move(file)), defines_(std::move(defines)) {}
+
+void DensityPrograms::use(bool domes, bool loops) const {
+  const int v = domes ? (loops ? 2 : 1) : 0;
+  std::optional<gl::ShaderProgram>& p = variant_[v];
+  if (!p) {
+    std::vector<std::string> d = defines_;
+    if (domes) d.push_back("CLOUDSVC_CUMULUS_DOMES");
+    if (v == 2) d.push_back("CLOUDSVC_DENSITY_LOOPS");
+    p.emplace(gl::ShaderProgram::compute(file_, d));
+  }
+  p->use();
+}
+
+}  // namespace cloudsvc

@@ -84,6 +84,7 @@ struct RenderArgs {
   std::string lat, lon, alt, heading, pitch, roll, time, fov, size, weather, out, frames, exposure;
   std::string quality, render_frames, spp, seed;  // --quality, --frames, --spp, --seed
   bool window = false;
+  bool cumulus_domes = false;
 };
 
 // Raw text of each `demo` flag.
@@ -174,6 +175,10 @@ void add_quality_flags(CLI::App& cmd, RenderArgs& args, const RenderOptions& def
                      std::to_string(kMaxFrames) + "]) and write the last frame; the stats line's "
                      "frame_ms is the median of frames 2..N; default " + std::to_string(defaults.frames))
       ->type_name("N");
+  cmd.add_flag("--cumulus-domes", args.cumulus_domes,
+               "Draw cumulus layers as individual clouds (domes over a placement with a power-law spread of "
+               "sizes, docs/MORPHOLOGY.md) instead of the thresholded noise field; GPU presets and --quality "
+               "reference, not truth; slower on llvmpipe (docs/MORPHOLOGY.md); default off");
 }
 
 void add_render_command(CLI::App& app, RenderArgs& args) {
@@ -269,6 +274,10 @@ void apply_quality(const RenderArgs& a, RenderOptions& opt) {
     if (opt.quality == kTruthQuality) fail("--frames", a.render_frames, "not valid with --quality truth (use --spp)");
   }
   const bool truth = opt.quality == kTruthQuality;
+  if (a.cumulus_domes) {
+    if (truth) fail("--quality", opt.quality, "not valid with --cumulus-domes (the path tracer draws the noise field)");
+    opt.cumulus_domes = true;
+  }
   if (given(cmd, "--spp")) {
     opt.spp = parse_integer("--spp", a.spp, 2, kMaxSpp, "paths per pixel");
     if (!truth) fail("--spp", a.spp, "only valid with --quality truth");

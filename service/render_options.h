@@ -35,6 +35,9 @@ struct RenderOptions {
   std::uint64_t seed = 1;                        // --seed N: random seed of --quality truth
   int frames = 1;                                // --frames N >= 1: render the view N times
                                                  // (frame_index 0..N-1), write the last frame
+  bool cumulus_domes = false;                    // --cumulus-domes: cumulus layers as individual
+                                                 // domes (RendererConfig::cumulus_domes; GPU
+                                                 // presets and reference, not truth)
 };
 
 struct DemoOptions {

@@ -66,7 +66,9 @@ int run_window(const RenderOptions& opt) {
   glfwSetWindowUserPointer(window.window(), &state);
   glfwSetKeyCallback(window.window(), key_callback);
 
-  CloudRenderer renderer;
+  RendererConfig config;
+  config.cumulus_domes = opt.cumulus_domes;
+  CloudRenderer renderer(config);
   renderer.set_weather(opt.weather);
   int frames = 0;
   std::printf("window: arrows turn/pitch, W/S move, PgUp/PgDn altitude, T/G time +-10 min, shift x10, Esc quits\n");

@@ -82,6 +82,7 @@ TEST_F(CliBinary, BadInputGivesOneLineExitTwoAndNoFile) {
       {{"--quality", "truth", "--spp", "1"}, "--spp"},         // needs two for a standard error
       {{"--quality", "truth", "--frames", "2"}, "--frames"},
       {{"--quality", "truth", "--seed", "-3"}, "--seed"},
+      {{"--quality", "truth", "--cumulus-domes"}, "--cumulus-domes"},  // the path tracer has no domes
   };
   for (const Case& c : cases) {
     std::vector<std::string> args = {"render", "--size", "32x18", "--out", out};
@@ -126,6 +127,23 @@ TEST_F(CliBinary, RenderWritesExrAndPngAndPrintsStats) {
   int files = 0;
   for (const auto& e : fs::directory_iterator(dir_)) files += e.path().extension() == ".exr" || e.path().extension() == ".png";
   EXPECT_EQ(files, 2);
+}
+
+// `cloudsvc render --cumulus-domes`: cumulus layers drawn as individual domes; the stats
+// line says how many layers the GPU drew as domes.
+TEST_F(CliBinary, CumulusDomesAreDrawnWhenAskedFor) {
+  const std::string out = (dir_ / "domes.exr").string();
+  const std::vector<std::string> base = {"render", "--lat", "47.45", "--lon", "8.56", "--alt", "2500", "--pitch", "5",
+                                         "--size", "48x27", "--weather", "scattered-cumulus", "--out", out};
+  std::vector<std::string> args = base;
+  args.push_back("--cumulus-domes");
+  const RunResult r = run_cloudsvc(args, dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("dome_layers=1"), std::string::npos) << r.out;
+  EXPECT_TRUE(fs::exists(out));
+  const RunResult plain = run_cloudsvc(base, dir_);
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  EXPECT_EQ(plain.out.find("dome_layers"), std::string::npos) << plain.out;
 }
 
 // `cloudsvc render --quality truth`: the path-traced ground truth writes an EXR with the

@@ -106,6 +106,9 @@ TEST_F(CliOptionsTest, RenderDefaults) {
   EXPECT_FALSE(o.window);
   EXPECT_EQ(o.window_frames, 0);
   EXPECT_DOUBLE_EQ(o.exposure_ev, 0.0);
+  EXPECT_FALSE(o.cumulus_domes);
+  EXPECT_TRUE(render_with({"--cumulus-domes"}).cumulus_domes);
+  EXPECT_TRUE(render_with({"--cumulus-domes", "--quality", "reference"}).cumulus_domes);
   EXPECT_FALSE(fs::exists("view.png")) << "validation must not create the output file";
 }
 
@@ -134,7 +137,7 @@ TEST_F(CliOptionsTest, RenderHelpDocumentsEveryFlagWithUnits) {
   EXPECT_TRUE(r.err.empty());
   for (const char* text :
        {"--lat", "--lon", "--alt", "--heading", "--pitch", "--roll", "--time", "--fov", "--size",
-        "--weather", "--out", "--window", "--window-frames", "--exposure", "[-90, 90] (degrees)",
+        "--weather", "--out", "--window", "--window-frames", "--exposure", "--cumulus-domes", "[-90, 90] (degrees)",
         "[-180, 180] (degrees)", "[-500, 100000] (metres above the WGS84 ellipsoid)",
         "[-360, 360] (degrees)", "(0, 170] (degrees)", "[1, 8192]", "pixels", "[-20, 20] (EV)",
         "UTC", "ISO 8601", ".json", ".exr", ".png", "default 47.45", "broken-cumulus"}) {

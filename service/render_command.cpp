@@ -65,6 +65,7 @@ int run_render(const RenderOptions& opt) {
   ViewRequest view = view_from(opt);
   std::vector<double> frame_ms;
   FrameImage img;
+  std::string domes;  // the stats line's " dome_layers=N" (GPU with --cumulus-domes: FrameStats::dome_layers)
   if (opt.quality == "truth") {  // CPU path tracer, double precision: no GL context needed
     truth::TruthSettings settings;
     settings.spp = opt.spp;
@@ -85,30 +86,26 @@ int run_render(const RenderOptions& opt) {
       std::fprintf(stderr, "cloudsvc render: warning: --quality reference at %dx%d is slow (minutes above 320x180)\n",
                    opt.width, opt.height);
     }
+    reference::ReferenceSettings settings;
+    settings.cumulus_domes = opt.cumulus_domes;
     for (int f = 0; f < opt.frames; ++f) {
       view.frame_index = static_cast<std::uint32_t>(f);
-      reference::ReferenceSettings settings;
-      settings.cumulus_domes = opt.cumulus_domes;
       img = reference::render_reference(view, opt.weather, settings);
       frame_ms.push_back(img.stats.render_ms);
     }
   } else {
     const RenderQuality quality = *quality_preset(opt.quality);  // validated by the parser
     gl::EglContext context;
-    RendererConfig config;
-    config.cumulus_domes = opt.cumulus_domes;
-    CloudRenderer renderer(config);
+    CloudRenderer renderer(renderer_config(opt));
     renderer.set_weather(opt.weather);
     for (int f = 0; f < opt.frames; ++f) {
       view.frame_index = static_cast<std::uint32_t>(f);
       img = renderer.render(view, quality);
       frame_ms.push_back(img.stats.render_ms);
     }
+    if (opt.cumulus_domes) domes = " dome_layers=" + std::to_string(img.stats.dome_layers);
   }
   write_image(opt.out_path, img, opt.exposure_ev);
-  // the GPU's count of layers drawn as domes (FrameStats::dome_layers)
-  const bool gpu = opt.quality != "reference";
-  const std::string domes = opt.cumulus_domes && gpu ? " dome_layers=" + std::to_string(img.stats.dome_layers) : "";
   print_stats(opt.out_path, img, timing_suffix(frame_ms, img) + domes);
   return img.stats.nonfinite_pixels == 0 ? 0 : 1;
 }

@@ -53,6 +53,12 @@ void key_callback(GLFWwindow* w, int key, int, int action, int mods) {
 
 }  // namespace
 
+RendererConfig renderer_config(const RenderOptions& opt) {
+  RendererConfig config;
+  config.cumulus_domes = opt.cumulus_domes;
+  return config;
+}
+
 int run_window(const RenderOptions& opt) {
   WindowPresenter window(opt.width, opt.height, "cloudsvc");
   int rc = 0;
@@ -66,9 +72,7 @@ int run_window(const RenderOptions& opt) {
   glfwSetWindowUserPointer(window.window(), &state);
   glfwSetKeyCallback(window.window(), key_callback);
 
-  RendererConfig config;
-  config.cumulus_domes = opt.cumulus_domes;
-  CloudRenderer renderer(config);
+  CloudRenderer renderer(renderer_config(opt));
   renderer.set_weather(opt.weather);
   int frames = 0;
   std::printf("window: arrows turn/pitch, W/S move, PgUp/PgDn altitude, T/G time +-10 min, shift x10, Esc quits\n");

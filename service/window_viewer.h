@@ -2,10 +2,14 @@
 // (see docs/CLI.md). Needs an X display (or xvfb-run).
 #pragma once
 
+#include "renderer/cloud_field_textures.h"
 #include "service/render_options.h"
 
 namespace cloudsvc {
 
 int run_window(const RenderOptions& opt);
+
+// The GPU renderer's configuration for `cloudsvc render` (its window and file output).
+RendererConfig renderer_config(const RenderOptions& opt);
 
 }  // namespace cloudsvc

@@ -52,6 +52,12 @@ struct FrameAddress {
 
 }  // namespace
 
+RendererConfig renderer_config(const ServeOptions& o) {
+  RendererConfig c;
+  c.cumulus_domes = o.cumulus_domes;
+  return c;
+}
+
 protocol::SetView initial_view(const ServeOptions& o) {
   protocol::SetView v;
   v.width = static_cast<std::uint32_t>(o.width);
@@ -120,7 +126,8 @@ RenderLoop::Run::Run(RenderLoop& loop)
     : loop_(loop), options_(loop.options_),
       window_(options_.window ? std::make_unique<WindowPresenter>(options_.width, options_.height, "cloudsvc serve")
                               : nullptr),
-      egl_(window_ ? nullptr : std::make_unique<gl::EglContext>()), view_(initial_view(options_)) {
+      egl_(window_ ? nullptr : std::make_unique<gl::EglContext>()), renderer_(renderer_config(options_)),
+      view_(initial_view(options_)) {
   renderer_.set_weather(options_.weather);
   clock_.set(options_.unix_time_s);
   fps_window_start_ = SteadyClock::now();

@@ -145,6 +145,7 @@ struct ServeCommandLine::Args {
   std::string shm, shm_max_size, out_dir, weather, time, size, fov, max_clients, exit_after_frames;
   std::string socket_mode, shm_mode, idle_timeout, max_view_size, tile_budget, ready_file;
   bool window = false;
+  bool cumulus_domes = false;
 };
 
 namespace {
@@ -221,6 +222,10 @@ void add_scene_flags(CLI::App& cmd, ServeCommandLine::Args& args, const ServeOpt
   cmd.add_option("--weather", args.weather,
                  weather_help(defaults.weather_arg, "Weather at start"))
       ->type_name("PRESET|FILE.json");
+  cmd.add_flag("--cumulus-domes", args.cumulus_domes,
+               "Draw cumulus layers as individual clouds (domes over a placement with a power-law spread of "
+               "sizes, docs/MORPHOLOGY.md) instead of the thresholded noise field; slower on llvmpipe; "
+               "default off");
   cmd.add_option("--time", args.time,
                  "Date and time in UTC, ISO 8601 (YYYY-MM-DDTHH:MM[:SS[.fff]]Z or +hh:mm "
                  "offset), years 1900..2199, used until a client sends a time; sets the sun "
@@ -309,6 +314,7 @@ void apply_sinks(const ServeCommandLine::Args& a, ServeOptions& opt) {
              size_text(opt.max_view_width, opt.max_view_height));
   }
   opt.window = a.window;
+  opt.cumulus_domes = a.cumulus_domes;
   if (given(cmd, "--out-dir")) {
     check_output_directory("--out-dir", a.out_dir);
     opt.out_dir = a.out_dir;

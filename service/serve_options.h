@@ -29,6 +29,7 @@ struct ServeOptions {
   bool window = false;                // --window: show frames in a GLFW window
   std::string out_dir;                // --out-dir DIR: write every frame there (PNG); empty = no file sink
   std::string weather_arg = "broken-cumulus";  // --weather PRESET|FILE.json: weather at start
+  bool cumulus_domes = false;                  // --cumulus-domes: cumulus layers as individual domes
   weather::Weather weather;                    // resolved
   std::string time_text;              // --time UTC ISO 8601 used until a client sends time; default: now
   double unix_time_s = 0.0;           // resolved (now when --time is absent)

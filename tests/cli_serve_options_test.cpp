@@ -131,6 +131,8 @@ TEST_F(CliServeOptionsTest, Defaults) {
   EXPECT_EQ(o.shm_max_width, 1920);
   EXPECT_EQ(o.shm_max_height, 1080);
   EXPECT_FALSE(o.window);
+  EXPECT_FALSE(o.cumulus_domes);
+  EXPECT_TRUE(serve_with({"--cumulus-domes"}).cumulus_domes);
   EXPECT_TRUE(o.out_dir.empty());
   EXPECT_EQ(o.weather_arg, "broken-cumulus");
   const auto preset = weather::preset("broken-cumulus");
@@ -159,7 +161,7 @@ TEST_F(CliServeOptionsTest, HelpDocumentsEveryFlagWithUnitsRangesDefaultsAndExam
   EXPECT_EQ(r.cmd.exit_code, 0);
   EXPECT_TRUE(r.err.empty()) << r.err;
   for (const char* text :
-       {"--listen", "--shm", "--shm-max-size", "--window", "--out-dir", "--weather", "--time",
+       {"--listen", "--shm", "--shm-max-size", "--window", "--out-dir", "--weather", "--cumulus-domes", "--time",
         "--size", "--fov", "--max-clients", "--exit-after-frames", "tcp://HOST:PORT",
         "unix:PATH", "[0, 65535]", "107 bytes", "--socket-mode", "--shm-mode", "0600", "--idle-timeout",
         "--max-view-size", "default 3840x2160", "--tile-budget", "Overloaded", "--ready-file", "localhost", "[::1]", "not resolved",

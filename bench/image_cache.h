@@ -120,18 +120,19 @@ inline CachedImage reference_image(const BenchScene& s, const std::filesystem::p
   });
 }
 
-// The scene's path-traced truth (spp paths per pixel, seed 1, at most max_collisions
+// The scene's path-traced truth (spp paths per pixel from `seed`, at most max_collisions
 // tentative collisions per path: TruthImage::incomplete) at w x h under dir:
 // <scene>_<W>x<H>_spp<N>_<key hash>.exr, with the standard error and the incomplete pixels.
 inline CachedImage truth_image(const BenchScene& s, const std::filesystem::path& dir, int w, int h, int spp,
-                               std::uint64_t max_collisions) {
-  const std::string key =
-      reference_key(s, 1) + " truth spp " + std::to_string(spp) + " cap " + std::to_string(max_collisions);
+                               std::uint64_t max_collisions, std::uint64_t seed = 1) {
+  const std::string key = reference_key(s, 1) + " truth spp " + std::to_string(spp) + " cap " +
+                          std::to_string(max_collisions) + (seed == 1 ? "" : " seed " + std::to_string(seed));
   const std::filesystem::path file = dir / (slug(s.name) + "_" + std::to_string(w) + "x" + std::to_string(h) + "_spp" +
                                             std::to_string(spp) + "_" + key_hash(key) + ".exr");
   return cached_render(file, key, w, h, [&] {
     truth::TruthSettings settings;
     settings.spp = spp;
+    settings.seed = seed;
     settings.tracer.max_collisions = max_collisions;
     truth::TruthImage t = truth::render_truth(s.view, s.weather, settings);
     CachedImage c;

@@ -141,6 +141,56 @@ inline std::string describe(const bench::BenchScene& s) {
 // (and the sun is above the horizon).
 inline constexpr double kResolvedNoise = 0.25;
 
+// Pixels the comparison can use: not incomplete in the truth.
+inline Mask complete_pixels(const bench::CachedImage& truth) {
+  Mask valid(static_cast<size_t>(truth.img.width) * truth.img.height, 1);
+  for (size_t i = 0; i < valid.size() && i < truth.incomplete.size(); ++i)
+    if (truth.incomplete[i]) valid[i] = 0;
+  return valid;
+}
+
+// Adds batch b (another seed, the same spp) to the running truth `sum` of `batches` batches:
+// independent estimates of equal size, so the mean is the mean of the means, the standard
+// error sqrt(sum se_k^2) / K, the opacity the mean opacity; a pixel incomplete in any batch
+// is incomplete.
+inline void add_batch(bench::CachedImage& sum, const bench::CachedImage& b, int batches) {
+  const double k = static_cast<double>(batches);  // batches in sum before b
+  for (size_t i = 0; i < sum.img.rgba.size(); ++i)
+    sum.img.rgba[i] = static_cast<float>((sum.img.rgba[i] * k + b.img.rgba[i]) / (k + 1.0));
+  for (size_t i = 0; i < sum.img.std_error.size(); ++i) {
+    const double a = sum.img.std_error[i] * k, c = b.img.std_error[i];
+    sum.img.std_error[i] = static_cast<float>(std::sqrt(a * a + c * c) / (k + 1.0));
+  }
+  for (size_t i = 0; i < sum.incomplete.size() && i < b.incomplete.size(); ++i) sum.incomplete[i] |= b.incomplete[i];
+  sum.seconds += b.seconds;
+  sum.evals_px += b.evals_px;
+  sum.cached = sum.cached && b.cached;
+}
+
+// The scene's truth: a first batch of spp paths per pixel (seed 1), and when its cloud
+// radiance is too noisy to resolve (relative noise > kResolvedNoise) as many batches in all
+// (seeds 2, 3, ...) as that noise says are needed to reach 0.8 kResolvedNoise (noise falls
+// as 1/sqrt(paths)) if that is at most max_spp paths per pixel (else one batch: the time
+// would not resolve it). The count is fixed by the first batch, not by testing after each
+// batch, which would favour stopping on batches whose heavy tail happened to be missing. A
+// scene without cloud pixels or with the sun below the horizon
+// (docs/TRUTH.md, "Limits") gets one batch.
+inline bench::CachedImage adaptive_truth(const bench::BenchScene& s, const std::filesystem::path& dir, int w, int h,
+                                         int spp, int max_spp, std::uint64_t max_collisions, int& spp_used) {
+  bench::CachedImage t = bench::truth_image(s, dir, w, h, spp, max_collisions, 1);
+  const double noise = truth_noise(t.img, complete_pixels(t)).cloud_rel_se;
+  int batches = 1;
+  if (noise > kResolvedNoise && s.sun_elevation_deg > 0.0) {
+    const double ratio = noise / (0.8 * kResolvedNoise);
+    const int needed = static_cast<int>(std::min(1e6, std::ceil(ratio * ratio)));
+    if (needed <= max_spp / spp) batches = needed;  // else max_spp cannot resolve it: one batch
+  }
+  for (int b = 1; b < batches; ++b)
+    add_batch(t, bench::truth_image(s, dir, w, h, spp, max_collisions, static_cast<std::uint64_t>(b) + 1), b);
+  spp_used = batches * spp;
+  return t;
+}
+
 inline std::string num(const char* f, double v) {
   if (!std::isfinite(v)) return "-";
   char b[64];
@@ -151,17 +201,22 @@ inline std::string num(const char* f, double v) {
 inline int run(int argc, char** argv) {
   CLI::App app{"Presets and the model reference against the path-traced ground truth (cloudbench --truth)"};
   std::string scenes_text = "random:2026:32", size = "24x14", out = "bench-out-truth";
-  int spp = 32, ref_samples = 3;
+  int spp = 32, max_spp = 0, ref_samples = 3;
   std::uint64_t max_collisions = 50000;
   app.add_option("--scenes", scenes_text, "core or random:SEED:N");
   app.add_option("--size", size, "image size WxH of every render");
-  app.add_option("--spp", spp, "paths per pixel of the truth")->check(CLI::Range(2, 1 << 20));
+  app.add_option("--spp", spp, "paths per pixel of the truth (one batch)")->check(CLI::Range(2, 1 << 20));
+  app.add_option("--max-spp", max_spp,
+                 "more batches of --spp paths (other seeds) while a scene's truth is too noisy to resolve its "
+                 "cloud radiance, up to this many paths per pixel; default --spp (one batch)")
+      ->check(CLI::Range(2, 1 << 24));
   app.add_option("--ref-samples", ref_samples, "reference rays per pixel along each axis")->check(CLI::Range(1, 16));
   app.add_option("--out", out, "output directory (report.md, report.csv, cached images)");
   app.add_option("--max-collisions", max_collisions,
                  "tentative collisions per truth path beyond which its pixel is left out (incomplete)")
       ->check(CLI::Range(static_cast<std::uint64_t>(1000), static_cast<std::uint64_t>(1) << 40));
   CLI11_PARSE(app, argc, argv);
+  max_spp = std::max(max_spp, spp);
   int w = 0, h = 0;
   if (!bench::parse_frame_size(size, w, h)) {
     std::fprintf(stderr, "cloudbench --truth: --size expects WxH\n");
@@ -183,24 +238,22 @@ inline int run(int argc, char** argv) {
   std::vector<Row> rows;
   std::vector<TruthNoise> noises;
   std::vector<double> incomplete_share;
+  std::vector<int> truth_spp;  // paths per pixel each scene's truth used
   double truth_s = 0, ref_s = 0;
   for (const bench::BenchScene& s : scenes) {
-    const bench::CachedImage truth = bench::truth_image(s, dir / "truth", w, h, spp, max_collisions);
+    int scene_spp = 0;
+    const bench::CachedImage truth = adaptive_truth(s, dir / "truth", w, h, spp, max_spp, max_collisions, scene_spp);
     const bench::CachedImage ref = bench::reference_image(s, dir / "ref", w, h, ref_samples);
     truth_s += truth.seconds;
     ref_s += ref.seconds;
-    Mask valid(static_cast<size_t>(w) * h, 1);
-    int incomplete = 0;
-    for (size_t i = 0; i < valid.size() && i < truth.incomplete.size(); ++i)
-      if (truth.incomplete[i]) {
-        valid[i] = 0;
-        ++incomplete;
-      }
+    truth_spp.push_back(scene_spp);
+    const Mask valid = complete_pixels(truth);
+    const int incomplete = static_cast<int>(std::count(valid.begin(), valid.end(), 0));
     incomplete_share.push_back(static_cast<double>(incomplete) / static_cast<double>(valid.size()));
     const TruthNoise noise = truth_noise(truth.img, valid);
     noises.push_back(noise);
-    std::printf("%-12s truth %s %.1f s (%.0f evals/px, %d incomplete px), reference %s %.1f s; %s\n", s.name.c_str(),
-                truth.cached ? "cached" : "rendered", truth.seconds, truth.evals_px, incomplete,
+    std::printf("%-12s truth %s %.1f s (%d spp, %.0f evals/px, %d incomplete px), reference %s %.1f s; %s\n",
+                s.name.c_str(), truth.cached ? "cached" : "rendered", truth.seconds, scene_spp, truth.evals_px, incomplete,
                 ref.cached ? "cached" : "rendered", ref.seconds, describe(s).c_str());
     std::fflush(stdout);
     rows.push_back({s.name, "reference", ref.evals_px, errors_of(ref.img, truth.img, ref.img, valid)});
@@ -244,8 +297,10 @@ inline int run(int argc, char** argv) {
   }
   std::ostringstream md;
   md << "# cloudbench --truth report\n\nCommand: `cloudbench --truth --scenes " << scenes_text << " --size " << size
-     << " --spp " << spp << " --ref-samples " << ref_samples << " --max-collisions " << max_collisions << "`  \n"
-     << scenes.size() << " scenes at " << w << "x" << h << "; truth " << spp << " paths per pixel ("
+     << " --spp " << spp << " --max-spp " << max_spp << " --ref-samples " << ref_samples << " --max-collisions "
+     << max_collisions << "`  \n"
+     << scenes.size() << " scenes at " << w << "x" << h << "; truth " << spp << " paths per pixel, more (up to "
+     << max_spp << ") where a scene's first batch is too noisy (per scene below) ("
      << num("%.0f", truth_s) << " s of renders, 0 = cached), reference " << ref_samples << "x" << ref_samples
      << " rays per pixel (" << num("%.0f", ref_s) << " s), total " << num("%.0f", total_s) << " s.\n\n"
      << "Cloud relative error = RMSE over the cloud pixels (opacity > 0.01 in the image compared against) and rgb "
@@ -280,8 +335,8 @@ inline int run(int argc, char** argv) {
        << num("%.3f", bench::percentile(rr, 90)) << " | " << num("%.2f", bench::finite_mean(rp)) << " | "
        << num("%.2f", bench::percentile(rp, 10)) << " |\n";
   }
-  md << "\n## Per scene (cloud relative error)\n\n| scene | incomplete px | truth noise | naive vs truth | default vs truth | reference vs truth | "
-        "default vs reference | naive vs reference |\n|---|---:|---:|---:|---:|---:|---:|---:|\n";
+  md << "\n## Per scene (cloud relative error)\n\n| scene | truth spp | incomplete px | truth noise | naive vs truth | default vs truth | reference vs truth | "
+        "default vs reference | naive vs reference |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (size_t i = 0; i < scenes.size(); ++i) {
     auto find = [&](const std::string& c) -> const Row* {
       for (const Row* r : by_config[c])
@@ -289,7 +344,7 @@ inline int run(int argc, char** argv) {
       return nullptr;
     };
     const Row *n = find("naive"), *d = find("default"), *r = find("reference");
-    md << "| " << scenes[i].name << " | " << num("%.1f %%", 100.0 * incomplete_share[i]) << " | "
+    md << "| " << scenes[i].name << " | " << truth_spp[i] << " | " << num("%.1f %%", 100.0 * incomplete_share[i]) << " | "
        << num("%.3f", noises[i].cloud_rel_se) << " | "
        << num("%.3f", n->e.truth_cloud_rel) << " | " << num("%.3f", d->e.truth_cloud_rel) << " | "
        << num("%.3f", r->e.truth_cloud_rel) << " | " << num("%.3f", d->e.ref_cloud_rel) << " | "

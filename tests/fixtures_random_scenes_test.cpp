@@ -241,6 +241,30 @@ TEST_F(RandomScenesDistribution, WeatherIsEveryPresetOrAValidRandomLayerSet) {
   EXPECT_EQ(types.size(), weather::all_cloud_types().size());
 }
 
+// Random layers hold water contents clouds have: a tenth to three times their type's
+// typical content, whatever the droplet size (so no layer is optically a thousand times
+// thicker than the same cloud in nature).
+TEST_F(RandomScenesDistribution, RandomLayersHoldObservedWaterContents) {
+  double lo = 1e9, hi = 0.0;
+  for (const RandomScene& s : *scenes_) {
+    if (s.weather_source != "random") continue;
+    for (const auto& l : s.weather.layers) {
+      const weather::CloudTypeTraits& t = weather::cloud_type_traits(l.type);
+      const double r = l.droplet_diameter_um / t.default_droplet_diameter_um;
+      // water content relative to the type's typical one (LWC_N0 grows as d^3)
+      const double factor = l.density_scale * r * r * r / t.default_density_scale;
+      if (l.density_scale < weather::kMaxDensityScale) {
+        EXPECT_GE(factor, kMinWaterContentFactor * (1 - 1e-12)) << describe(s);
+        lo = std::min(lo, factor);
+      }
+      EXPECT_LE(factor, kMaxWaterContentFactor * (1 + 1e-12)) << describe(s);
+      hi = std::max(hi, factor);
+    }
+  }
+  EXPECT_LT(lo, 0.12);  // the whole range is drawn
+  EXPECT_GT(hi, 2.5);
+}
+
 TEST_F(RandomScenesDistribution, NoSceneHasTheSunInTheFrame) {
   int near_misses = 0, redraws = 0;
   double closest = 180.0;

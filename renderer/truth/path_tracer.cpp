@@ -193,6 +193,9 @@ glm::dvec3 PathTracer::radiance(const glm::dvec3& x0, const glm::dvec3& w0) {
     copies.pop_back();
     L += trace(copy, copies, collisions);
   }
+  ++counters_.camera_paths;
+  counters_.path_collisions += collisions;
+  counters_.copies += static_cast<std::uint64_t>(copies_made_);
   if (collisions > settings_.max_collisions) {
     ++counters_.lost_paths;
     return glm::dvec3(0.0);
@@ -217,8 +220,13 @@ glm::dvec3 PathTracer::trace(PathState s, std::vector<PathState>& copies, std::u
       const glm::dvec3 scattering = m.scattering();
       const double s_max = max3(scattering);
       const double q = s_max > 0.0 ? std::min(1.0, settings_.nee_boost * s_max / majorant) : 0.0;
-      if (sun_on_ && s.order + 1 <= settings_.max_order && q > 0.0 && (q >= 1.0 || uniform() < q))
-        L += sun_at_collision(y, s.w, m, majorant, q, s.beta, continues);
+      if (sun_on_ && s.order + 1 <= settings_.max_order && q > 0.0 && (q >= 1.0 || uniform() < q)) {
+        const Contribution kind = q < 1.0                   ? Contribution::NextEventThin
+                                  : m.cloud_total() <= 0.0   ? Contribution::NextEventAir
+                                  : guiding_at(m, q) > 0.0   ? Contribution::NextEventCloudGuided
+                                                             : Contribution::NextEventCloudPlain;
+        add(L, kind, sun_at_collision(y, s.w, m, majorant, q, s.beta, continues));
+      }
       // Spectral tracking: a real scattering, a null collision or absorption.
       const double b_mean = mean3(s.beta);
       const double s_bar = mean3(s.beta * scattering) / b_mean;  // 1/m
@@ -263,15 +271,15 @@ glm::dvec3 PathTracer::trace(PathState s, std::vector<PathState>& copies, std::u
     }
     if (!scattered) {
       if (walk.end() == BandWalker::End::Top) {
-        L += s.beta * world_.sky_radiance;
+        add(L, Contribution::SkyEscape, s.beta * world_.sky_radiance);
         if (disk_ && glm::dot(s.w, world_.sun) > sun_cos_radius_) {
           if (s.vertex == VertexKind::None) {
-            L += s.beta * sun_radiance_;  // the disk itself, seen by the camera
+            add(L, Contribution::SunDisk, s.beta * sun_radiance_);  // the disk itself, seen by the camera
           } else if (s.vertex == VertexKind::Medium) {
-            L += s.beta * sun_radiance_ * escape_weight(s.last, s.w);
+            add(L, Contribution::SunEscape, s.beta * sun_radiance_ * escape_weight(s.last, s.w));
           } else {  // after a ground bounce: MIS against the ground's next event
             const double cosine = std::max(0.0, glm::dot(s.last_normal, s.w)) / kPi;
-            L += s.beta * sun_radiance_ * (cosine / (cosine + 1.0 / sun_solid_angle_));
+            add(L, Contribution::SunEscape, s.beta * sun_radiance_ * (cosine / (cosine + 1.0 / sun_solid_angle_)));
           }
         }
         return L;
@@ -279,7 +287,8 @@ glm::dvec3 PathTracer::trace(PathState s, std::vector<PathState>& copies, std::u
       // The ground: lift the hit point 1 mm so the bounce starts above the sphere.
       const glm::dvec3 n = glm::normalize(s.x + walk.distance() * s.w);
       const glm::dvec3 y = n * (world_.radius_m + world_.ground_alt_m + 1e-3);
-      if (sun_on_ && s.order + 1 <= settings_.max_order) L += sun_at_ground(n, y, s.beta, continues);
+      if (sun_on_ && s.order + 1 <= settings_.max_order)
+        add(L, Contribution::GroundNextEvent, sun_at_ground(n, y, s.beta, continues));
       s.vertex = VertexKind::Ground;
       s.last_normal = n;
       s.beta *= world_.ground_albedo;

@@ -81,15 +81,58 @@ struct TracerSettings {
   std::uint64_t max_collisions = 100'000'000;
 };
 
+// Where a path's radiance comes from: each contribution added to a path's estimate is one
+// of these (for diagnosis of the estimator's variance: bench/truth_scene_probe.cpp).
+enum class Contribution {
+  NextEventThin,        // next event at a tentative collision drawn with probability q < 1
+  NextEventCloudGuided, // ... with q = 1 in cloud, where a guided copy may be made
+  NextEventCloudPlain,  // ... with q = 1 in cloud, no copy possible (max_copies spent; or a collimated sun)
+  NextEventAir,         // ... with q = 1 in cloud-free air
+  SunEscape,            // (B): a path leaving a vertex into the sun's disk
+  SkyEscape,            // night sky through the top
+  GroundNextEvent,      // the sun at a ground bounce
+  SunDisk,              // the disk seen by an unscattered camera ray
+  Count
+};
+inline constexpr const char* kContributionNames[] = {"next event, q < 1", "next event, cloud, guided",
+                                                     "next event, cloud, no copies left", "next event, air",
+                                                     "sun escape (B)", "sky escape", "ground next event",
+                                                     "sun disk"};
+// Sum, sum of squares (of the channel mean) and largest of one kind's contributions.
+struct ContributionStats {
+  double sum = 0.0, sum2 = 0.0, max = 0.0;
+  std::uint64_t count = 0;  // non-zero contributions
+  void add(double v) {
+    sum += v;
+    sum2 += v * v;
+    max = v > max ? v : max;
+    ++count;
+  }
+  void add(const ContributionStats& o) {
+    sum += o.sum;
+    sum2 += o.sum2;
+    max = o.max > max ? o.max : max;
+    count += o.count;
+  }
+};
+
 // Work and health counters of a set of paths (summed per pixel, then per image).
 struct TracerCounters {
   std::uint64_t density_evals = 0;        // medium evaluations (TruthMedium::at calls)
   std::uint64_t majorant_violations = 0;  // points where an extinction exceeded the majorant
   std::uint64_t lost_paths = 0;           // paths dropped at max_collisions
   std::uint64_t scattering_events = 0;    // real collisions + ground bounces
+  std::uint64_t camera_paths = 0;         // radiance() calls
+  std::uint64_t path_collisions = 0;      // tentative collisions of camera paths and their copies (not shadow rays)
+  std::uint64_t copies = 0;               // sun-guided copies made
+  ContributionStats contributions[static_cast<int>(Contribution::Count)];
 
   void add(const TracerCounters& o) {
     density_evals += o.density_evals;
+    camera_paths += o.camera_paths;
+    path_collisions += o.path_collisions;
+    copies += o.copies;
+    for (int k = 0; k < static_cast<int>(Contribution::Count); ++k) contributions[k].add(o.contributions[k]);
     majorant_violations += o.majorant_violations;
     lost_paths += o.lost_paths;
     scattering_events += o.scattering_events;
@@ -136,6 +179,12 @@ class PathTracer {
   double direction_density(const Vertex& v, const glm::dvec3& w_out) const;  // p + guiding h, 1/sr
   double escape_weight(const Vertex& v, const glm::dvec3& w_out) const;
 
+  // Adds contribution c of kind k to L and to the counters.
+  void add(glm::dvec3& L, Contribution k, const glm::dvec3& c) {
+    const double v = (c.x + c.y + c.z) / 3.0;
+    if (v > 0.0) counters_.contributions[static_cast<int>(k)].add(v);
+    L += c;
+  }
   double uniform() { return rng_.uniform(); }
   double exponential() { return -std::log1p(-uniform()); }
   void medium_at(const glm::dvec3& y, double altitude_m, double majorant, MediumPoint& m);

@@ -6,8 +6,9 @@
 // (CENTRE_SAMPLE_WEIGHT: the midpoint rule is exact for linear variation across the pixel,
 // where a random point errs by its offset times the gradient). Weighed equally, the pair
 // was farther from the footprint than the centre alone on random scenes where sub-pixel
-// structure covers the frame (r77-5: 2.3x the naive march's RMSE in cloudbench's random
-// set, 1.6x with the weight).
+// structure covers the frame (a camera inside an altocumulus layer looking up: more than
+// twice the naive march's RMSE in cloudbench's random set, 1.6x with the weight, when it
+// was measured; CHANGELOG.md).
 //
 // The footprint reference comes from the same renderer (the naive march at 4x the size,
 // box-filtered to the pixel), so the test measures footprint sampling alone, not the light

@@ -8,7 +8,10 @@
 #include <sys/stat.h>
 #include <sys/un.h>
 
+#include <cmath>
 #include <filesystem>
+
+#include <OpenImageIO/imageio.h>
 
 #include "raw_client.h"
 #include "service_test_support.h"
@@ -367,6 +370,45 @@ TEST(ServiceReliability, SigtermDuringALongFrameExitsWithinTwoSeconds) {
   EXPECT_FALSE(fs::exists("/dev/shm/" + svc.shm_name()));
   const std::string log = read_text_file(svc.log_path());
   EXPECT_NE(log.find("abandon"), std::string::npos) << log;
+}
+
+// cloudsvc serve --cumulus-domes reaches the renderer: the same view into the test services'
+// scattered cumulus (1500 m over Zurich, inside the layer's band) differs from the service's without the flag,
+// and both frames are finite images.
+TEST(ServiceScene, CumulusDomesFlagReachesTheRenderer) {
+  auto frame_of = [](const std::string& tag, std::vector<std::string> extra) {
+    ServiceProcess svc(tag, extra, ServiceProcess::Tcp::No, ServiceProcess::OutDir::Yes);
+    std::vector<float> pixels;
+    EXPECT_TRUE(svc.running());
+    if (!svc.running()) return pixels;
+    RawClient c(svc.socket_path());
+    handshake(c);
+    c.send(view_of(64, 36, protocol::sink::kFile, svc.out_dir().string()), 2);
+    c.send(test_pose(47.45), 3);
+    const auto ready = wait_for<protocol::FrameReady>(c, 120s);
+    EXPECT_TRUE(ready && ready->file_path) << tag;
+    if (ready && ready->file_path) {
+      auto in = OIIO::ImageInput::open(*ready->file_path);
+      EXPECT_TRUE(in) << *ready->file_path;
+      if (in) {
+        const OIIO::ImageSpec& spec = in->spec();
+        pixels.resize(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
+        EXPECT_TRUE(in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data()));
+      }
+    }
+    EXPECT_EQ(svc.stop(), 0);
+    return pixels;
+  };
+  const std::vector<float> noise = frame_of("noise_field", {});
+  const std::vector<float> domes = frame_of("domes", {"--cumulus-domes"});
+  ASSERT_EQ(noise.size(), domes.size());
+  ASSERT_FALSE(noise.empty());
+  double diff = 0.0;
+  for (size_t i = 0; i < noise.size(); ++i) {
+    ASSERT_TRUE(std::isfinite(noise[i]) && std::isfinite(domes[i]));
+    diff += std::abs(static_cast<double>(noise[i]) - domes[i]);
+  }
+  EXPECT_GT(diff / static_cast<double>(noise.size()), 0.005) << "the domes frame equals the noise-field frame";
 }
 
 }  // namespace

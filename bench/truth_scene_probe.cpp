@@ -9,14 +9,13 @@
 // Usage: truth_scene_probe [--scenes random:2026:32] [--scene 8] [--size 16x9] [--spp 32]
 //          [--max-collisions 20000] [--guiding 0.3] [--max-copies 64] [--seed 1]
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 
 #include <CLI/CLI.hpp>
 
 #include "bench/bench_scenes.h"
 #include "bench/bench_util.h"
-#include "bench/scene_statistics.h"
+#include "bench/truth_command.h"
 #include "renderer/truth/truth_renderer.h"
 
 int main(int argc, char** argv) {
@@ -51,25 +50,18 @@ int main(int argc, char** argv) {
   const auto t0 = std::chrono::steady_clock::now();
   const truth::TruthImage t = truth::render_truth(s.view, s.weather, settings);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  double se2 = 0, mean = 0;
-  long n = 0;
   const FrameImage& img = t.image;
-  for (std::size_t i = 0; i < static_cast<std::size_t>(w) * h; ++i) {
-    if (t.incomplete[i] || !(img.rgba[i * 4 + 3] > bench::kCloudOpacity)) continue;
-    for (int c = 0; c < 3; ++c) {
-      se2 += static_cast<double>(img.std_error[i * 3 + c]) * img.std_error[i * 3 + c];
-      mean += img.rgba[i * 4 + c];
-      ++n;
-    }
-  }
+  truth_command::Mask complete(t.incomplete.size());
+  for (std::size_t i = 0; i < complete.size(); ++i) complete[i] = t.incomplete[i] ? 0 : 1;
+  const double noise = truth_command::truth_noise(img, complete).cloud_rel_se;  // as cloudbench --truth
   const truth::TracerCounters& k = t.counters;
   const double paths = static_cast<double>(std::max<std::uint64_t>(1, k.camera_paths));
   std::printf("%s: %.1f s, %.0f evals/px, per camera path: %.0f collisions, %.1f scatterings, %.2f copies; "
-              "lost %llu of %llu paths, incomplete %d px; cloud px %ld, relative noise %.3f\n",
+              "lost %llu of %llu paths, incomplete %d px; cloud px %lld, relative noise %.3f\n",
               s.name.c_str(), seconds, img.stats.density_evals_per_pixel, static_cast<double>(k.path_collisions) / paths,
               static_cast<double>(k.scattering_events) / paths, static_cast<double>(k.copies) / paths,
               static_cast<unsigned long long>(k.lost_paths), static_cast<unsigned long long>(k.camera_paths),
-              t.incomplete_pixels, n / 3, n && mean > 0 ? std::sqrt(se2 / n) / (mean / n) : NAN);
+              t.incomplete_pixels, static_cast<long long>(img.stats.cloud_pixels), noise);
   // Per kind of contribution: share of the estimate and of its second moment (the variance
   // of a heavy-tailed estimate is its second moment), count and largest value.
   double sum = 0, sum2 = 0;

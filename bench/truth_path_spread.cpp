@@ -1,15 +1,19 @@
-// Spread of the ground truth's per-path radiance estimates in a homogeneous slab, with and
-// without sun-guided copies (docs/TRUTH.md, "The estimator"): mean, standard deviation,
+// Spread of the ground truth's per-path radiance estimates in a homogeneous slab, without
+// sun-guided copies, with copies at any depth and with copies where the sun is less than
+// TracerSettings::guide_depth deep (docs/TRUTH.md, "The estimator"): mean, standard deviation,
 // quantiles, the largest paths and the work per path, so that the variance reduction per
-// unit of work can be read off.
+// unit of work can be read off; and the slab Monte Carlo's answer for the same view
+// (renderer/model/slab_monte_carlo.h, 10^6 photons).
 //
 // Usage: truth_path_spread [--tau T (4)] [--sun-zenith DEG (60)] [--paths N (100000)]
+//                          [--guide-cell M (TracerSettings::guide_cell_m)]
 // The camera is 500 m below the slab's base looking straight up; sun irradiance 1;
 // droplet diameter 14 um; black ground; no air.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -29,12 +33,11 @@ struct Slab final : truth::TruthMedium {
   }
 };
 
-void report(const char* label, const truth::TruthWorld& world, double guiding, long paths) {
-  truth::TracerSettings settings;
-  settings.sun_guiding = guiding;
+void report(const char* label, const truth::TruthWorld& world, const truth::TracerSettings& settings, long paths) {
   truth::TracerCounters counters;
   model::Pcg32 rng = model::chunk_stream(1, 0);
-  truth::PathTracer tracer(world, settings, rng, counters);
+  const truth::SunDepthCache sun_depth = truth::make_sun_depth_cache(world, settings);
+  truth::PathTracer tracer(world, settings, sun_depth, rng, counters);
   const glm::dvec3 camera(0.0, 0.0, world.radius_m + 500.0), up(0.0, 0.0, 1.0);
   std::vector<double> v(static_cast<std::size_t>(paths));
   double sum = 0.0, sum2 = 0.0;
@@ -46,7 +49,7 @@ void report(const char* label, const truth::TruthWorld& world, double guiding, l
   const double n = static_cast<double>(paths), mean = sum / n;
   const double sd = std::sqrt(std::max(0.0, sum2 / n - mean * mean));
   std::sort(v.begin(), v.end());
-  const double work = static_cast<double>(counters.density_evals) / n;
+  const double work = static_cast<double>(counters.density_evals + sun_depth.density_evals()) / n;
   std::printf("%-16s mean %.5f +- %.5f  s.d. per path %.3f  p50 %.4f p99 %.3f p99.9 %.3f  largest %.1f %.1f %.1f"
               "  evaluations/path %.1f  variance x work %.3f\n",
               label, mean, sd / std::sqrt(n), sd, v[v.size() / 2], v[v.size() * 99 / 100], v[v.size() * 999 / 1000],
@@ -56,7 +59,7 @@ void report(const char* label, const truth::TruthWorld& world, double guiding, l
 }  // namespace
 
 int main(int argc, char** argv) {
-  double tau = 4.0, sun_zenith = 60.0;
+  double tau = 4.0, sun_zenith = 60.0, guide_cell = truth::TracerSettings{}.guide_cell_m;
   long paths = 100000;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -64,13 +67,14 @@ int main(int argc, char** argv) {
     if (a == "--tau" && has_value) tau = std::atof(argv[++i]);
     else if (a == "--sun-zenith" && has_value) sun_zenith = std::atof(argv[++i]);
     else if (a == "--paths" && has_value) paths = std::atol(argv[++i]);
+    else if (a == "--guide-cell" && has_value) guide_cell = std::atof(argv[++i]);
     else {
-      std::fprintf(stderr, "usage: truth_path_spread [--tau T] [--sun-zenith DEG] [--paths N]\n");
+      std::fprintf(stderr, "usage: truth_path_spread [--tau T] [--sun-zenith DEG] [--paths N] [--guide-cell M]\n");
       return a == "--help" ? 0 : 2;
     }
   }
-  if (!(tau > 0.0) || !(sun_zenith >= 0.0 && sun_zenith < 90.0) || paths < 2) {
-    std::fprintf(stderr, "truth_path_spread: need tau > 0, sun zenith in [0, 90), paths >= 2\n");
+  if (!(tau > 0.0) || !(sun_zenith >= 0.0 && sun_zenith < 90.0) || paths < 2 || !(guide_cell > 0.0)) {
+    std::fprintf(stderr, "truth_path_spread: need tau > 0, sun zenith in [0, 90), paths >= 2, guide cell > 0\n");
     return 2;
   }
   const model::SlabSpec spec = model::slab_from_optical_depth(tau, sun_zenith);
@@ -90,7 +94,24 @@ int main(int argc, char** argv) {
   w.cloud_phase[0] = model::jdd_params(spec.droplet_diameter_um);
   w.medium = &slab;
   std::printf("slab optical depth %.2f, sun zenith %.1f deg, %ld paths, view up from below\n", tau, sun_zenith, paths);
-  report("no copies", w, 0.0, paths);
-  report("sun-guided 0.3", w, truth::TracerSettings{}.sun_guiding, paths);
+  {
+    model::SlabMcOptions o;  // the independent answer: photons traced from the sun
+    o.photons = 1000000;
+    o.views = {{0.0, 0.0}};
+    const model::SlabMcResult mc = model::run_slab_monte_carlo(spec, o);
+    std::printf("slab Monte Carlo (%llu photons): %.5f +- %.5f\n", static_cast<unsigned long long>(o.photons),
+                mc.radiance_bottom[0].mean, mc.radiance_bottom[0].std_error);
+  }
+  truth::TracerSettings gated;
+  gated.guide_cell_m = guide_cell;
+  truth::TracerSettings plain = gated;
+  plain.sun_guiding = 0.0;
+  report("no copies", w, plain, paths);
+  truth::TracerSettings everywhere = gated;
+  everywhere.guide_depth = std::numeric_limits<double>::infinity();
+  report("copies anywhere", w, everywhere, paths);
+  char label[64];
+  std::snprintf(label, sizeof label, "copies, depth<%g", gated.guide_depth);
+  report(label, w, gated, paths);
   return 0;
 }

@@ -10,6 +10,7 @@
 //          [--max-collisions 20000] [--guiding 0.3] [--max-copies 64] [--seed 1]
 #include <chrono>
 #include <cstdio>
+#include <limits>
 
 #include <CLI/CLI.hpp>
 
@@ -34,6 +35,11 @@ int main(int argc, char** argv) {
   app.add_option("--max-collisions", settings.tracer.max_collisions, "tentative collisions per camera path (with its copies)");
   app.add_option("--guiding", settings.tracer.sun_guiding, "probability of a sun-guided copy")->check(CLI::Range(0.0, 0.99));
   app.add_option("--max-copies", settings.tracer.max_copies, "copies per camera path")->check(CLI::NonNegativeNumber);
+  app.add_option("--guide-depth", settings.tracer.guide_depth,
+                 "copies only where the cloud optical depth towards the sun is below this (inf = anywhere)")
+      ->check(CLI::Range(0.0, std::numeric_limits<double>::infinity()));
+  app.add_option("--guide-cell", settings.tracer.guide_cell_m, "cell size of the sun-depth gate, m")
+      ->check(CLI::PositiveNumber);
   CLI11_PARSE(app, argc, argv);
   int w = 0, h = 0;
   const auto set = bench::parse_scene_set(scenes_text);
@@ -62,6 +68,10 @@ int main(int argc, char** argv) {
               static_cast<double>(k.scattering_events) / paths, static_cast<double>(k.copies) / paths,
               static_cast<unsigned long long>(k.lost_paths), static_cast<unsigned long long>(k.camera_paths),
               t.incomplete_pixels, static_cast<long long>(img.stats.cloud_pixels), noise);
+  std::printf("  sun-depth gate: %zu cells, %.0f evaluations per cell, %.1f %% of the evaluations\n", t.sun_depth_cells,
+              static_cast<double>(t.sun_depth_evals) / static_cast<double>(std::max<std::size_t>(1, t.sun_depth_cells)),
+              100.0 * static_cast<double>(t.sun_depth_evals) /
+                  std::max(1.0, img.stats.density_evals_per_pixel * img.width * img.height));
   // Per kind of contribution: share of the estimate and of its second moment (the variance
   // of a heavy-tailed estimate is its second moment), count and largest value.
   double sum = 0, sum2 = 0;

@@ -24,9 +24,13 @@ constexpr int kRayleigh = 0, kAerosol = 1, kFirstCloud = 2;
 
 }  // namespace
 
-PathTracer::PathTracer(const TruthWorld& world, const TracerSettings& settings, model::Pcg32& rng,
-                       TracerCounters& counters)
-    : world_(world), settings_(settings), rng_(rng), counters_(counters) {
+SunDepthCache make_sun_depth_cache(const TruthWorld& world, const TracerSettings& settings) {
+  return SunDepthCache(world, settings.guide_cell_m, std::isfinite(settings.guide_depth) ? settings.guide_depth : 1.0);
+}
+
+PathTracer::PathTracer(const TruthWorld& world, const TracerSettings& settings, const SunDepthCache& sun_depth,
+                       model::Pcg32& rng, TracerCounters& counters)
+    : world_(world), settings_(settings), sun_depth_(sun_depth), rng_(rng), counters_(counters) {
   sun_on_ = max3(world.sun_irradiance) > 0.0;
   sun_cos_radius_ = std::cos(world.sun_angular_radius_rad);
   sun_solid_angle_ = 2.0 * kPi * (1.0 - sun_cos_radius_);
@@ -92,14 +96,17 @@ glm::dvec3 PathTracer::sample_sun_direction() {
   return model::scatter_direction(world_.sun, cos_t, 2.0 * kPi * uniform());
 }
 
-double PathTracer::guiding_at(const MediumPoint& m, double q) const {
+double PathTracer::guiding_at(const glm::dvec3& y, const MediumPoint& m, double q) const {
   // Only where next-event estimation runs at every tentative collision (q = 1), so that
-  // a vertex's strategies are the same for every sample, and while the camera path has
-  // made fewer than max_copies copies (a function of the path's history, which the MIS
-  // weights at a vertex may depend on).
-  return disk_ && guide_g_ > 0.0 && q >= 1.0 && m.cloud_total() > 0.0 && copies_made_ < settings_.max_copies
-             ? settings_.sun_guiding
-             : 0.0;
+  // a vertex's strategies are the same for every sample, while the camera path has made
+  // fewer than max_copies copies (a function of the path's history, which the MIS
+  // weights at a vertex may depend on), and where the sun is not buried under more than
+  // guide_depth of cloud (a function of y).
+  if (!disk_ || guide_g_ <= 0.0 || settings_.sun_guiding <= 0.0 || q < 1.0 || m.cloud_total() <= 0.0 ||
+      copies_made_ >= settings_.max_copies)
+    return 0.0;
+  if (std::isfinite(settings_.guide_depth) && sun_depth_.depth(y) >= settings_.guide_depth) return 0.0;
+  return settings_.sun_guiding;
 }
 
 double PathTracer::direction_density(const Vertex& v, const glm::dvec3& w_out) const {
@@ -115,7 +122,8 @@ double PathTracer::escape_weight(const Vertex& v, const glm::dvec3& w_out) const
 }
 
 glm::dvec3 PathTracer::sun_at_collision(const glm::dvec3& y, const glm::dvec3& w, const MediumPoint& m,
-                                        double majorant, double q, const glm::dvec3& beta, bool path_continues) {
+                                        double majorant, double q, double guiding, const glm::dvec3& beta,
+                                        bool path_continues) {
   const glm::dvec3 wl = disk_ ? sample_sun_direction() : world_.sun;
   const double nu = glm::dot(w, wl);
   double mis = 1.0;
@@ -125,7 +133,7 @@ glm::dvec3 PathTracer::sun_at_collision(const glm::dvec3& y, const glm::dvec3& w
     here.beta = beta;
     here.medium = m;
     here.s_bar = mean3(beta * m.scattering()) / mean3(beta);
-    here.guiding = guiding_at(m, q);
+    here.guiding = guiding;
     const double light = majorant * q / sun_solid_angle_;
     mis = light / (light + here.s_bar * direction_density(here, wl));
   }
@@ -220,12 +228,13 @@ glm::dvec3 PathTracer::trace(PathState s, std::vector<PathState>& copies, std::u
       const glm::dvec3 scattering = m.scattering();
       const double s_max = max3(scattering);
       const double q = s_max > 0.0 ? std::min(1.0, settings_.nee_boost * s_max / majorant) : 0.0;
+      const double guiding = guiding_at(y, m, q);  // at this point, were it a real scattering
       if (sun_on_ && s.order + 1 <= settings_.max_order && q > 0.0 && (q >= 1.0 || uniform() < q)) {
-        const Contribution kind = q < 1.0                   ? Contribution::NextEventThin
-                                  : m.cloud_total() <= 0.0   ? Contribution::NextEventAir
-                                  : guiding_at(m, q) > 0.0   ? Contribution::NextEventCloudGuided
-                                                             : Contribution::NextEventCloudPlain;
-        add(L, kind, sun_at_collision(y, s.w, m, majorant, q, s.beta, continues));
+        const Contribution kind = q < 1.0                 ? Contribution::NextEventThin
+                                  : m.cloud_total() <= 0.0 ? Contribution::NextEventAir
+                                  : guiding > 0.0          ? Contribution::NextEventCloudGuided
+                                                           : Contribution::NextEventCloudPlain;
+        add(L, kind, sun_at_collision(y, s.w, m, majorant, q, guiding, s.beta, continues));
       }
       // Spectral tracking: a real scattering, a null collision or absorption.
       const double b_mean = mean3(s.beta);
@@ -241,7 +250,7 @@ glm::dvec3 PathTracer::trace(PathState s, std::vector<PathState>& copies, std::u
         v.medium = m;
         v.s_bar = s_bar;
         v.nee_density = disk_ ? majorant * q / sun_solid_angle_ : 0.0;
-        v.guiding = guiding_at(m, q);
+        v.guiding = guiding;
         s.vertex = VertexKind::Medium;
         ++counters_.scattering_events;
         if (++s.order >= settings_.max_order) return L;
@@ -319,10 +328,11 @@ RadianceEstimate estimate_radiance(const TruthWorld& world, const TracerSettings
     TracerCounters counters;
   };
   std::vector<Sums> sums(static_cast<std::size_t>(chunks));
+  const SunDepthCache sun_depth = make_sun_depth_cache(world, settings);
   parallel_for(static_cast<int>(chunks), threads, [&](int k) {
     Sums& out = sums[static_cast<std::size_t>(k)];
     model::Pcg32 rng = model::chunk_stream(seed, static_cast<std::uint64_t>(k));
-    PathTracer tracer(world, settings, rng, out.counters);
+    PathTracer tracer(world, settings, sun_depth, rng, out.counters);
     const long long n = std::min(kPathsPerChunk, paths - k * kPathsPerChunk);
     for (long long i = 0; i < n; ++i) {
       const glm::dvec3 L = tracer.radiance(x, w);

@@ -44,11 +44,12 @@ TruthImage render_truth(const ViewRequest& view, const weather::Weather& weather
   std::vector<TracerCounters> pixel_counters(static_cast<std::size_t>(pixels));
   std::vector<char> pixel_bad(static_cast<std::size_t>(pixels), 0);
 
+  const SunDepthCache sun_depth = make_sun_depth_cache(world, settings.tracer);
   parallel_for(pixels, settings.threads, [&](int i) {
     const int x = i % view.width, y = i / view.width;
     model::Pcg32 rng = model::chunk_stream(settings.seed, static_cast<std::uint64_t>(i));
     TracerCounters& counters = pixel_counters[static_cast<std::size_t>(i)];
-    PathTracer tracer(world, settings.tracer, rng, counters);
+    PathTracer tracer(world, settings.tracer, sun_depth, rng, counters);
     glm::dvec3 sum(0.0), sum2(0.0);
     double transmittance = 0.0;
     bool bad = false;
@@ -84,14 +85,15 @@ TruthImage render_truth(const ViewRequest& view, const weather::Weather& weather
     rgba[3] = bad ? 0.0f : static_cast<float>(opacity);
   });
 
-  std::uint64_t evals = 0;
   for (int i = 0; i < pixels; ++i) {
     out.counters.add(pixel_counters[static_cast<std::size_t>(i)]);
     img.stats.nonfinite_pixels += pixel_bad[static_cast<std::size_t>(i)];
     out.incomplete_pixels += out.incomplete[static_cast<std::size_t>(i)];
     if (img.rgba[static_cast<std::size_t>(i) * 4 + 3] > 0.01f) ++img.stats.cloud_pixels;
   }
-  evals = out.counters.density_evals;
+  out.sun_depth_cells = sun_depth.cells();
+  out.sun_depth_evals = sun_depth.density_evals();
+  const std::uint64_t evals = out.counters.density_evals + out.sun_depth_evals;
   img.stats.density_evals_per_pixel = static_cast<double>(evals) / pixels;
   img.stats.sun_elevation_deg = scene.sun_elevation_deg;
   img.stats.sun_azimuth_deg = scene.sun_azimuth_deg;

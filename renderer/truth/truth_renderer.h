@@ -34,8 +34,11 @@ struct TruthSettings {
 
 struct TruthImage {
   FrameImage image;          // rgba + std_error; stats: render_ms, sun, cloud_pixels,
-                             // density_evals_per_pixel (all paths of a pixel), nonfinite_pixels
+                             // density_evals_per_pixel (all paths of a pixel and the
+                             // SunDepthCache's cells, per pixel), nonfinite_pixels
   TracerCounters counters;   // over all paths
+  std::size_t sun_depth_cells = 0;       // cells of the SunDepthCache computed
+  std::uint64_t sun_depth_evals = 0;     // medium evaluations spent on them
   int spp = 0;
   // Per pixel: 1 if one of its paths exceeded tracer.max_collisions. Such a pixel stops
   // there; its value is the mean of the paths completed before (biased low: the long

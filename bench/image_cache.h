@@ -125,10 +125,11 @@ inline CachedImage reference_image(const BenchScene& s, const std::filesystem::p
 // <scene>_<W>x<H>_spp<N>_<key hash>.exr, with the standard error and the incomplete pixels.
 inline CachedImage truth_image(const BenchScene& s, const std::filesystem::path& dir, int w, int h, int spp,
                                std::uint64_t max_collisions, std::uint64_t seed = 1) {
-  const truth::TracerSettings tracer;  // the estimator's defaults (the sun-guiding gate is part of the key)
+  const truth::TracerSettings tracer;  // the estimator's defaults and revision are part of the key
   const std::string key = reference_key(s, 1) + " truth spp " + std::to_string(spp) + " cap " +
                           std::to_string(max_collisions) + (seed == 1 ? "" : " seed " + std::to_string(seed)) +
-                          " guide " + std::to_string(tracer.guide_depth) + " cell " + std::to_string(tracer.guide_cell_m);
+                          " estimator " + std::to_string(truth::kEstimatorRevision) + " guide " +
+                          std::to_string(tracer.guide_depth) + " cell " + std::to_string(tracer.guide_cell_m);
   const std::filesystem::path file = dir / (slug(s.name) + "_" + std::to_string(w) + "x" + std::to_string(h) + "_spp" +
                                             std::to_string(spp) + "_" + key_hash(key) + ".exr");
   return cached_render(file, key, w, h, [&] {

@@ -8,7 +8,9 @@
 //
 // Usage: truth_scene_probe [--scenes random:2026:32] [--scene 8] [--size 16x9] [--spp 32]
 //          [--max-collisions 20000] [--guiding 0.3] [--max-copies 64] [--seed 1]
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <limits>
 
@@ -17,6 +19,7 @@
 #include "bench/bench_scenes.h"
 #include "bench/bench_util.h"
 #include "bench/truth_command.h"
+#include "renderer/reference/reference_scene.h"
 #include "renderer/truth/truth_renderer.h"
 
 int main(int argc, char** argv) {
@@ -68,6 +71,17 @@ int main(int argc, char** argv) {
               static_cast<double>(k.scattering_events) / paths, static_cast<double>(k.copies) / paths,
               static_cast<unsigned long long>(k.lost_paths), static_cast<unsigned long long>(k.camera_paths),
               t.incomplete_pixels, static_cast<long long>(img.stats.cloud_pixels), noise);
+  {
+    // Where the sun is: the droplets' forward peak about it (~0.5 deg) is the brightest part
+    // of a view through thin cloud towards it.
+    const reference::ReferenceScene rs = reference::make_reference_scene(s.view, s.weather);
+    double nearest = 180.0;
+    for (int y = 0; y < img.height; ++y)
+      for (int x = 0; x < img.width; ++x)
+        nearest = std::min(nearest, glm::degrees(std::acos(std::clamp(
+                                        glm::dot(rs.camera.ray_at(x + 0.5, y + 0.5), rs.sun_local), -1.0, 1.0))));
+    std::printf("  sun: elevation %.1f deg, %.1f deg from the nearest pixel centre\n", rs.sun_elevation_deg, nearest);
+  }
   std::printf("  sun-depth gate: %zu cells, %.0f evaluations per cell, %.1f %% of the evaluations\n", t.sun_depth_cells,
               static_cast<double>(t.sun_depth_evals) / static_cast<double>(std::max<std::size_t>(1, t.sun_depth_cells)),
               100.0 * static_cast<double>(t.sun_depth_evals) /

@@ -290,6 +290,38 @@ TEST(TruthTracer, ThickSlabUnderALowSunMatchesTheSlabMonteCarlo) {
   EXPECT_EQ(e.counters.lost_paths, 0u);
 }
 
+// Haze under a thin cloud, lit by the sun: a path scattered by the aerosol towards the sun
+// meets the cloud, where the droplets' forward peak multiplies its next events ~1e3-fold,
+// so air vertices below the clouds make sun-guided copies too. Guided and unguided
+// estimators are both unbiased: they must agree. Measured standard errors at 100 000
+// paths: unguided 0.0026, copies from cloud vertices only 0.0018, from haze vertices too
+// 0.0002.
+TEST(TruthTracer, GuidedCopiesFromHazeBelowACloudAgreeWithPlainTransport) {
+  struct HazeUnderCloud final : TruthMedium {
+    void at(const glm::dvec3&, double alt, MediumPoint& out) const override {
+      if (alt < 2000.0) out.aerosol = 2e-4;              // haze, optical depth 0.4
+      if (alt > 2000.0 && alt < 2100.0) out.cloud[0] = 0.01;  // cloud, optical depth 1
+    }
+  } medium;
+  TruthWorld w = banded_world({0.0, 2000.0, 2100.0, 5000.0}, {2e-4 * (1 + 1e-9), 0.01 * (1 + 1e-9), 0.0}, 1e9);
+  w.band_air_majorant = {2e-4 * (1 + 1e-9), 0.0, 0.0};
+  w.sun = model::sun_direction(30.0);
+  w.sun_irradiance = glm::dvec3(1.0);
+  w.sun_angular_radius_rad = kSunRadius;
+  w.cloud_phase[0] = model::jdd_params(14.0);
+  w.medium = &medium;
+  // From inside the haze, looking up 20 deg, away from the sun's azimuth.
+  const glm::dvec3 x(0.0, 0.0, w.radius_m + 500.0);
+  const glm::dvec3 view = glm::normalize(glm::dvec3(-std::cos(20.0 * kPi / 180.0), 0.0, std::sin(20.0 * kPi / 180.0)));
+  TracerSettings plain;
+  plain.sun_guiding = 0.0;
+  const RadianceEstimate g = estimate_radiance(w, {}, x, view, 100000, 23);
+  const RadianceEstimate p = estimate_radiance(w, plain, x, view, 100000, 29);
+  expect_agree(g.mean.g, g.std_error.g, p.mean.g, p.std_error.g, 0.03, "haze under cloud, guided vs plain");
+  EXPECT_GT(g.counters.copies, 0u);
+  EXPECT_LT(g.std_error.g, 0.25 * p.std_error.g);
+}
+
 // The sun depth a copy is gated on: in a homogeneous slab, sigma times the slant path from
 // the cell's corner nearest the sun to the slab's top (to within the quadrature's unit
 // steps), capped; the cap in the planet's shadow; the same cell gives the same value

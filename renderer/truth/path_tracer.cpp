@@ -37,6 +37,8 @@ PathTracer::PathTracer(const TruthWorld& world, const TracerSettings& settings, 
   disk_ = sun_on_ && sun_solid_angle_ > 0.0;
   if (disk_) sun_radiance_ = world.sun_irradiance / sun_solid_angle_;
   for (const model::JdDParams& p : world.cloud_phase) guide_g_ = std::max(guide_g_, p.g_hg);
+  for (std::size_t b = 0; b < world.band_majorant.size(); ++b)
+    if (world.band_majorant[b] > world.band_air_majorant[b]) cloud_top_m_ = world.band_edges[b + 1];
 }
 
 void PathTracer::medium_at(const glm::dvec3& y, double altitude_m, double majorant, MediumPoint& m) {
@@ -96,15 +98,15 @@ glm::dvec3 PathTracer::sample_sun_direction() {
   return model::scatter_direction(world_.sun, cos_t, 2.0 * kPi * uniform());
 }
 
-double PathTracer::guiding_at(const glm::dvec3& y, const MediumPoint& m, double q) const {
-  // Only where next-event estimation runs at every tentative collision (q = 1), so that
-  // a vertex's strategies are the same for every sample, while the camera path has made
-  // fewer than max_copies copies (a function of the path's history, which the MIS
-  // weights at a vertex may depend on), and where the sun is not buried under more than
-  // guide_depth of cloud (a function of y).
-  if (!disk_ || guide_g_ <= 0.0 || settings_.sun_guiding <= 0.0 || q < 1.0 || m.cloud_total() <= 0.0 ||
-      copies_made_ >= settings_.max_copies)
-    return 0.0;
+double PathTracer::guiding_at(const glm::dvec3& y, double altitude_m, const MediumPoint& m) const {
+  // A function of the vertex and of the path's history (the copies made so far), as the
+  // MIS weights at a vertex may be: while the camera path has made fewer than max_copies
+  // copies; in cloud where the sun is not buried under more than guide_depth of cloud; in
+  // air below the highest cloud top (a path scattered there by air towards the sun may
+  // meet cloud on its way, where the forward peak would multiply its next events; above
+  // the clouds the sun's next event alone is smooth in the air's broad phase functions).
+  if (!disk_ || guide_g_ <= 0.0 || settings_.sun_guiding <= 0.0 || copies_made_ >= settings_.max_copies) return 0.0;
+  if (m.cloud_total() <= 0.0) return altitude_m < cloud_top_m_ ? settings_.sun_guiding : 0.0;
   if (std::isfinite(settings_.guide_depth) && sun_depth_.depth(y) >= settings_.guide_depth) return 0.0;
   return settings_.sun_guiding;
 }
@@ -224,11 +226,12 @@ glm::dvec3 PathTracer::trace(PathState s, std::vector<PathState>& copies, std::u
       if (t == kInfinity) break;
       if (++collisions > settings_.max_collisions) return glm::dvec3(0.0);
       const glm::dvec3 y = s.x + t * s.w;
-      medium_at(y, glm::length(y) - world_.radius_m, majorant, m);
+      const double altitude = glm::length(y) - world_.radius_m;
+      medium_at(y, altitude, majorant, m);
       const glm::dvec3 scattering = m.scattering();
       const double s_max = max3(scattering);
       const double q = s_max > 0.0 ? std::min(1.0, settings_.nee_boost * s_max / majorant) : 0.0;
-      const double guiding = guiding_at(y, m, q);  // at this point, were it a real scattering
+      const double guiding = guiding_at(y, altitude, m);  // at this point, were it a real scattering
       if (sun_on_ && s.order + 1 <= settings_.max_order && q > 0.0 && (q >= 1.0 || uniform() < q)) {
         const Contribution kind = q < 1.0                 ? Contribution::NextEventThin
                                   : m.cloud_total() <= 0.0 ? Contribution::NextEventAir

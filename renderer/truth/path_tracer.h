@@ -26,17 +26,19 @@
 //   - sun-guided copies (the droplets' forward peak, g_HG ~ 0.99 and ~0.5 deg wide, makes
 //     (A) heavy-tailed: a path whose direction happens to lie within the peak about the
 //     sun multiplies the sun by p ~ 1e3 /sr; detector-directional importance sampling of
-//     Buras & Mayer 2011, JQSRT 112, 434, turned towards the sun): at a real scattering on
-//     a cloud component, with probability sun_guiding, a copy of the path is made whose
+//     Buras & Mayer 2011, JQSRT 112, 434, turned towards the sun): at a real scattering
+//     (in cloud, or in air below the clouds' top), with probability sun_guiding, a copy of
+//     the path is made whose
 //     direction is drawn from a Henyey-Greenstein lobe h about the sun (g = the largest
 //     cloud g_HG). Path and copy are the two samples of a multi-sample MIS of everything
 //     arriving at the vertex (balance heuristic, densities p and sun_guiding h): both
 //     continue with weight beta f / (s (p + sun_guiding h)), which is <= the plain
 //     weight, so nothing grows over the thousands of scatterings inside a thick cloud.
-//     Copies are paths like the camera's (they make copies too). A vertex guides only
-//     where the sun may be seen: its cell's cloud optical depth towards the sun
+//     Copies are paths like the camera's (they make copies too). A cloud vertex guides
+//     only where the sun may be seen: its cell's cloud optical depth towards the sun
 //     (SunDepthCache, a deterministic function of the position) is below guide_depth;
-//     and only until the camera path has made max_copies (a rule of the path's history).
+//     an air vertex only below the highest cloud top; and only until the camera path has
+//     made max_copies (a rule of the path's history).
 //     Both are functions of the vertex and the path's history, which the MIS weights may
 //     depend on, so neither biases the estimate. (B) counts both directions' densities;
 //     measured on a slab of optical depth 4 (sun 60 deg, view up from below) the
@@ -59,6 +61,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -69,10 +72,15 @@
 
 namespace cloudsvc::truth {
 
+// Revision of the estimator's sampling rules (not of its settings): raised whenever a change
+// makes the same settings and seed draw other paths, so that caches of truth images
+// (bench/image_cache.h) are recomputed.
+inline constexpr int kEstimatorRevision = 2;  // 2: sun-guided copies gated by sun depth, and from air below the clouds
+
 struct TracerSettings {
   double camera_air_scale = 8.0;  // >= 1
   double nee_boost = 16.0;        // > 0
-  double sun_guiding = 0.3;       // probability of a sun-guided copy at a cloud scattering, [0, 1)
+  double sun_guiding = 0.3;       // probability of a sun-guided copy at a scattering that may guide, [0, 1)
   int max_copies = 64;            // per camera path; beyond it no vertex makes copies
   // Copies only where the cloud optical depth towards the sun (SunDepthCache, cells of
   // guide_cell_m) is below guide_depth; infinity = everywhere.
@@ -203,7 +211,7 @@ class PathTracer {
   double phase_pdf(const MediumPoint& m, const glm::dvec3& beta, double nu) const;  // 1/sr
   glm::dvec3 sample_phase(const MediumPoint& m, const glm::dvec3& beta, double s_bar, const glm::dvec3& w);
   glm::dvec3 sample_sun_direction();  // uniform over the sun's disk
-  double guiding_at(const glm::dvec3& y, const MediumPoint& m, double q) const;
+  double guiding_at(const glm::dvec3& y, double altitude_m, const MediumPoint& m) const;
   // Next-event estimate (A) at a tentative collision (the caller has drawn it with
   // probability q): the sun's contribution scattered at y towards -w, MIS-weighted
   // against (B) when the path continues from a real collision there (a guided copy does
@@ -222,6 +230,7 @@ class PathTracer {
   glm::dvec3 sun_radiance_{0.0};  // E_sun / Omega
   double sun_cos_radius_ = 1.0, sun_solid_angle_ = 0.0;
   double guide_g_ = 0.0;
+  double cloud_top_m_ = -std::numeric_limits<double>::infinity();  // top of the highest band with a cloud part in its majorant
   int copies_made_ = 0;  // by the current camera path
 };
 

@@ -1,6 +1,6 @@
 // Spread of the ground truth's per-path radiance estimates in a homogeneous slab, without
-// sun-guided copies, with copies at any depth and with copies where the sun is less than
-// TracerSettings::guide_depth deep (docs/TRUTH.md, "The estimator"): mean, standard deviation,
+// sun-guided copies, with copies at any depth (at most 64 per camera path) and with the
+// default copies (where the sun is less than TracerSettings::guide_depth deep) (docs/TRUTH.md, "The estimator"): mean, standard deviation,
 // quantiles, the largest paths and the work per path, so that the variance reduction per
 // unit of work can be read off; and the slab Monte Carlo's answer for the same view
 // (renderer/model/slab_monte_carlo.h, 10^6 photons).
@@ -107,8 +107,9 @@ int main(int argc, char** argv) {
   truth::TracerSettings plain = gated;
   plain.sun_guiding = 0.0;
   report("no copies", w, plain, paths);
-  truth::TracerSettings everywhere = gated;
+  truth::TracerSettings everywhere = gated;  // the estimator before the gate: copies at any depth, at most 64
   everywhere.guide_depth = std::numeric_limits<double>::infinity();
+  everywhere.max_copies = 64;
   report("copies anywhere", w, everywhere, paths);
   char label[64];
   std::snprintf(label, sizeof label, "copies, depth<%g", gated.guide_depth);

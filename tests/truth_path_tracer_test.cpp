@@ -322,9 +322,30 @@ TEST(TruthTracer, GuidedCopiesFromHazeBelowACloudAgreeWithPlainTransport) {
   EXPECT_LT(g.std_error.g, 0.25 * p.std_error.g);
 }
 
+// Snow under a thin cloud: a path the ground reflects towards the sun meets the cloud, where
+// the forward peak multiplies its next events, so ground bounces make sun-guided copies too.
+// Guided and plain transport must agree. Measured standard errors at 100 000 paths:
+// unguided 0.0045, copies from the cloud and air only 0.0034, from the ground too 0.0006.
+TEST(TruthTracer, GuidedCopiesFromSnowBelowACloudAgreeWithPlainTransport) {
+  HomogeneousLayer medium;
+  medium.base = 2000.0;
+  medium.top = 2100.0;
+  medium.sigma = 0.01;  // optical depth 1
+  TruthWorld w = slab_world(medium, 30.0, 14.0, kSunRadius);
+  w.ground_albedo = glm::dvec3(0.8);
+  const glm::dvec3 x(0.0, 0.0, w.radius_m + 1000.0);
+  const glm::dvec3 view = glm::normalize(glm::dvec3(-std::cos(20.0 * kPi / 180.0), 0.0, std::sin(20.0 * kPi / 180.0)));
+  TracerSettings plain;
+  plain.sun_guiding = 0.0;
+  const RadianceEstimate g = estimate_radiance(w, {}, x, view, 100000, 31);
+  const RadianceEstimate p = estimate_radiance(w, plain, x, view, 100000, 37);
+  expect_agree(g.mean.g, g.std_error.g, p.mean.g, p.std_error.g, 0.03, "snow under cloud, guided vs plain");
+  EXPECT_LT(g.std_error.g, 0.25 * p.std_error.g);
+}
+
 // The sun depth a copy is gated on: in a homogeneous slab, sigma times the slant path from
 // the cell's corner nearest the sun to the slab's top (to within the quadrature's unit
-// steps), capped; the cap in the planet's shadow; the same cell gives the same value
+// steps), capped; below a thin layer, the layer's slant depth; the cap in the planet's shadow; the same cell gives the same value
 // whichever thread asks first.
 TEST(TruthSunDepth, IsTheSlantOpticalDepthFromTheCellsSunwardCorner) {
   HomogeneousLayer medium;
@@ -345,6 +366,16 @@ TEST(TruthSunDepth, IsTheSlantOpticalDepthFromTheCellsSunwardCorner) {
       const double expected = std::min(cap, medium.sigma * below_top / w.sun.z);
       EXPECT_NEAR(cache.depth(y), expected, 1.0) << "sun zenith " << sun_zenith << ", altitude " << alt;
     }
+  }
+  // Below a thin layer (optical depth 2) across clear air: the clear stretch adds nothing.
+  HomogeneousLayer thin;
+  thin.base = 1000.0;
+  thin.top = 1040.0;
+  thin.sigma = 0.05;
+  for (double sun_zenith : {0.0, 60.0}) {
+    const TruthWorld w = slab_world(thin, sun_zenith, 14.0, kSunRadius);
+    const SunDepthCache cache(w, cell, cap);
+    EXPECT_NEAR(cache.depth(glm::dvec3(0.0, 0.0, w.radius_m + 300.0)), 2.0 / w.sun.z, 1.0) << sun_zenith;
   }
   // Sun below the horizon: every ray towards it from the slab meets the ground.
   TruthWorld night = slab_world(medium, 0.0, 14.0, kSunRadius);

@@ -111,6 +111,14 @@ double PathTracer::guiding_at(const glm::dvec3& y, double altitude_m, const Medi
   return settings_.sun_guiding;
 }
 
+double PathTracer::ground_guiding_at(const glm::dvec3& n, const glm::dvec3& y) const {
+  if (!disk_ || guide_g_ <= 0.0 || settings_.sun_guiding <= 0.0 || copies_made_ >= settings_.max_copies ||
+      glm::dot(n, world_.sun) <= 0.0 || !(world_.ground_albedo.x + world_.ground_albedo.y + world_.ground_albedo.z > 0.0))
+    return 0.0;
+  if (std::isfinite(settings_.guide_depth) && sun_depth_.depth(y) >= settings_.guide_depth) return 0.0;
+  return settings_.sun_guiding;
+}
+
 double PathTracer::direction_density(const Vertex& v, const glm::dvec3& w_out) const {
   const double p = phase_pdf(v.medium, v.beta, glm::dot(v.w_in, w_out));
   return v.guiding > 0.0 ? p + v.guiding * model::hg_phase(glm::dot(w_out, world_.sun), guide_g_) : p;
@@ -142,13 +150,19 @@ glm::dvec3 PathTracer::sun_at_collision(const glm::dvec3& y, const glm::dvec3& w
   return beta * world_.sun_irradiance * scattering_kernel(m, nu) * transmittance(y, wl) * (mis / (majorant * q));
 }
 
-glm::dvec3 PathTracer::sun_at_ground(const glm::dvec3& n, const glm::dvec3& y, const glm::dvec3& beta,
+double PathTracer::ground_density(const glm::dvec3& n, double guiding, const glm::dvec3& w_out) const {
+  const double cosine = std::max(0.0, glm::dot(n, w_out)) / kPi;
+  return guiding > 0.0 ? cosine + guiding * model::hg_phase(glm::dot(w_out, world_.sun), guide_g_) : cosine;
+}
+
+glm::dvec3 PathTracer::sun_at_ground(const glm::dvec3& n, const glm::dvec3& y, double guiding, const glm::dvec3& beta,
                                      bool path_continues) {
   const glm::dvec3 wl = disk_ ? sample_sun_direction() : world_.sun;
   const double mu = glm::dot(n, wl);
   if (mu <= 0.0) return glm::dvec3(0.0);
-  const double mis =
-      disk_ && path_continues ? (1.0 / sun_solid_angle_) / (1.0 / sun_solid_angle_ + mu / kPi) : 1.0;
+  const double mis = disk_ && path_continues
+                         ? (1.0 / sun_solid_angle_) / (1.0 / sun_solid_angle_ + ground_density(n, guiding, wl))
+                         : 1.0;
   return beta * world_.ground_albedo / kPi * world_.sun_irradiance * mu * transmittance(y, wl) * mis;
 }
 
@@ -290,8 +304,8 @@ glm::dvec3 PathTracer::trace(PathState s, std::vector<PathState>& copies, std::u
           } else if (s.vertex == VertexKind::Medium) {
             add(L, Contribution::SunEscape, s.beta * sun_radiance_ * escape_weight(s.last, s.w));
           } else {  // after a ground bounce: MIS against the ground's next event
-            const double cosine = std::max(0.0, glm::dot(s.last_normal, s.w)) / kPi;
-            add(L, Contribution::SunEscape, s.beta * sun_radiance_ * (cosine / (cosine + 1.0 / sun_solid_angle_)));
+            const double d = ground_density(s.last_normal, s.last.guiding, s.w);
+            add(L, Contribution::SunEscape, s.beta * sun_radiance_ * (d / (d + 1.0 / sun_solid_angle_)));
           }
         }
         return L;
@@ -299,15 +313,36 @@ glm::dvec3 PathTracer::trace(PathState s, std::vector<PathState>& copies, std::u
       // The ground: lift the hit point 1 mm so the bounce starts above the sphere.
       const glm::dvec3 n = glm::normalize(s.x + walk.distance() * s.w);
       const glm::dvec3 y = n * (world_.radius_m + world_.ground_alt_m + 1e-3);
+      // Sun-guided copies as at a medium vertex (the sun above the ground's horizon and not
+      // buried in cloud): the cosine-weighted bounce and the copy's sun lobe are the two
+      // samples of a multi-sample MIS, both weighted albedo (cos / pi) / (cos / pi + guiding h).
+      const double guiding = ground_guiding_at(n, y);
       if (sun_on_ && s.order + 1 <= settings_.max_order)
-        add(L, Contribution::GroundNextEvent, sun_at_ground(n, y, s.beta, continues));
+        add(L, Contribution::GroundNextEvent, sun_at_ground(n, y, guiding, s.beta, continues));
       s.vertex = VertexKind::Ground;
       s.last_normal = n;
-      s.beta *= world_.ground_albedo;
+      s.last.guiding = guiding;
+      const glm::dvec3 beta_in = s.beta;
       ++counters_.scattering_events;
-      if (++s.order >= settings_.max_order || max3(s.beta) <= 0.0) return L;
+      if (++s.order >= settings_.max_order || max3(beta_in * world_.ground_albedo) <= 0.0) return L;
       const double u1 = uniform();
-      s.w = model::scatter_direction(n, std::sqrt(u1), 2.0 * kPi * uniform());  // cosine-weighted
+      const glm::dvec3 w_new = model::scatter_direction(n, std::sqrt(u1), 2.0 * kPi * uniform());  // cosine-weighted
+      const double cos_new = glm::dot(n, w_new) / kPi;
+      s.beta = beta_in * world_.ground_albedo * (cos_new / ground_density(n, guiding, w_new));
+      if (guiding > 0.0 && uniform() < guiding) {
+        const glm::dvec3 wc = model::scatter_direction(world_.sun, model::sample_hg_cos_theta(guide_g_, uniform()),
+                                                       2.0 * kPi * uniform());
+        const double cos_c = glm::dot(n, wc) / kPi;
+        if (cos_c > 0.0) {  // a lobe direction into the ground reflects nothing
+          ++copies_made_;
+          PathState copy = s;
+          copy.w = wc;
+          copy.x = y;
+          copy.beta = beta_in * world_.ground_albedo * (cos_c / ground_density(n, guiding, wc));
+          copies.push_back(copy);
+        }
+      }
+      s.w = w_new;
       s.x = y;
     }
     // Russian roulette on the path's importance: its weight, times how much the forward

@@ -27,8 +27,8 @@
 //     (A) heavy-tailed: a path whose direction happens to lie within the peak about the
 //     sun multiplies the sun by p ~ 1e3 /sr; detector-directional importance sampling of
 //     Buras & Mayer 2011, JQSRT 112, 434, turned towards the sun): at a real scattering
-//     (in cloud, or in air below the clouds' top), with probability sun_guiding, a copy of
-//     the path is made whose
+//     (in cloud, or in air below the clouds' top; ground bounces below), with probability
+//     sun_guiding, a copy of the path is made whose
 //     direction is drawn from a Henyey-Greenstein lobe h about the sun (g = the largest
 //     cloud g_HG). Path and copy are the two samples of a multi-sample MIS of everything
 //     arriving at the vertex (balance heuristic, densities p and sun_guiding h): both
@@ -48,8 +48,9 @@
 //   - sun transmittance by ratio tracking (Novak et al. 2018, §4.3), 0 when the ray hits
 //     the ground (the planet's shadow), with Russian roulette below shadow_roulette;
 //   - ground: Lambertian; next event albedo / pi (n . w_sun) L_sun T_sun over the disk
-//     (MIS against the cosine-weighted bounce), then a cosine-weighted bounce with
-//     beta *= albedo;
+//     (MIS against the bounce), then a cosine-weighted bounce with beta *= albedo, and where
+//     the sun is above the ground's horizon and not buried in cloud a sun-guided copy as at
+//     a medium vertex (both weighted albedo (cos / pi) / (cos / pi + sun_guiding h));
 //   - escape through the top: beta times the sky radiance; an unscattered camera ray
 //     inside the disk adds beta L_sun (the disk the model draws);
 //   - Russian roulette on the path once its importance, max_c beta_c times
@@ -75,13 +76,13 @@ namespace cloudsvc::truth {
 // Revision of the estimator's sampling rules (not of its settings): raised whenever a change
 // makes the same settings and seed draw other paths, so that caches of truth images
 // (bench/image_cache.h) are recomputed.
-inline constexpr int kEstimatorRevision = 2;  // 2: sun-guided copies gated by sun depth, and from air below the clouds
+inline constexpr int kEstimatorRevision = 3;  // 3: sun-guided copies gated by sun depth, and from air below the clouds and the ground
 
 struct TracerSettings {
   double camera_air_scale = 8.0;  // >= 1
   double nee_boost = 16.0;        // > 0
   double sun_guiding = 0.3;       // probability of a sun-guided copy at a scattering that may guide, [0, 1)
-  int max_copies = 64;            // per camera path; beyond it no vertex makes copies
+  int max_copies = 1024;          // per camera path; beyond it no vertex makes copies (a bound on the work)
   // Copies only where the cloud optical depth towards the sun (SunDepthCache, cells of
   // guide_cell_m) is below guide_depth; infinity = everywhere.
   double guide_depth = 8.0;
@@ -190,8 +191,8 @@ class PathTracer {
     glm::dvec3 x{0.0}, w{0.0}, beta{1.0};
     int order = 0;
     VertexKind vertex = VertexKind::None;  // of the last scattering
-    Vertex last;
-    glm::dvec3 last_normal{0.0};
+    Vertex last;                   // of the last medium scattering; after a ground bounce only its guiding
+    glm::dvec3 last_normal{0.0};   // of the last ground bounce
   };
   glm::dvec3 trace(PathState s, std::vector<PathState>& copies, std::uint64_t& collisions);
   // Weights of a sample leaving vertex v in direction w_out.
@@ -219,7 +220,12 @@ class PathTracer {
   glm::dvec3 sun_at_collision(const glm::dvec3& y, const glm::dvec3& w, const MediumPoint& m, double majorant,
                               double q, double guiding, const glm::dvec3& beta, bool path_continues);
   // ... at a ground point with normal n (MIS against the cosine-weighted bounce's escape).
-  glm::dvec3 sun_at_ground(const glm::dvec3& n, const glm::dvec3& y, const glm::dvec3& beta, bool path_continues);
+  glm::dvec3 sun_at_ground(const glm::dvec3& n, const glm::dvec3& y, double guiding, const glm::dvec3& beta,
+                           bool path_continues);
+  // Sun guiding at a ground point y with normal n (the sun above its horizon, not buried in
+  // cloud), and the density of the directions leaving it: cos / pi + guiding h, 1/sr.
+  double ground_guiding_at(const glm::dvec3& n, const glm::dvec3& y) const;
+  double ground_density(const glm::dvec3& n, double guiding, const glm::dvec3& w_out) const;
 
   const TruthWorld& world_;
   const TracerSettings& settings_;

@@ -1,6 +1,7 @@
 // Cloud optical depth towards the sun per grid cell (see sun_depth_cache.h).
 #include "renderer/truth/sun_depth_cache.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -69,7 +70,9 @@ double SunDepthCache::compute(const Cell& c) const {
     m = MediumPoint{};
     world_.medium->at(y, glm::length(y) - world_.radius_m, m);
     ++evals;
-    tau += m.cloud_total() * (t - t_prev);  // right-point rule over the step
+    // Right-point rule over the step's last stretch: advance() skips stretches whose
+    // majorant is zero, which hold no cloud.
+    tau += m.cloud_total() * std::min(t - t_prev, 1.0 / majorant);
     t_prev = t;
     if (tau >= cap_) {
       result = cap_;

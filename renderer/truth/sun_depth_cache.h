@@ -13,8 +13,8 @@
 // The depth of a cell is a quadrature of the cloud extinction (MediumPoint::cloud, 1/m)
 // along the sun ray from the cell's corner nearest the sun (so that a cell's depth is about
 // the smallest of its points'), in steps of one unit
-// of majorant optical depth (BandWalker; the cloud's clear stretches cost nothing where the
-// world's local majorant is zero), until the ray leaves the top (the sum), reaches the
+// of majorant optical depth (BandWalker; stretches whose majorant is zero, clear of cloud,
+// cost nothing and add nothing), until the ray leaves the top (the sum), reaches the
 // depth `cap` (cap) or hits the ground (cap: the planet's shadow). A quadrature that
 // would need more than kMaxSteps evaluations stops with the sum so far (an under-estimate:
 // more guiding, never less).

@@ -98,6 +98,14 @@ glm::dvec3 PathTracer::sample_sun_direction() {
   return model::scatter_direction(world_.sun, cos_t, 2.0 * kPi * uniform());
 }
 
+bool PathTracer::copies_allowed() const {
+  return disk_ && guide_g_ > 0.0 && settings_.sun_guiding > 0.0 && copies_made_ < settings_.max_copies;
+}
+
+bool PathTracer::sun_shallow(const glm::dvec3& y) const {
+  return !std::isfinite(settings_.guide_depth) || sun_depth_.depth(y) < settings_.guide_depth;
+}
+
 double PathTracer::guiding_at(const glm::dvec3& y, double altitude_m, const MediumPoint& m) const {
   // A function of the vertex and of the path's history (the copies made so far), as the
   // MIS weights at a vertex may be: while the camera path has made fewer than max_copies
@@ -105,18 +113,14 @@ double PathTracer::guiding_at(const glm::dvec3& y, double altitude_m, const Medi
   // air below the highest cloud top (a path scattered there by air towards the sun may
   // meet cloud on its way, where the forward peak would multiply its next events; above
   // the clouds the sun's next event alone is smooth in the air's broad phase functions).
-  if (!disk_ || guide_g_ <= 0.0 || settings_.sun_guiding <= 0.0 || copies_made_ >= settings_.max_copies) return 0.0;
+  if (!copies_allowed()) return 0.0;
   if (m.cloud_total() <= 0.0) return altitude_m < cloud_top_m_ ? settings_.sun_guiding : 0.0;
-  if (std::isfinite(settings_.guide_depth) && sun_depth_.depth(y) >= settings_.guide_depth) return 0.0;
-  return settings_.sun_guiding;
+  return sun_shallow(y) ? settings_.sun_guiding : 0.0;
 }
 
 double PathTracer::ground_guiding_at(const glm::dvec3& n, const glm::dvec3& y) const {
-  if (!disk_ || guide_g_ <= 0.0 || settings_.sun_guiding <= 0.0 || copies_made_ >= settings_.max_copies ||
-      glm::dot(n, world_.sun) <= 0.0 || !(world_.ground_albedo.x + world_.ground_albedo.y + world_.ground_albedo.z > 0.0))
-    return 0.0;
-  if (std::isfinite(settings_.guide_depth) && sun_depth_.depth(y) >= settings_.guide_depth) return 0.0;
-  return settings_.sun_guiding;
+  if (!copies_allowed() || glm::dot(n, world_.sun) <= 0.0 || max3(world_.ground_albedo) <= 0.0) return 0.0;
+  return sun_shallow(y) ? settings_.sun_guiding : 0.0;
 }
 
 double PathTracer::direction_density(const Vertex& v, const glm::dvec3& w_out) const {

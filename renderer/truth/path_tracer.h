@@ -212,6 +212,8 @@ class PathTracer {
   double phase_pdf(const MediumPoint& m, const glm::dvec3& beta, double nu) const;  // 1/sr
   glm::dvec3 sample_phase(const MediumPoint& m, const glm::dvec3& beta, double s_bar, const glm::dvec3& w);
   glm::dvec3 sample_sun_direction();  // uniform over the sun's disk
+  bool copies_allowed() const;                 // a disk sun, cloud phases, copies left
+  bool sun_shallow(const glm::dvec3& y) const;  // y's cloud depth towards the sun < guide_depth
   double guiding_at(const glm::dvec3& y, double altitude_m, const MediumPoint& m) const;
   // Next-event estimate (A) at a tentative collision (the caller has drawn it with
   // probability q): the sun's contribution scattered at y towards -w, MIS-weighted

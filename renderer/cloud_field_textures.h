@@ -13,6 +13,7 @@
 
 #include "renderer/frame_uniforms_packing.h"
 #include "renderer/gl/gl_objects.h"
+#include "renderer/model/mie_phase_table.h"
 #include "weather/weather_timeline.h"
 
 namespace cloudsvc {
@@ -28,6 +29,14 @@ struct RendererConfig {
   // their shader path is cheap enough on llvmpipe and the default preset's accuracy on them
   // is at its floors (docs/MORPHOLOGY.md, "Domes in the renderer and the reference").
   bool cumulus_domes = false;
+  // The layers' phase function: the Jendersie & d'Eon fit (grey) or the droplets'
+  // tabulated Mie phase function per wavelength, with the glory and the fogbow
+  // (renderer/model/mie_phase_table.h, renderer/cloud_phase_texture.h).
+  model::CloudPhaseModel cloud_phase = model::CloudPhaseModel::kFit;
+  // With kMie: whether a frame waits for a new droplet diameter's table (true: files and
+  // tests show the Mie phase from the first frame) or draws the fit until it is ready
+  // (false: the service, whose frames must not stall; renderer/cloud_phase_texture.h).
+  bool wait_for_phase_tables = true;
 };
 
 class CloudFieldTextures {

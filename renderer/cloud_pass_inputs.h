@@ -6,6 +6,7 @@
 
 #include "renderer/atmosphere_luts.h"
 #include "renderer/cloud_field_textures.h"
+#include "renderer/cloud_phase_texture.h"
 #include "renderer/density_programs.h"
 #include "renderer/dome_field.h"
 #include "renderer/frame_buffers.h"
@@ -22,6 +23,9 @@ struct CloudPassInputs {
   // The quality's marches leave llvmpipe's loop budget for the dome sub-grid's loop
   // (density_loops_fit, renderer/density_programs.h).
   bool density_loops = false;
+  // The layers' Mie phase tables, where the renderer scatters with them
+  // (RendererConfig::cloud_phase; renderer/cloud_phase_texture.h).
+  const CloudPhaseTexture* phase = nullptr;
 
   // Binds the density program variant for this frame (before bind()).
   void use(const DensityPrograms& programs) const { programs.use(domes != nullptr, density_loops); }
@@ -31,6 +35,7 @@ struct CloudPassInputs {
     field.bind();
     atmosphere.bind_lookups();
     if (domes) domes->bind();
+    if (phase) phase->bind();
   }
 };
 

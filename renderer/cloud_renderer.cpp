@@ -19,8 +19,10 @@ enum TimedPass { kLutsPass = 0, kMarchPass = 1, kResolvePass = 2, kCompositePass
 
 CloudRenderer::CloudRenderer(const RendererConfig& config)
     : config_(config),
-      field_(config) {
+      field_(config),
+      march_(config.cloud_phase) {
   if (config.cumulus_domes) domes_ = std::make_unique<DomeField>();
+  if (config.cloud_phase == model::CloudPhaseModel::kMie) phase_ = std::make_unique<CloudPhaseTexture>(config.wait_for_phase_tables);
   set_weather(weather::Weather{});
 }
 
@@ -137,8 +139,9 @@ FrameImage CloudRenderer::render(const ViewRequest& view, const RenderQuality& q
     field_.bind();  // the ring fill reads the weather map
     domes_->update(frame, weather_, weather_generation_, uniforms);
   }
+  if (phase_) phase_->update(frame);
   const CloudPassInputs inputs{frame_buffers_, field_, atmosphere_, draws_domes ? domes_.get() : nullptr,
-                               density_loops_fit(quality)};
+                               density_loops_fit(quality), phase_.get()};
 
   timer_.reset();
   timer_.begin(kLutsPass);  // 2.
@@ -186,6 +189,7 @@ FrameStats CloudRenderer::frame_stats(const FrameContext& frame, const Atmospher
   s.shadow_map_rebuilt = shadow_rebuilt;
   s.layers_without_cloud_in_view = static_cast<int>(__builtin_popcount(frame.culled_mask()));
   for (int i = 0; i < frame.layer_count; ++i) s.dome_layers += frame.layers[static_cast<std::size_t>(i)].domes ? 1 : 0;
+  s.phase_tables_pending = phase_ ? phase_->pending_rows() : 0;
   s.marched_fraction = plan.stride == 0 ? 0.0 : plan.marched_fraction();
   s.gpu_memory_bytes = static_cast<std::int64_t>(field_.gpu_bytes() + AtmosphereLuts::gpu_bytes() +
                                                  GroundShadowMap::gpu_bytes() + composite_.gpu_bytes() +

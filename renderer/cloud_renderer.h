@@ -21,6 +21,7 @@
 #include "renderer/atmosphere_luts.h"
 #include "renderer/cloud_buffer.h"
 #include "renderer/cloud_field_textures.h"
+#include "renderer/cloud_phase_texture.h"
 #include "renderer/dome_field.h"
 #include "renderer/cloud_march_pass.h"
 #include "renderer/cloud_resolve_pass.h"
@@ -78,6 +79,7 @@ class CloudRenderer {
 
   CloudFieldTextures field_;
   std::unique_ptr<DomeField> domes_;  // config_.cumulus_domes only
+  std::unique_ptr<CloudPhaseTexture> phase_;  // config_.cloud_phase == kMie only
   FrameBuffers frame_buffers_;
   AtmosphereLuts atmosphere_;
   GroundShadowMap shadow_map_;

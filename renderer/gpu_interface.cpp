@@ -6,6 +6,7 @@
 
 #include "renderer/api/frame_image.h"
 #include "renderer/model/atmosphere_constants.h"
+#include "renderer/model/mie_phase_table.h"
 #include "renderer/model/scene_constants.h"
 
 namespace cloudsvc::gpu {
@@ -55,6 +56,14 @@ std::string make_preamble() {
   s << "const float NIGHT_SKY_RADIANCE = " << glsl_float(m::kNightSkyRadiance) << ";\n";
   s << "const float LIGHT_MARCH_REACH_M = " << glsl_float(m::kLightMarchReach_m) << ";\n";
   s << "const float TWO_STREAM_MEAN_COSINE = " << glsl_float(m::kTwoStreamMeanCosine) << ";\n";
+  // the Mie phase table's angle grid (renderer/model/mie_phase_table.h)
+  s << "#define PHASE_TABLE_SAMPLES " << m::kPhaseTableSamples << '\n';
+  s << "#define PHASE_TABLE_FORWARD_INTERVALS " << m::kPhaseTableForwardIntervals << '\n';
+  s << "const float PHASE_TABLE_FORWARD_END_DEG = " << glsl_float(m::kPhaseTableForwardEndDeg) << ";\n";
+  s << "const float PHASE_TABLE_REAR_PER_DEG = "
+    << glsl_float(m::kPhaseTableRearIntervals / (180.0 - m::kPhaseTableForwardEndDeg)) << ";\n";
+  s << "const float PHASE_TABLE_FORWARD_PER_DEG = "
+    << glsl_float(m::kPhaseTableForwardIntervals / m::kPhaseTableForwardEndDeg) << ";\n";
 
   namespace a = model::atmosphere;
   s << "const float ATMO_BOTTOM = " << glsl_float(a::kBottomRadius) << ";\n";

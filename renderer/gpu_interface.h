@@ -39,7 +39,8 @@ namespace cloudsvc::gpu {
   X(PRESENT_FRAME, 17)     /* the frame a window shows (present.frag) */              \
   X(BASE_NOISE_MAX, 18)    /* base-noise max pyramid as mip levels (long-step probes) */ \
   X(CLOUD_DEPTH, 19)       /* ... its depth, ground-share shift, layer (composite) */ \
-  X(DOME_RINGS, 20)        /* cumulus dome rings, RG32F array (cumulus_domes.glsl) */
+  X(DOME_RINGS, 20)        /* cumulus dome rings, RG32F array (cumulus_domes.glsl) */ \
+  X(CLOUD_PHASE, 21)       /* the layers' tabulated Mie phase functions (phase_function.glsl) */
 
 // Image units: each pass binds the images it writes right before its dispatch, so outputs
 // of different passes share units. GLSL: IMG_<NAME>.

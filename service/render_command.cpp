@@ -70,6 +70,7 @@ int run_render(const RenderOptions& opt) {
     truth::TruthSettings settings;
     settings.spp = opt.spp;
     settings.seed = opt.seed;
+    settings.cloud_phase = opt.cloud_phase;
     const truth::TruthImage t = truth::render_truth(view, opt.weather, settings);
     img = t.image;
     frame_ms.push_back(img.stats.render_ms);
@@ -88,6 +89,7 @@ int run_render(const RenderOptions& opt) {
     }
     reference::ReferenceSettings settings;
     settings.cumulus_domes = opt.cumulus_domes;
+    settings.cloud_phase = opt.cloud_phase;
     for (int f = 0; f < opt.frames; ++f) {
       view.frame_index = static_cast<std::uint32_t>(f);
       img = reference::render_reference(view, opt.weather, settings);

@@ -83,6 +83,7 @@ struct RenderArgs {
   CLI::App* command = nullptr;
   std::string lat, lon, alt, heading, pitch, roll, time, fov, size, weather, out, frames, exposure;
   std::string quality, render_frames, spp, seed;  // --quality, --frames, --spp, --seed
+  std::string cloud_phase;                        // --cloud-phase
   bool window = false;
   bool cumulus_domes = false;
 };
@@ -179,6 +180,12 @@ void add_quality_flags(CLI::App& cmd, RenderArgs& args, const RenderOptions& def
                "Draw cumulus layers as individual clouds (domes over a placement with a power-law spread of "
                "sizes, docs/MORPHOLOGY.md) instead of the thresholded noise field; GPU presets and --quality "
                "reference, not truth; slower on llvmpipe (docs/MORPHOLOGY.md); default off");
+  cmd.add_option("--cloud-phase", args.cloud_phase,
+                 "Phase function of the cloud droplets: fit (Jendersie & d'Eon 2023, smooth, grey) or mie (the "
+                 "droplets' Lorenz-Mie phase function per wavelength, with the glory and the fogbow; each new "
+                 "droplet diameter costs 0.5-9 s once, docs/RENDERING.md); every quality; default " +
+                     std::string(model::cloud_phase_model_name(defaults.cloud_phase)))
+      ->type_name("MODEL");
 }
 
 void add_render_command(CLI::App& app, RenderArgs& args) {
@@ -277,6 +284,11 @@ void apply_quality(const RenderArgs& a, RenderOptions& opt) {
   if (a.cumulus_domes) {
     if (truth) fail("--quality", opt.quality, "not valid with --cumulus-domes (the path tracer draws the noise field)");
     opt.cumulus_domes = true;
+  }
+  if (given(cmd, "--cloud-phase")) {
+    const std::optional<model::CloudPhaseModel> m = model::cloud_phase_model_from_name(a.cloud_phase);
+    if (!m) fail("--cloud-phase", a.cloud_phase, "expected fit or mie");
+    opt.cloud_phase = *m;
   }
   if (given(cmd, "--spp")) {
     opt.spp = parse_integer("--spp", a.spp, 2, kMaxSpp, "paths per pixel");

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "geodesy/geodetic.h"
+#include "renderer/model/mie_phase_table.h"
 #include "service/serve_options.h"
 #include "weather/cloud_layer.h"
 
@@ -38,6 +39,7 @@ struct RenderOptions {
   bool cumulus_domes = false;                    // --cumulus-domes: cumulus layers as individual
                                                  // domes (RendererConfig::cumulus_domes; GPU
                                                  // presets and reference, not truth)
+  model::CloudPhaseModel cloud_phase = model::CloudPhaseModel::kFit;  // --cloud-phase fit|mie
 };
 
 struct DemoOptions {

@@ -213,8 +213,15 @@ RaySample march_ray(ivec2 q, vec3 dir) {
         if (max(T_atm.r, max(T_atm.g, T_atm.b)) > 0.0) {
           float tau = shadow.volume_valid != 0 ? light_volume_optical_depth(li, p, alt)
                                          : light_optical_depth(li, p, alt, sun, mu_s, light_steps_at(t, L), w, frame.light_march_cutoff_tau);
-          float s_sum = 0.0, a = 1.0, b = 1.0, c = 1.0;
-          for (int o = 0; o < frame.ms_octaves; ++o) {
+          // octave 0, single scattering: the layer's phase function (the fit, or its Mie
+          // table per wavelength); the further octaves keep the fit's smooth lobes
+#ifdef CLOUDSVC_MIE_PHASE
+          vec3 s_sum = tabulated_phase(li, cos_view_sun) * exp(-tau);
+#else
+          vec3 s_sum = vec3(cloud_phase(cos_view_sun, L.g_hg, L.g_d, L.draine_alpha, L.w_d, 1.0) * exp(-tau));
+#endif
+          float a = frame.ms_extinction_scale, b = frame.ms_energy_scale, c = frame.ms_eccentricity_scale;
+          for (int o = 1; o < frame.ms_octaves; ++o) {
             s_sum += b * cloud_phase(cos_view_sun, L.g_hg, L.g_d, L.draine_alpha, L.w_d, c) * exp(-a * tau);
             a *= frame.ms_extinction_scale; b *= frame.ms_energy_scale; c *= frame.ms_eccentricity_scale;
           }

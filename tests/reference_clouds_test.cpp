@@ -176,15 +176,21 @@ TEST(ReferenceClouds, LightMarchConverges) {
 TEST(ReferenceClouds, OctaveSumLimits) {
   const model::JdDParams p = model::jdd_params(20.0);
   // One octave, no shadow: the phase function itself.
-  EXPECT_NEAR(octave_phase_sum(p, 0.3, 0.0, 1, 0.4, 0.5, 0.6), model::jdd_phase(0.3, p), 1e-12);
+  EXPECT_NEAR(octave_phase_sum(p, nullptr, 0.3, 0.0, 1, 0.4, 0.5, 0.6).g, model::jdd_phase(0.3, p), 1e-12);
   // Three octaves, no shadow: p(g) + 0.5 p(0.6 g) + 0.25 p(0.36 g).
   const auto scaled = [&](double c) {
     return (1 - p.w_d) * model::hg_phase(-0.2, p.g_hg * c) + p.w_d * model::draine_phase(-0.2, p.g_d * c, p.alpha);
   };
-  EXPECT_NEAR(octave_phase_sum(p, -0.2, 0.0, 3, 0.4, 0.5, 0.6), scaled(1.0) + 0.5 * scaled(0.6) + 0.25 * scaled(0.36), 1e-12);
+  EXPECT_NEAR(octave_phase_sum(p, nullptr, -0.2, 0.0, 3, 0.4, 0.5, 0.6).b, scaled(1.0) + 0.5 * scaled(0.6) + 0.25 * scaled(0.36), 1e-12);
   // Deep shadow: the last octave dominates, b^2 p(c^2 g) e^{-a^2 tau}.
   const double tau = 50.0;
-  EXPECT_NEAR(octave_phase_sum(p, -0.2, tau, 3, 0.4, 0.5, 0.6) / (0.25 * scaled(0.36) * std::exp(-0.16 * tau)), 1.0, 1e-4);
+  EXPECT_NEAR(octave_phase_sum(p, nullptr, -0.2, tau, 3, 0.4, 0.5, 0.6).r / (0.25 * scaled(0.36) * std::exp(-0.16 * tau)), 1.0, 1e-4);
+  // With the Mie table: octave 0 is the table's (per wavelength), the others the fit's.
+  const std::shared_ptr<const model::PhaseTable> mie = model::mie_phase_table(10.0);
+  const glm::dvec3 with_mie = octave_phase_sum(p, mie.get(), -0.2, 0.0, 3, 0.4, 0.5, 0.6);
+  const glm::dvec3 expected = mie->at_cos(-0.2) + 0.5 * scaled(0.6) + 0.25 * scaled(0.36);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(with_mie[c], expected[c], 1e-12);
+  EXPECT_NE(with_mie.r, with_mie.b);  // the table is spectral
 }
 
 TEST(ReferenceClouds, TwoStreamDiffuseByHand) {

@@ -32,6 +32,9 @@ struct FrameStats {
   // Layers drawn as individual cumulus domes (RendererConfig::cumulus_domes; those with
   // cloud within reach). 0: the frame ran the programs without the dome path.
   int dome_layers = 0;
+  // With the Mie phase (RendererConfig::cloud_phase) and wait_for_phase_tables off: layers
+  // drawn with the fit while their droplet size's Mie table is computed.
+  int phase_tables_pending = 0;
   bool history_used = false;          // the previous frame's cloud buffer was reprojected
   bool shadow_map_rebuilt = false;    // the ground shadow map was rebuilt this frame
   double marched_fraction = 1.0;      // cloud pixels marched this frame / all cloud pixels

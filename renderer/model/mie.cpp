@@ -8,6 +8,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "common/parallel_for.h"
+
 namespace cloudsvc::model {
 
 namespace {
@@ -158,15 +160,36 @@ MieAmplitudes mie_amplitudes(const MieCoefficients& c, double mu) {
 
 // dC_sca/dOmega = (|S1|^2 + |S2|^2) / (2 k^2) and C_sca = Q_sca pi r^2, so with x = k r
 //   p = (|S1|^2 + |S2|^2) / (2 pi x^2 Q_sca).
+// The sums of mie_amplitudes for every angle at once: the series index outside, the angles
+// inside, in real arithmetic over arrays, which the compiler vectorises (a phase table of
+// ~2000 angles over ~1000 droplet sizes is ~10x faster than one angle at a time).
 std::vector<double> mie_phase(const MieCoefficients& c, double q_sca,
                               const std::vector<double>& cos_theta) {
-  std::vector<double> p(cos_theta.size());
-  const double norm = 1.0 / (2.0 * kPi * c.x * c.x * q_sca);
-  for (std::size_t j = 0; j < cos_theta.size(); ++j) {
-    const MieAmplitudes s = mie_amplitudes(c, cos_theta[j]);
-    p[j] = (std::norm(s.s1) + std::norm(s.s2)) * norm;
+  const std::size_t nj = cos_theta.size();
+  std::vector<double> pi_prev(nj, 0.0), pi_n(nj, 1.0), s1r(nj, 0.0), s1i(nj, 0.0), s2r(nj, 0.0), s2i(nj, 0.0);
+  const double* mu = cos_theta.data();
+  const std::size_t terms = c.a.size();
+  for (std::size_t i = 0; i < terms; ++i) {
+    const double n = static_cast<double>(i + 1);
+    const double f = (2.0 * n + 1.0) / (n * (n + 1.0));
+    const double ar = f * c.a[i].real(), ai = f * c.a[i].imag(), br = f * c.b[i].real(), bi = f * c.b[i].imag();
+    const double k1 = 2.0 * n + 1.0, k2 = n + 1.0, inv_n = 1.0 / n;
+    for (std::size_t j = 0; j < nj; ++j) {
+      const double p = pi_n[j], q = pi_prev[j];
+      const double tau_n = n * mu[j] * p - k2 * q;
+      s1r[j] += ar * p + br * tau_n;
+      s1i[j] += ai * p + bi * tau_n;
+      s2r[j] += ar * tau_n + br * p;
+      s2i[j] += ai * tau_n + bi * p;
+      pi_prev[j] = p;
+      pi_n[j] = (k1 * mu[j] * p - k2 * q) * inv_n;
+    }
   }
-  return p;
+  std::vector<double> out(nj);
+  const double norm = 1.0 / (2.0 * kPi * c.x * c.x * q_sca);
+  for (std::size_t j = 0; j < nj; ++j)
+    out[j] = (s1r[j] * s1r[j] + s1i[j] * s1i[j] + s2r[j] * s2r[j] + s2i[j] * s2i[j]) * norm;
+  return out;
 }
 
 MieSingle mie_single(cplx m, double x, const std::vector<double>& cos_theta) {
@@ -210,8 +233,9 @@ double log_number_density(const DropletSpectrum& s, double d) {
 
 }  // namespace
 
-MieAverage mie_size_average(const DropletSpectrum& s, const std::vector<double>& cos_theta) {
-  if (!(s.mean_diameter_um > 0.0) || !(s.wavelength_um > 0.0) || !(s.relative_spread >= 0.0))
+MieAverage mie_size_average(const DropletSpectrum& s, const std::vector<double>& cos_theta, int threads) {
+  if (!(s.mean_diameter_um > 0.0) || !(s.wavelength_um > 0.0) || !(s.relative_spread >= 0.0) ||
+      !(s.size_parameter_step > 0.0))
     throw std::invalid_argument("mie_size_average: bad spectrum");
   const double x_per_um = kPi / s.wavelength_um;  // x = pi d / lambda
 
@@ -223,7 +247,7 @@ MieAverage mie_size_average(const DropletSpectrum& s, const std::vector<double>&
     double lo = 0.0, hi = 0.0;
     diameter_range(s, lo, hi);
     int n = s.sizes;
-    if (n <= 0) n = std::max(64, static_cast<int>(std::ceil((hi - lo) * x_per_um / 0.01)) + 1);
+    if (n <= 0) n = std::max(64, static_cast<int>(std::ceil((hi - lo) * x_per_um / s.size_parameter_step)) + 1);
     n = std::max(n, 3);
     const double h = (hi - lo) / (n - 1);
     for (int i = 0; i < n; ++i) {
@@ -234,28 +258,42 @@ MieAverage mie_size_average(const DropletSpectrum& s, const std::vector<double>&
     }
   }
 
+  // Partial sums per chunk of kChunk sizes (d^2, d^3, d^2 Q_ext, d^2 Q_sca, d^2 Q_sca g,
+  // then the phase), added up in chunk order below.
+  constexpr int kChunk = 16;
+  const int sizes = static_cast<int>(diam.size());
+  const int chunks = (sizes + kChunk - 1) / kChunk;
+  const std::size_t nj = cos_theta.size();
+  std::vector<std::vector<double>> partial(static_cast<std::size_t>(chunks));
+  parallel_for(chunks, threads, [&](int k) {
+    std::vector<double>& acc = partial[static_cast<std::size_t>(k)];
+    acc.assign(5 + nj, 0.0);
+    for (int i = k * kChunk; i < std::min(sizes, (k + 1) * kChunk); ++i) {
+      const double d = diam[static_cast<std::size_t>(i)], w = weight[static_cast<std::size_t>(i)];
+      if (w == 0.0) continue;
+      const MieSingle one = mie_single(s.m, x_per_um * d, cos_theta);
+      const double d2 = d * d;
+      const double c_sca = w * d2 * one.eff.q_sca;  // proportional to n(d) C_sca(d) dd
+      acc[0] += w * d2;
+      acc[1] += w * d2 * d;
+      acc[2] += w * d2 * one.eff.q_ext;
+      acc[3] += c_sca;
+      acc[4] += c_sca * one.eff.g;
+      for (std::size_t j = 0; j < nj; ++j) acc[5 + j] += c_sca * one.phase[j];
+    }
+  });
+  std::vector<double> total(5 + nj, 0.0);
+  for (const std::vector<double>& acc : partial)
+    for (std::size_t j = 0; j < total.size(); ++j) total[j] += acc[j];
+
   MieAverage out;
-  out.sizes = static_cast<int>(diam.size());
-  out.phase.assign(cos_theta.size(), 0.0);
-  double w_d2 = 0.0, w_d3 = 0.0, w_ext = 0.0, w_sca = 0.0, w_g = 0.0;
-  for (std::size_t i = 0; i < diam.size(); ++i) {
-    const double d = diam[i], w = weight[i];
-    if (w == 0.0) continue;
-    const MieSingle one = mie_single(s.m, x_per_um * d, cos_theta);
-    const double d2 = d * d;
-    w_d2 += w * d2;
-    w_d3 += w * d2 * d;
-    w_ext += w * d2 * one.eff.q_ext;
-    const double c_sca = w * d2 * one.eff.q_sca;  // proportional to n(d) C_sca(d) dd
-    w_sca += c_sca;
-    w_g += c_sca * one.eff.g;
-    for (std::size_t j = 0; j < cos_theta.size(); ++j) out.phase[j] += c_sca * one.phase[j];
-  }
-  out.q_ext = w_ext / w_d2;
-  out.q_sca = w_sca / w_d2;
-  out.g = w_g / w_sca;
-  out.effective_diameter_um = w_d3 / w_d2;
-  for (double& p : out.phase) p /= w_sca;
+  out.sizes = sizes;
+  out.q_ext = total[2] / total[0];
+  out.q_sca = total[3] / total[0];
+  out.g = total[4] / total[3];
+  out.effective_diameter_um = total[1] / total[0];
+  out.phase.assign(total.begin() + 5, total.end());
+  for (double& p : out.phase) p /= total[3];
   return out;
 }
 

@@ -113,9 +113,10 @@ struct DropletSpectrum {
   std::complex<double> m = kWaterIndex550nm;
   // Quadrature: uniform in d over +-6 standard deviations (gamma) or +-6 sigma of ln d
   // (lognormal), trapezoid rule (the weights vanish at both ends). 0 = automatic:
-  // spacing 0.01 in size parameter (the backscatter
-  // average over resonances converges to ~0.3 % there), at least 64 sizes. Spread 0 = one size.
+  // spacing size_parameter_step in size parameter (at 0.01 the backscatter average over
+  // resonances converges to ~0.3 %), at least 64 sizes. Spread 0 = one size.
   int sizes = 0;
+  double size_parameter_step = 0.01;
 };
 
 // Averages weighted by the number distribution n(d):
@@ -129,6 +130,8 @@ struct MieAverage {
   int sizes = 0;                       // number of diameters evaluated
   std::vector<double> phase;           // sr^-1, one per cos_theta
 };
-MieAverage mie_size_average(const DropletSpectrum& s, const std::vector<double>& cos_theta);
+// threads: common/parallel_for.h (0 = every hardware thread). The sizes are summed in
+// fixed chunks in chunk order, so the result does not depend on the thread count.
+MieAverage mie_size_average(const DropletSpectrum& s, const std::vector<double>& cos_theta, int threads = 1);
 
 }  // namespace cloudsvc::model

@@ -65,12 +65,14 @@ double ground_shadow_optical_depth(const CloudField& field, const glm::dvec3& p,
   return tau;
 }
 
-double octave_phase_sum(const model::JdDParams& phase, double cos_view_sun, double tau, int octaves, double a,
-                        double b, double c) {
-  double sum = 0.0, ai = 1.0, bi = 1.0, ci = 1.0;
+glm::dvec3 octave_phase_sum(const model::JdDParams& phase, const model::PhaseTable* mie, double cos_view_sun,
+                            double tau, int octaves, double a, double b, double c) {
+  glm::dvec3 sum(0.0);
+  double ai = 1.0, bi = 1.0, ci = 1.0;
   for (int o = 0; o < octaves; ++o) {
-    const double p = (1.0 - phase.w_d) * model::hg_phase(cos_view_sun, phase.g_hg * ci) +
-                     phase.w_d * model::draine_phase(cos_view_sun, phase.g_d * ci, phase.alpha);
+    const glm::dvec3 p = o == 0 && mie ? mie->at_cos(cos_view_sun)
+                                       : glm::dvec3((1.0 - phase.w_d) * model::hg_phase(cos_view_sun, phase.g_hg * ci) +
+                                                    phase.w_d * model::draine_phase(cos_view_sun, phase.g_d * ci, phase.alpha));
     sum += bi * p * std::exp(-ai * tau);
     ai *= a;
     bi *= b;

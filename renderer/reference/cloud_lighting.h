@@ -43,9 +43,12 @@ double ground_shadow_optical_depth(const CloudField& field, const glm::dvec3& p,
                                    const glm::dvec3& sun, double mu_s, double light_step_m, std::uint64_t& evals);
 
 // Wrenninge et al. 2013 octave sum: sum_{i < n} b^i p(nu; g c^i) e^{-a^i tau}, p the
-// Jendersie-d'Eon HG + Draine blend with both asymmetries scaled by c^i (sr^-1).
-double octave_phase_sum(const model::JdDParams& phase, double cos_view_sun, double tau, int octaves, double a,
-                        double b, double c);
+// Jendersie-d'Eon HG + Draine blend with both asymmetries scaled by c^i (sr^-1, rgb).
+// Where `mie` is given, octave 0 (single scattering) scatters with that table instead
+// (per wavelength: the glory and fogbow); the further octaves, which stand for light
+// scattered many times, keep the fit's smooth lobes.
+glm::dvec3 octave_phase_sum(const model::JdDParams& phase, const model::PhaseTable* mie, double cos_view_sun,
+                            double tau, int octaves, double a, double b, double c);
 
 // Two-stream diffuse transmittance of a conservative slab (Bohren 1987):
 // T(tau) = 1 / (1 + 3/4 (1 - g) tau), g = kTwoStreamMeanCosine.

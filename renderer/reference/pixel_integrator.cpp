@@ -77,7 +77,7 @@ glm::dvec3 PixelIntegrator::cloud_inscatter(int li, const glm::dvec3& p, double 
     const double step = settings_.light_step_m * layer_step_scale(L);
     const double tau = light_optical_depth(field_, li, p, alt, sun, mu_s, step, tau_stop_, evals);
     sun_light = e_sun_ * t_atm *
-                octave_phase_sum(L.phase, cos_view_sun, tau, settings_.ms_octaves, settings_.ms_extinction_scale, settings_.ms_energy_scale,
+                octave_phase_sum(L.phase, L.mie_phase.get(), cos_view_sun, tau, settings_.ms_octaves, settings_.ms_extinction_scale, settings_.ms_energy_scale,
                                  settings_.ms_eccentricity_scale);
   }
   const double ground_alt = s.ground_alt_m;

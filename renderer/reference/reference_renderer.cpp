@@ -31,7 +31,7 @@ FrameImage render_reference(const ViewRequest& view, const weather::Weather& wea
   const std::shared_ptr<const ReferenceInputs> inputs =
       weather.layers.empty() ? no_inputs : reference_inputs(settings.inputs, weather.map_seed);
 
-  const ReferenceScene scene = make_reference_scene(view, weather, wind_anchor);
+  const ReferenceScene scene = make_reference_scene(view, weather, wind_anchor, settings.cloud_phase);
   const CloudField field(scene, *inputs, settings.honour_stratiform, settings.cumulus_domes);
   const PixelIntegrator integrator(field, *tables, settings);
 

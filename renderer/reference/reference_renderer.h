@@ -22,6 +22,7 @@
 
 #include "renderer/reference/atmosphere_tables.h"
 #include "renderer/reference/reference_inputs.h"
+#include "renderer/model/mie_phase_table.h"
 #include "renderer/model/scene_constants.h"
 #include "renderer/api/frame_image.h"
 #include "renderer/api/render_quality.h"
@@ -53,6 +54,8 @@ struct ReferenceSettings {
   bool honour_stratiform = true;
   // Cumulus layers as individual domes (RendererConfig::cumulus_domes; cloud_field.h)
   bool cumulus_domes = false;
+  // The layers' phase function (RendererConfig::cloud_phase; model/mie_phase_table.h)
+  model::CloudPhaseModel cloud_phase = model::CloudPhaseModel::kFit;
   // Rays per pixel along each axis (stratified: the centres of n x n sub-pixels), averaged:
   // 1 = the pixel centre (what the GPU's march samples without footprint jitter).
   int pixel_samples = 1;

@@ -53,7 +53,7 @@ glm::dvec3 ShellFrame::up_at(const glm::dvec3& p) const {
 }
 
 ReferenceScene make_reference_scene(const ViewRequest& view, const weather::Weather& weather,
-                                    const WindAnchor* anchor) {
+                                    const WindAnchor* anchor, model::CloudPhaseModel phase) {
   ReferenceScene s;
   const geo::Geodetic& pos = view.position;
 
@@ -94,6 +94,7 @@ ReferenceScene make_reference_scene(const ViewRequest& view, const weather::Weat
     r.density_scale = l.density_scale;
     r.sigma_max_per_m = model::cloud_extinction_per_m(l.droplet_diameter_um);
     r.phase = model::jdd_params(l.droplet_diameter_um);
+    if (phase == model::CloudPhaseModel::kMie) r.mie_phase = model::mie_phase_table(l.droplet_diameter_um);
     r.base_period_m = tr.noise_scale_m;
     r.detail_period_m = tr.noise_scale_m / 8.0;
     r.erosion = tr.profile.base_erosion;

@@ -12,11 +12,13 @@
 //     parameters, noise periods and the wind rotation of its field.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include "geodesy/geodetic.h"
+#include "renderer/model/mie_phase_table.h"
 #include "renderer/model/phase_function.h"
 #include "renderer/api/frame_image.h"
 #include "renderer/api/render_quality.h"
@@ -67,6 +69,9 @@ struct ReferenceLayer {
   double density_scale = 1.0;         // multiplier of the microphysical extinction
   double sigma_max_per_m = 0.0;       // N0 Q_ext pi (d/2)^2, model::cloud_extinction_per_m, 1/m
   model::JdDParams phase;             // Jendersie-d'Eon parameters for the droplet diameter
+  // The droplets' tabulated Mie phase function (model::mie_phase_table), where the scene
+  // scatters with it (model::CloudPhaseModel::kMie); null: the fit above.
+  std::shared_ptr<const model::PhaseTable> mie_phase;
   double base_period_m = 8000.0;      // horizontal period of the base shape noise (type trait)
   double detail_period_m = 1000.0;    // base_period / 8
   double erosion = 0.5;               // detail erosion strength (type trait base_erosion)
@@ -95,7 +100,10 @@ struct ReferenceScene {
 
 // anchor: nullptr anchors every layer's field at this view (no displacement), as
 // CloudRenderer does for the first view after set_weather.
+// phase: which phase function the layers scatter with (Mie: their tables are computed on
+// first use of a droplet size, model::mie_phase_table).
 ReferenceScene make_reference_scene(const ViewRequest& view, const weather::Weather& weather,
-                                    const WindAnchor* anchor = nullptr);
+                                    const WindAnchor* anchor = nullptr,
+                                    model::CloudPhaseModel phase = model::CloudPhaseModel::kFit);
 
 }  // namespace cloudsvc::reference

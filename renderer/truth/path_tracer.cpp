@@ -51,10 +51,21 @@ void PathTracer::medium_at(const glm::dvec3& y, double altitude_m, double majora
 glm::dvec3 PathTracer::scattering_kernel(const MediumPoint& m, double nu) const {
   glm::dvec3 f = m.rayleigh * reference::atmo::rayleigh_phase(nu);
   double grey = m.aerosol > 0.0 ? m.aerosol * reference::mc::cornette_shanks_phase(nu, world_.aerosol_g) : 0.0;
-  for (int i = 0; i < kMaxCloudComponents; ++i)
-    if (m.cloud[static_cast<std::size_t>(i)] > 0.0)
-      grey += m.cloud[static_cast<std::size_t>(i)] * model::jdd_phase(nu, world_.cloud_phase[static_cast<std::size_t>(i)]);
+  for (int i = 0; i < kMaxCloudComponents; ++i) {
+    const double s = m.cloud[static_cast<std::size_t>(i)];
+    if (s <= 0.0) continue;
+    if (const model::PhaseTable* mie = world_.cloud_mie[static_cast<std::size_t>(i)])
+      f += s * mie->at_cos(nu);
+    else
+      grey += s * model::jdd_phase(nu, world_.cloud_phase[static_cast<std::size_t>(i)]);
+  }
   return f + glm::dvec3(grey);
+}
+
+double PathTracer::cloud_sampling_phase(int i, const glm::dvec3& beta, double nu) const {
+  const model::PhaseTable* mie = world_.cloud_mie[static_cast<std::size_t>(i)];
+  return mie ? mean3(beta * mie->at_cos(nu)) / mean3(beta)
+             : model::jdd_phase(nu, world_.cloud_phase[static_cast<std::size_t>(i)]);
 }
 
 double PathTracer::phase_pdf(const MediumPoint& m, const glm::dvec3& beta, double nu) const {
@@ -65,7 +76,7 @@ double PathTracer::phase_pdf(const MediumPoint& m, const glm::dvec3& beta, doubl
   if (m.aerosol > 0.0) pdf += b * m.aerosol * reference::mc::cornette_shanks_phase(nu, world_.aerosol_g);
   for (int i = 0; i < kMaxCloudComponents; ++i) {
     const double s = m.cloud[static_cast<std::size_t>(i)];
-    if (s > 0.0) pdf += b * s * model::jdd_phase(nu, world_.cloud_phase[static_cast<std::size_t>(i)]);
+    if (s > 0.0) pdf += b * s * cloud_sampling_phase(i, beta, nu);
   }
   return pdf / weight;
 }
@@ -87,10 +98,19 @@ glm::dvec3 PathTracer::sample_phase(const MediumPoint& m, const glm::dvec3& beta
       acc += b * s;
       cloud = i;
     }
-    cos_t = cloud < 0 ? reference::mc::sample_cornette_shanks_cos(world_.aerosol_g, rng_)
-                      : model::sample_jdd_cos_theta(world_.cloud_phase[static_cast<std::size_t>(cloud)], rng_);
+    if (cloud < 0)
+      cos_t = reference::mc::sample_cornette_shanks_cos(world_.aerosol_g, rng_);
+    else if (const model::PhaseTable* mie = world_.cloud_mie[static_cast<std::size_t>(cloud)])
+      cos_t = mie->sample_cos(pick_channel(beta), [this] { return uniform(); });
+    else
+      cos_t = model::sample_jdd_cos_theta(world_.cloud_phase[static_cast<std::size_t>(cloud)], rng_);
   }
   return model::scatter_direction(w, cos_t, 2.0 * kPi * uniform());
+}
+
+int PathTracer::pick_channel(const glm::dvec3& beta) {
+  const double u = uniform() * (beta.r + beta.g + beta.b);
+  return u < beta.r ? 0 : (u < beta.r + beta.g ? 1 : 2);
 }
 
 glm::dvec3 PathTracer::sample_sun_direction() {

@@ -210,6 +210,13 @@ class PathTracer {
   void medium_at(const glm::dvec3& y, double altitude_m, double majorant, MediumPoint& m);
   glm::dvec3 scattering_kernel(const MediumPoint& m, double nu) const;  // sum_k sigma_k p_k(nu), 1/(m sr)
   double phase_pdf(const MediumPoint& m, const glm::dvec3& beta, double nu) const;  // 1/sr
+  // The density cloud component i's directions are drawn with (1/sr): its fit, or its Mie
+  // table's channels averaged with the path throughput beta as weights (a channel is picked
+  // in proportion to beta, pick_channel, and its p sampled), so the channel weights
+  // p_c / density keep the sum of beta: no channel's throughput runs away over many
+  // scatterings.
+  double cloud_sampling_phase(int i, const glm::dvec3& beta, double nu) const;
+  int pick_channel(const glm::dvec3& beta);
   glm::dvec3 sample_phase(const MediumPoint& m, const glm::dvec3& beta, double s_bar, const glm::dvec3& w);
   glm::dvec3 sample_sun_direction();  // uniform over the sun's disk
   bool copies_allowed() const;                 // a disk sun, cloud phases, copies left

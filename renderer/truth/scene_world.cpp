@@ -220,8 +220,10 @@ TruthWorld make_scene_world(const reference::ReferenceScene& scene, const refere
   w.ground_albedo = reference::atmo::kGroundAlbedo;
   w.sky_radiance = glm::dvec3(model::kNightSkyRadiance);
   w.aerosol_g = reference::atmo::kMieG;
-  for (std::size_t li = 0; li < scene.layers.size() && li < w.cloud_phase.size(); ++li)
+  for (std::size_t li = 0; li < scene.layers.size() && li < w.cloud_phase.size(); ++li) {
     w.cloud_phase[li] = scene.layers[li].phase;
+    w.cloud_mie[li] = scene.layers[li].mie_phase.get();  // the scene outlives the world
+  }
   w.medium = &medium;
   return w;
 }

@@ -24,7 +24,7 @@ TruthImage render_truth(const ViewRequest& view, const weather::Weather& weather
       std::make_shared<const reference::ReferenceInputs>();
   const std::shared_ptr<const reference::ReferenceInputs> inputs =
       weather.layers.empty() ? no_inputs : reference::reference_inputs(settings.inputs, weather.map_seed);
-  const reference::ReferenceScene scene = reference::make_reference_scene(view, weather, wind_anchor);
+  const reference::ReferenceScene scene = reference::make_reference_scene(view, weather, wind_anchor, settings.cloud_phase);
   const reference::CloudField field(scene, *inputs, settings.honour_stratiform);
   const SceneMedium medium(scene, field);
   const SceneLocalMajorant local(scene, *inputs, settings.honour_stratiform, scene_band_edges(scene));

@@ -30,6 +30,8 @@ struct TruthSettings {
   TracerSettings tracer;
   reference::InputConfig inputs;  // the shared noise volumes and weather map (as the reference)
   bool honour_stratiform = true;  // the model's definition (reference::CloudField)
+  // The layers' phase function (RendererConfig::cloud_phase; model/mie_phase_table.h)
+  model::CloudPhaseModel cloud_phase = model::CloudPhaseModel::kFit;
 };
 
 struct TruthImage {

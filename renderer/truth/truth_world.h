@@ -22,6 +22,7 @@
 
 #include <glm/glm.hpp>
 
+#include "renderer/model/mie_phase_table.h"
 #include "renderer/model/phase_function.h"
 #include "weather/cloud_layer.h"
 
@@ -89,6 +90,10 @@ struct TruthWorld {
 
   double aerosol_g = 0.8;                                    // Cornette-Shanks asymmetry
   std::array<model::JdDParams, kMaxCloudComponents> cloud_phase{};  // per cloud component
+  // Per cloud component: its tabulated Mie phase function (per wavelength; sampled by its
+  // grey mean, model::PhaseTable::sample_cos_grey), where the scene scatters with it;
+  // null: cloud_phase above.
+  std::array<const model::PhaseTable*, kMaxCloudComponents> cloud_mie{};
 
   const TruthMedium* medium = nullptr;
 };

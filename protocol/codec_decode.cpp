@@ -72,6 +72,7 @@ SetTime get(const wire::SetTime& m) { return SetTime{m.utc_unix_s()}; }
 WeatherLayers get(const wire::WeatherLayers& m) {
   WeatherLayers out;
   out.map_seed = m.map_seed();
+  if (const auto albedo = m.ground_albedo(); albedo.has_value()) out.ground_albedo = *albedo;
   if (const auto* layers = m.layers()) {
     out.layers.reserve(layers->size());
     for (const wire::CloudLayer* l : *layers) {

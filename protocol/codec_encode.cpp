@@ -63,7 +63,8 @@ struct BodyWriter {
                                               l.density_scale, l.droplet_diameter_um,
                                               l.wind_east_mps, l.wind_north_mps));
     }
-    return wire::CreateWeatherLayers(b, b.CreateVector(layers), m.map_seed).Union();
+    const fb::Optional<double> albedo = m.ground_albedo ? fb::Optional<double>(*m.ground_albedo) : fb::nullopt;
+    return wire::CreateWeatherLayers(b, b.CreateVector(layers), m.map_seed, albedo).Union();
   }
   fb::Offset<void> operator()(const WeatherMapTile& m) {
     const auto data = b.CreateVector(m.data);

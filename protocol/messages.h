@@ -150,6 +150,7 @@ struct CloudLayer {
 struct WeatherLayers {
   std::vector<CloudLayer> layers;  // 0..4, sorted by base_m, not overlapping
   std::uint32_t map_seed = 1;      // seed of the procedural global weather map
+  std::optional<double> ground_albedo;  // grey Lambertian albedo [0, 1]; unset: the default
   bool operator==(const WeatherLayers&) const = default;
 };
 

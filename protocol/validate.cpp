@@ -218,6 +218,7 @@ Problem check(const WeatherLayers& m) {
     return join("WeatherLayers.layers has ", num(m.layers.size()), " layers (at most ",
                 num(kMaxLayers), ")");
   }
+  if (m.ground_albedo) CHECK(closed("WeatherLayers.ground_albedo", *m.ground_albedo, 0.0, 1.0));
   for (std::size_t i = 0; i < m.layers.size(); ++i) {
     const std::string pre = join("WeatherLayers.layers[", num(i), "].");
     CHECK(check_layer(m.layers[i], pre));

@@ -6,6 +6,7 @@ weather::Weather to_weather(const protocol::WeatherLayers& m) {
   weather::Weather w;
   w.name = "protocol";
   w.map_seed = m.map_seed;
+  w.ground_albedo = m.ground_albedo;
   for (const protocol::CloudLayer& l : m.layers) {
     weather::CloudLayer c;
     c.type = static_cast<weather::CloudType>(l.type);
@@ -23,6 +24,7 @@ weather::Weather to_weather(const protocol::WeatherLayers& m) {
 protocol::WeatherLayers to_message(const weather::Weather& w) {
   protocol::WeatherLayers m;
   m.map_seed = w.map_seed;
+  m.ground_albedo = w.ground_albedo;
   for (const weather::CloudLayer& c : w.layers) {
     protocol::CloudLayer l;
     l.type = static_cast<std::uint8_t>(c.type);

@@ -73,10 +73,11 @@ struct FrameUniforms {
   glm::vec4 noise_quantiles[4];   // base-noise value below which a fraction i/15 lies, i = 0..15
   glm::vec4 weather_pole_south;   // weather map value at the south pole (row mean)
   glm::vec4 weather_pole_north;   // ... at the north pole
+  glm::vec4 ground_albedo;        // rgb: the ground's Lambertian albedo (FrameContext::ground_albedo)
   CloudLayerGpu layers[gpu::kMaxLayers];
 };
 
 static_assert(sizeof(CloudLayerGpu) == 11 * 16, "std140 layout");
-static_assert(sizeof(FrameUniforms) == 64 + 19 * 16 + gpu::kMaxLayers * 11 * 16, "std140 layout");
+static_assert(sizeof(FrameUniforms) == 64 + 20 * 16 + gpu::kMaxLayers * 11 * 16, "std140 layout");
 
 }  // namespace cloudsvc

@@ -54,8 +54,12 @@ float layer_shadow_optical_depth(int li, vec3 p, float ground_alt, vec3 sun, flo
 // scattering. With vertical optical depths tau_a above and tau_b below the point,
 // estimated from the layer's nominal extinction and the local coverage:
 //   F_down = F_sun (T_beam(tau_a, mu_s) - e^{-tau_a'/mu_s}) + E_sky T(tau_a)   (diffuse only)
-//   F_up   = (F_sun T_beam(tau_a, mu_s) + E_sky T(tau_a)) R(tau_b) + E_ground T(tau_b)
-// with T the diffuse and T_beam the beam transmittance above, R = 1 - T. The radiance
+//            + E_up T(tau_b) R(tau_a)
+//   F_up   = (F_sun T_beam(tau_a, mu_s) + E_sky T(tau_a)) R(tau_b) + E_up T(tau_b)
+// with T the diffuse and T_beam the beam transmittance above, R = 1 - T, and E_up = a E_g
+// the light a ground of albedo a sends up: its irradiance E_g under the whole layer (sun
+// through T_beam(tau_a + tau_b), sky through T(tau_a + tau_b), both at ground level) with
+// the round trips between ground and cloud (ground_cloud_gain). The radiance
 // field is taken in the P1 (diffusion) form I = (Phi + 3 F . w) / (4 pi), fluence
 // Phi = 2 (F_down + F_up), net flux F = (F_up - F_down) up, so the in-scatter into the
 // direction w towards the camera (w_up = w . up) is
@@ -64,11 +68,11 @@ float layer_shadow_optical_depth(int li, vec3 p, float ground_alt, vec3 sun, flo
 // the march is single scattering only (one octave); this term carries the rest.
 // Checked against Monte Carlo in renderer/model/slab_renderer_model.h (docs/ACCURACY.md).
 //
-// E_ground (ground_irradiance below) is the irradiance reflected by the ground under the
-// point; the march holds it over 10 km of its ray (the sun's zenith angle at the ground
-// below a sample moves by 1.6e-4 rad per km).
+// ground_sun and ground_sky (cloud_free_ground_irradiance below) are the irradiance the
+// ground under the point would receive without clouds; the march holds them over 10 km of
+// its ray (the sun's zenith angle at the ground below a sample moves by 1.6e-4 rad per km).
 vec3 diffuse_inscatter(CloudLayerGpu L, float alt, float mu_s, vec3 T_atm, float coverage, vec3 E_sun,
-                       vec3 E_ground, float w_up) {
+                       vec3 ground_sun, vec3 ground_sky, float w_up) {
   float sigma_nominal = L.extinction_max * L.density_scale * coverage;
   float tau_a = sigma_nominal * max(L.top_m - alt, 0.0);
   float tau_b = sigma_nominal * max(alt - L.base_m, 0.0);
@@ -79,16 +83,21 @@ vec3 diffuse_inscatter(CloudLayerGpu L, float alt, float mu_s, vec3 T_atm, float
   float mu0 = max(mu_pos, 0.05);
   float direct_a = mu_pos > 0.0 ? exp(-(1.0 - DELTA_F) * tau_a / mu0) : 0.0;
   float T_beam = mu_pos > 0.0 ? slab_beam_transmittance(tau_a, mu0) : 0.0;
-  vec3 F_down = F_sun * max(T_beam - direct_a, 0.0) + E_sky * Ta;
-  vec3 F_up = (F_sun * T_beam + E_sky * Ta) * (1.0 - Tb) + E_ground * Tb;
+  float tau_layer = tau_a + tau_b;
+  float T_beam_layer = mu_pos > 0.0 ? slab_beam_transmittance(tau_layer, mu0) : 0.0;
+  vec3 albedo = frame.ground_albedo.rgb;
+  vec3 E_up = albedo * ground_cloud_gain(albedo, tau_layer) *
+              (ground_sun * T_beam_layer + ground_sky * slab_diffuse_transmittance(tau_layer));
+  vec3 F_down = F_sun * max(T_beam - direct_a, 0.0) + E_sky * Ta + E_up * Tb * (1.0 - Ta);
+  vec3 F_up = (F_sun * T_beam + E_sky * Ta) * (1.0 - Tb) + E_up * Tb;
   vec3 J = (2.0 * (F_down + F_up) + 3.0 * TWO_STREAM_MEAN_COSINE * (F_up - F_down) * w_up) / (4.0 * PI);
   return max(J, vec3(0.0));
 }
 
-// Radiance-weighted irradiance leaving the ground upwards (W m^-2 nm^-1): albedo times sun
-// (through the atmosphere, no cloud) plus sky light, at ground altitude ground_alt for a sun
-// at zenith cosine mu_s. The upward boundary flux of diffuse_inscatter.
-vec3 ground_irradiance(float ground_alt, float mu_s, vec3 E_sun) {
-  return GROUND_ALBEDO * E_sun *
-         (transmittance_to_space(ground_alt, mu_s) * max(mu_s, 0.0) + sky_irradiance(ground_alt, mu_s));
+// Irradiance of the ground at altitude ground_alt without clouds (W m^-2 nm^-1), for a sun
+// at zenith cosine mu_s: the sun's part through the atmosphere and the sky's. The ground's
+// input to diffuse_inscatter.
+void cloud_free_ground_irradiance(float ground_alt, float mu_s, vec3 E_sun, out vec3 from_sun, out vec3 from_sky) {
+  from_sun = E_sun * transmittance_to_space(ground_alt, mu_s) * max(mu_s, 0.0);
+  from_sky = E_sun * sky_irradiance(ground_alt, mu_s);
 }

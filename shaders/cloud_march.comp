@@ -128,9 +128,9 @@ RaySample march_ray(ivec2 q, vec3 dir) {
   int depth_layer = n_iv > 0 ? iv[0].layer : -1;
   float strongest = 0.0;  // largest single-step contribution T * absorbed, and its layer
   int cloud_layer = -1;
-  // ground_irradiance, evaluated at the first cloud sample and again every
+  // cloud_free_ground_irradiance, evaluated at the first cloud sample and again every
   // GROUND_IRRADIANCE_SPACING along the ray (at t_ground_irradiance)
-  vec3 E_ground = vec3(0.0);
+  vec3 ground_sun = vec3(0.0), ground_sky = vec3(0.0);
   float t_ground_irradiance = -1e30;
   if (n_iv > 0) {
     float jitter = hash12(uvec2(q) + uvec2(frame.frame_index * 7919, frame.frame_index * 104729));
@@ -228,10 +228,10 @@ RaySample march_ray(ivec2 q, vec3 dir) {
           L_sun = E_sun * T_atm * s_sum;
         }
         if (abs(t - t_ground_irradiance) > GROUND_IRRADIANCE_SPACING) {
-          E_ground = ground_irradiance(ground_alt, mu_s, E_sun);
+          cloud_free_ground_irradiance(ground_alt, mu_s, E_sun, ground_sun, ground_sky);
           t_ground_irradiance = t;
         }
-        vec3 L_diffuse = diffuse_inscatter(L, alt, mu_s, T_atm, coverage, E_sun, E_ground, -dot(dir, up));
+        vec3 L_diffuse = diffuse_inscatter(L, alt, mu_s, T_atm, coverage, E_sun, ground_sun, ground_sky, -dot(dir, up));
         float absorbed = one_minus_exp_neg(sigma * dt);  // albedo 1: scattered fraction
         C += T * absorbed * (L_sun + L_diffuse);
         depth_acc += t * T * absorbed;

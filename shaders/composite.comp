@@ -135,11 +135,14 @@ vec3 ground_radiance(vec3 dir, float t_ground) {
       tau += textureLod(ground_shadow, vec3(shadow_map_uv((shadow.to_anchor[li] * vec4(p, 1.0)).xyz), float(li)), 0.0).r;
 #endif
   // sun through the clouds: the delta-Eddington beam transmittance of their vertical
-  // optical depth (direct + forward-scattered + diffuse); sky light: the diffuse one
+  // optical depth (direct + forward-scattered + diffuse); sky light: the diffuse one; and
+  // the round trips between the ground and the clouds' base (ground_cloud_gain)
   float tau_v = tau * max(mu_s, 0.0);
   float sun_through = mu_s > 0.0 ? slab_beam_transmittance(tau_v, max(mu_s, 0.05)) : 0.0;
-  vec3 E = E_sun * (T_atm * max(mu_s, 0.0) * sun_through + sky_irradiance(ground_alt, mu_s) * slab_diffuse_transmittance(tau_v));
-  vec3 L_ground = GROUND_ALBEDO / PI * E;
+  vec3 albedo = frame.ground_albedo.rgb;
+  vec3 E = E_sun * (T_atm * max(mu_s, 0.0) * sun_through + sky_irradiance(ground_alt, mu_s) * slab_diffuse_transmittance(tau_v)) *
+           ground_cloud_gain(albedo, tau_v);
+  vec3 L_ground = albedo / PI * E;
   vec3 ap_in, ap_T;
   aerial_perspective(dir, t_ground, ap_in, ap_T);
   return L_ground * ap_T + E_sun * ap_in;

@@ -54,5 +54,6 @@ layout(std140, binding = UBO_FRAME) uniform FrameUniforms {
   vec4 noise_quantiles[4];
   vec4 weather_pole_south;
   vec4 weather_pole_north;
+  vec4 ground_albedo;  // rgb
   CloudLayerGpu layers[MAX_LAYERS];
 } frame;

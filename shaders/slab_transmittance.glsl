@@ -19,3 +19,11 @@ float slab_beam_transmittance(float tau, float mu0) {
   float direct = exp(-(1.0 - DELTA_F) * tau / mu0);
   return ((0.5 + 0.75 * mu0) + (0.5 - 0.75 * mu0) * direct) / (1.0 + 0.75 * (1.0 - TWO_STREAM_MEAN_COSINE) * tau);
 }
+
+// Light bouncing between a Lambertian ground of albedo a and a conservative slab of
+// optical depth tau above it: the irradiance reaching the ground gains the geometric series
+// 1 / (1 - a R) of ground-cloud round trips, R = 1 - T(tau) the slab's diffuse reflectance
+// from below (the adding method, e.g. Liou 2002 §6.2; Bouthors et al. 2008 §5 for clouds).
+vec3 ground_cloud_gain(vec3 albedo, float tau) {
+  return 1.0 / (1.0 - albedo * (1.0 - slab_diffuse_transmittance(tau)));
+}

@@ -48,6 +48,7 @@ Pose sample_pose() {
 WeatherLayers sample_layers() {
   WeatherLayers w;
   w.map_seed = 0xdeadbeef;
+  w.ground_albedo = 0.8;
   w.layers.push_back(CloudLayer{9, 800.0, 1500.0, 0.6, 1.5, 12.0, 5.0, -3.0});
   w.layers.push_back(CloudLayer{7, 1500.0, 3200.0, 0.35, 1.0, 20.0, 8.5, 1.25});
   w.layers.push_back(CloudLayer{5, 9000.0, 10500.0, 0.2, 0.3, 40.0, 30.0, 20.0});
@@ -271,6 +272,11 @@ std::vector<FloatField> float_fields() {
                    return Message(w);
                  }});
   };
+  f.push_back({"WeatherLayers.ground_albedo", [](double v) {
+                 WeatherLayers w = sample_layers();
+                 w.ground_albedo = v;
+                 return Message(w);
+               }});
   layer("base_m", &CloudLayer::base_m);
   layer("top_m", &CloudLayer::top_m);
   layer("coverage", &CloudLayer::coverage);
@@ -316,8 +322,8 @@ std::vector<FloatField> float_fields() {
 TEST(ProtocolValidate, RejectsNaNAndInfinityInEveryFloatField) {
   const auto fields = float_fields();
   // Pose 8 + velocity 3, FrameReady.pose 7 + FrameReady 3, SetView 1, SetTime 1,
-  // CloudLayer 7, WeatherMapTile 5 + data, Stats 1.
-  EXPECT_EQ(fields.size(), 37u);
+  // WeatherLayers.ground_albedo 1, CloudLayer 7, WeatherMapTile 5 + data, Stats 1.
+  EXPECT_EQ(fields.size(), 38u);
   for (const FloatField& field : fields) {
     for (const double bad : {kNaN, -kNaN, kInf, -kInf}) {
       // Wind and velocity name the component; data names the element index.
@@ -461,6 +467,10 @@ TEST(ProtocolValidate, LayerRanges) {
                   "WeatherLayers.layers[2].top_m"});
   expect_invalid({"top below base", layers([](WeatherLayers& w) { w.layers[0].top_m = 700; }),
                   "WeatherLayers.layers[0].top_m"});
+  expect_invalid({"ground albedo 1.5", layers([](WeatherLayers& w) { w.ground_albedo = 1.5; }),
+                  "WeatherLayers.ground_albedo 1.5 out of range [0, 1]"});
+  expect_invalid({"ground albedo -0.2", layers([](WeatherLayers& w) { w.ground_albedo = -0.2; }),
+                  "WeatherLayers.ground_albedo"});
   expect_invalid({"thickness 5 m", layers([](WeatherLayers& w) { w.layers[0].top_m = 805; }),
                   "WeatherLayers.layers[0].top_m"});
   expect_invalid({"coverage 1.01", layers([](WeatherLayers& w) { w.layers[0].coverage = 1.01; }),

@@ -1,6 +1,8 @@
 // Weather JSON files (weather/weather_json.h): round trip and one-line errors that name the
 // file and the field.
 #include <gtest/gtest.h>
+
+#include <cmath>
 #include <unistd.h>
 
 #include <filesystem>
@@ -125,12 +127,14 @@ TEST_F(WeatherJson, RoundTrip) {
   CloudLayer b = default_layer(CloudType::Cirrus);
   b.coverage = 1.0 / 3.0;
   w.layers = {a, b};
+  w.ground_albedo = 0.1 + 0.7;
   ASSERT_EQ(validate(w), "");
 
   const std::string text = to_json(w);
   const Weather back = load_weather_json(write("rt.json", text));
   EXPECT_EQ(back.name, w.name);
   EXPECT_EQ(back.map_seed, w.map_seed);
+  EXPECT_EQ(back.ground_albedo, w.ground_albedo);
   ASSERT_EQ(back.layers.size(), w.layers.size());
   for (std::size_t i = 0; i < w.layers.size(); ++i) {
     const CloudLayer& x = w.layers[i];
@@ -145,6 +149,22 @@ TEST_F(WeatherJson, RoundTrip) {
     EXPECT_EQ(x.wind.north_mps, y.wind.north_mps);
   }
   EXPECT_EQ(to_json(back), text);
+}
+
+// "ground_albedo": the ground's grey albedo in [0, 1]; absent: unset (the renderer's default).
+TEST_F(WeatherJson, GroundAlbedo) {
+  EXPECT_FALSE(load_weather_json(write("a.json", doc(layer("")))).ground_albedo.has_value());
+  const Weather snow = load_weather_json(write("b.json", R"({"ground_albedo": 0.8, "layers": []})"));
+  ASSERT_TRUE(snow.ground_albedo.has_value());
+  EXPECT_EQ(*snow.ground_albedo, 0.8);
+  EXPECT_EQ(error_of(R"({"ground_albedo": 1.2, "layers": []})"), "ground_albedo: 1.2 out of range [0, 1]");
+  EXPECT_EQ(error_of(R"({"ground_albedo": -0.1, "layers": []})"), "ground_albedo: -0.1 out of range [0, 1]");
+  EXPECT_NE(error_of(R"({"ground_albedo": "snow", "layers": []})").find("ground_albedo"), std::string::npos);
+  Weather w;
+  w.ground_albedo = std::nan("");
+  EXPECT_EQ(validate(w).rfind("ground_albedo", 0), 0u) << validate(w);
+  w.ground_albedo = 1.0;
+  EXPECT_EQ(validate(w), "");
 }
 
 TEST_F(WeatherJson, CoverageOutOfRange) {

@@ -253,6 +253,8 @@ std::optional<ValidationIssue> validate_layer(const CloudLayer& l, int i) {
 }
 
 std::optional<ValidationIssue> validate_detail(const Weather& w) {
+  if (w.ground_albedo && !(*w.ground_albedo >= 0.0 && *w.ground_albedo <= 1.0))
+    return ValidationIssue{"ground_albedo", num(*w.ground_albedo) + " out of range [0, 1]"};
   const int n = static_cast<int>(w.layers.size());
   if (n > kMaxCloudLayers) {
     return ValidationIssue{"layers", std::to_string(n) + " layers, at most " +

@@ -142,6 +142,9 @@ struct Weather {
   std::string name;                // preset name or file name, for logs
   std::vector<CloudLayer> layers;  // at most kMaxCloudLayers, sorted by base altitude
   std::uint32_t map_seed = 1;      // seed of the procedural global weather map
+  // Lambertian albedo of the ground, grey, [0, 1] (fresh snow ~0.8, sea ~0.06-0.1); unset:
+  // the renderer's default spectrum (model::kGroundAlbedo, 0.14 / 0.12 / 0.08 in rgb).
+  std::optional<double> ground_albedo;
 };
 
 // Checks ranges and ordering; returns an empty string when valid, else a one-line
@@ -149,7 +152,8 @@ struct Weather {
 // Limits: at most kMaxCloudLayers layers; per layer all values finite, base_m in
 // [-500, 20000], top_m in (base_m, 20000] with top_m - base_m >= 10, coverage [0, 1],
 // density_scale [0, 10], droplet_diameter_um [5, 50], |wind| <= 150 m/s, type not None;
-// layers sorted by base_m and not overlapping in altitude (touching is allowed).
+// layers sorted by base_m and not overlapping in altitude (touching is allowed);
+// ground_albedo, when set, finite and in [0, 1].
 std::string validate(const Weather& w);
 
 // The same checks, with the field ("layers[1].coverage") and the problem ("1.5 out of range

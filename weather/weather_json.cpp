@@ -241,7 +241,7 @@ Weather parse_weather_json(const std::string& text, const std::string& source_na
   if (!root.is_object()) {
     fail(source_name, "(top level)", "expected an object, got " + describe(root));
   }
-  check_keys(root, {"name", "map_seed", "layers"}, source_name, "");
+  check_keys(root, {"name", "map_seed", "ground_albedo", "layers"}, source_name, "");
 
   Weather w;
   w.name = root.contains("name") ? get_string(root["name"], source_name, "name") : source_name;
@@ -252,6 +252,12 @@ Weather parse_weather_json(const std::string& text, const std::string& source_na
            "expected an integer in [0, 4294967295], got " + describe(s));
     }
     w.map_seed = static_cast<std::uint32_t>(s.get<std::uint64_t>());
+  }
+  if (root.contains("ground_albedo")) {
+    Weather probe;  // the range rule of validate_detail
+    probe.ground_albedo = get_number(root["ground_albedo"], source_name, "ground_albedo");
+    if (auto issue = validate_detail(probe)) fail(source_name, issue->field, issue->problem);
+    w.ground_albedo = probe.ground_albedo;
   }
 
   std::vector<std::pair<CloudLayer, int>> layers;  // with their index in the file
@@ -321,6 +327,7 @@ std::string to_json(const Weather& w) {
   nlohmann::ordered_json root;
   root["name"] = w.name;
   root["map_seed"] = w.map_seed;
+  if (w.ground_albedo) root["ground_albedo"] = *w.ground_albedo;
   root["layers"] = nlohmann::ordered_json::array();
   for (const CloudLayer& l : w.layers) {
     nlohmann::ordered_json j;

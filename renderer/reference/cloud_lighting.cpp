@@ -89,6 +89,10 @@ double slab_beam_transmittance(double tau, double mu0) {
   return ((0.5 + 0.75 * mu0) + (0.5 - 0.75 * mu0) * direct) / (1.0 + 0.75 * (1.0 - kTwoStreamMeanCosine) * tau);
 }
 
+glm::dvec3 ground_cloud_gain(const glm::dvec3& albedo, double tau) {
+  return 1.0 / (1.0 - albedo * (1.0 - slab_diffuse_transmittance(tau)));
+}
+
 glm::dvec3 two_stream_diffuse(const ReferenceLayer& L, double alt, double mu_s, double coverage,
                               const glm::dvec3& e_sun, const glm::dvec3& t_atm, const glm::dvec3& e_sky_here,
                               const glm::dvec3& t_atm_ground, const glm::dvec3& e_sky_ground,
@@ -101,12 +105,15 @@ glm::dvec3 two_stream_diffuse(const ReferenceLayer& L, double alt, double mu_s, 
   const double mu_pos = std::max(mu_s, 0.0);
   const glm::dvec3 F_sun = e_sun * t_atm * mu_pos;        // direct solar flux on a horizontal surface above the layer
   const glm::dvec3 E_sky = e_sun * e_sky_here;
-  const glm::dvec3 E_ground = ground_albedo * e_sun * (t_atm_ground * mu_pos + e_sky_ground);
   const double mu0 = std::max(mu_pos, 0.05);
+  const double tau_layer = tau_above + tau_below;
+  const double T_beam_layer = mu_pos > 0.0 ? slab_beam_transmittance(tau_layer, mu0) : 0.0;
+  const glm::dvec3 E_up = ground_albedo * ground_cloud_gain(ground_albedo, tau_layer) * e_sun *
+                          (t_atm_ground * mu_pos * T_beam_layer + e_sky_ground * slab_diffuse_transmittance(tau_layer));
   const double direct_above = mu_pos > 0.0 ? std::exp(-(1.0 - g * g) * tau_above / mu0) : 0.0;
   const double T_beam = mu_pos > 0.0 ? slab_beam_transmittance(tau_above, mu0) : 0.0;
-  const glm::dvec3 F_down = F_sun * std::max(T_beam - direct_above, 0.0) + E_sky * Ta;
-  const glm::dvec3 F_up = (F_sun * T_beam + E_sky * Ta) * (1.0 - Tb) + E_ground * Tb;
+  const glm::dvec3 F_down = F_sun * std::max(T_beam - direct_above, 0.0) + E_sky * Ta + E_up * Tb * (1.0 - Ta);
+  const glm::dvec3 F_up = (F_sun * T_beam + E_sky * Ta) * (1.0 - Tb) + E_up * Tb;
   const glm::dvec3 J = (2.0 * (F_down + F_up) + 3.0 * g * (F_up - F_down) * w_up) / (4.0 * std::numbers::pi);
   return glm::max(J, glm::dvec3(0.0));
 }

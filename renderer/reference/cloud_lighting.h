@@ -59,13 +59,21 @@ double slab_diffuse_transmittance(double tau);
 // [(1/2 + 3/4 mu0) + (1/2 - 3/4 mu0) e^{-(1 - f) tau / mu0}] / (1 + 3/4 (1 - g) tau).
 double slab_beam_transmittance(double tau, double mu0);
 
+// Ground-cloud inter-reflection: 1 / (1 - a R(tau)), R = 1 - slab_diffuse_transmittance(tau)
+// the diffuse reflectance from below of the clouds above a ground of albedo a (per channel;
+// the adding method). Twin of ground_cloud_gain in shaders/slab_transmittance.glsl.
+glm::dvec3 ground_cloud_gain(const glm::dvec3& albedo, double tau);
+
 // Diffuse in-scattered radiance per unit scattering at altitude alt inside layer L
 // (docs/RENDERING.md): vertical optical depths above/below from the nominal extinction
 // sigma_max * density_scale * coverage; with mu0 = max(mu_s, 0.05), the delta-scaled direct
 // beam D = e^{-(1 - f) tau_a / mu0} and T_beam = slab_beam_transmittance(tau_a, mu0):
-// F_down = F_sun (T_beam - D)^+ + E_sky T_a, F_up = (F_sun T_beam + E_sky T_a)(1 - T_b) +
-// E_ground T_b; in-scatter in the P1 approximation towards a direction with up-component
-// w_up: (2 (F_down + F_up) + 3 g (F_up - F_down) w_up) / (4 pi), at least 0.
+// F_down = F_sun (T_beam - D)^+ + E_sky T_a + E_up T_b (1 - T_a), F_up = (F_sun T_beam +
+// E_sky T_a)(1 - T_b) + E_up T_b, where E_up = a E_g is the light the ground sends up: its
+// irradiance E_g under the whole layer (tau_a + tau_b; sun and sky at ground level) with the
+// ground-cloud round trips (ground_cloud_gain); in-scatter in the P1 approximation towards
+// a direction with up-component w_up: (2 (F_down + F_up) + 3 g (F_up - F_down) w_up) / (4 pi),
+// at least 0.
 // Inputs per unit solar irradiance except e_sun: t_atm = sun transmittance at the point,
 // e_sky_here = sky irradiance at the point, t_atm_ground / e_sky_ground at ground level
 // for the same mu_s; ground_albedo rgb.

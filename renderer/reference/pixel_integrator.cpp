@@ -45,7 +45,7 @@ PixelIntegrator::PixelIntegrator(const CloudField& field, const AtmosphereTables
                                  const ReferenceSettings& settings)
     : field_(field), scene_(field.scene()), tables_(tables), settings_(settings),
       e_sun_(kSolarIrradiance[0], kSolarIrradiance[1], kSolarIrradiance[2]),
-      ground_albedo_(atmo::kGroundAlbedo),
+      ground_albedo_(field.scene().ground_albedo),
       camera_atmo_radius_(atmo::radius_for_altitude(field.scene().shell.camera_alt_m)) {
   // The smallest octave extinction scale is a^(n-1); e^{-a^(n-1) tau} < cutoff beyond this.
   const double a_min = std::pow(settings.ms_extinction_scale, std::max(settings.ms_octaves - 1, 0));
@@ -130,8 +130,9 @@ glm::dvec3 PixelIntegrator::ground_radiance(const glm::dvec3& dir, double t_grou
   // sun: delta-Eddington beam transmittance of the clouds' vertical optical depth; sky: diffuse
   const double tau_v = tau * mu_pos;
   const double sun_through = mu_s > 0.0 ? slab_beam_transmittance(tau_v, std::max(mu_pos, 0.05)) : 0.0;
-  const glm::dvec3 E = e_sun_ * (t_atm * mu_pos * sun_through +
-                                 tables_.sky_irradiance(s.ground_alt_m, mu_s) * slab_diffuse_transmittance(tau_v));
+  const glm::dvec3 E = e_sun_ *
+                       (t_atm * mu_pos * sun_through + tables_.sky_irradiance(s.ground_alt_m, mu_s) * slab_diffuse_transmittance(tau_v)) *
+                       ground_cloud_gain(ground_albedo_, tau_v);
   const glm::dvec3 L_ground = ground_albedo_ / kPi * E;
   const atmo::RayInscatter air = air_along_ray(dir, t_ground, true);
   return L_ground * air.transmittance + e_sun_ * air.radiance;

@@ -9,6 +9,7 @@
 
 #include "geodesy/solar_position.h"
 #include "renderer/model/droplet_optics.h"
+#include "renderer/model/scene_constants.h"
 
 namespace cloudsvc::reference {
 
@@ -80,6 +81,7 @@ ReferenceScene make_reference_scene(const ViewRequest& view, const weather::Weat
   s.sun_azimuth_deg = sp.azimuth_deg;
   const double el = sp.elevation_deg * kDegToRad, az = sp.azimuth_deg * kDegToRad;
   s.sun_local = glm::dvec3(std::cos(el) * std::sin(az), std::cos(el) * std::cos(az), std::sin(el));
+  s.ground_albedo = model::ground_albedo_rgb(weather.ground_albedo);
 
   const WindAnchor here{pos, view.unix_time_s};
   const WindAnchor& a = anchor ? *anchor : here;

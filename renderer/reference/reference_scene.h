@@ -96,6 +96,7 @@ struct ReferenceScene {
   double sun_elevation_deg = 0.0;   // geometric, at the camera
   double sun_azimuth_deg = 0.0;
   std::vector<ReferenceLayer> layers;  // at most kMaxCloudLayers, in the weather's order
+  glm::dvec3 ground_albedo{0.0};       // Lambertian, rgb (model::ground_albedo_rgb of the weather)
 };
 
 // anchor: nullptr anchors every layer's field at this view (no displacement), as

@@ -217,7 +217,7 @@ TruthWorld make_scene_world(const reference::ReferenceScene& scene, const refere
   w.sun = scene.sun_local;
   w.sun_irradiance = glm::dvec3(model::kSolarIrradiance[0], model::kSolarIrradiance[1], model::kSolarIrradiance[2]);
   w.sun_angular_radius_rad = model::kSunAngularRadiusDeg * std::numbers::pi / 180.0;
-  w.ground_albedo = reference::atmo::kGroundAlbedo;
+  w.ground_albedo = scene.ground_albedo;
   w.sky_radiance = glm::dvec3(model::kNightSkyRadiance);
   w.aerosol_g = reference::atmo::kMieG;
   for (std::size_t li = 0; li < scene.layers.size() && li < w.cloud_phase.size(); ++li) {

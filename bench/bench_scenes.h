@@ -110,6 +110,10 @@ inline std::string reference_key(const BenchScene& s, int ref_samples) {
                 v.attitude.roll_deg, v.unix_time_s, v.fov_deg, v.width, v.height, ref_samples,
                 static_cast<unsigned>(s.weather.map_seed));
   std::string key = b;
+  if (s.weather.ground_albedo) {  // (absent: the keys of the caches written before it existed)
+    std::snprintf(b, sizeof b, " ground albedo %.17g", *s.weather.ground_albedo);
+    key += b;
+  }
   for (const weather::CloudLayer& l : s.weather.layers) {
     std::snprintf(b, sizeof b, " | %d %.17g %.17g %.17g %.17g %.17g %.17g %.17g", static_cast<int>(l.type), l.base_m,
                   l.top_m, l.coverage, l.density_scale, l.droplet_diameter_um, l.wind.east_mps, l.wind.north_mps);

@@ -107,7 +107,7 @@ CachedImage cached_render(const std::filesystem::path& file, const std::string& 
 // dir: <scene>_<W>x<H>[_ss<N>]_<key hash>.exr.
 inline CachedImage reference_image(const BenchScene& s, const std::filesystem::path& dir, int w, int h,
                                    int ref_samples) {
-  const std::string key = reference_key(s, ref_samples);
+  const std::string key = reference_key(s, ref_samples) + " light model " + std::to_string(reference::kLightModelRevision);
   const std::string samples = ref_samples > 1 ? "_ss" + std::to_string(ref_samples) : "";
   const std::filesystem::path file =
       dir / (slug(s.name) + "_" + std::to_string(w) + "x" + std::to_string(h) + samples + "_" + key_hash(key) + ".exr");

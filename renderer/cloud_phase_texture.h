@@ -30,6 +30,7 @@ class CloudPhaseTexture {
   void bind() const;
   // Rows that hold the fit while their layer's Mie table is computed.
   int pending_rows() const;
+  static constexpr std::size_t gpu_bytes() { return 16u * model::kPhaseTableSamples * gpu::kMaxLayers; }
 
  private:
   struct Row {

@@ -193,7 +193,7 @@ FrameStats CloudRenderer::frame_stats(const FrameContext& frame, const Atmospher
   s.marched_fraction = plan.stride == 0 ? 0.0 : plan.marched_fraction();
   s.gpu_memory_bytes = static_cast<std::int64_t>(field_.gpu_bytes() + AtmosphereLuts::gpu_bytes() +
                                                  GroundShadowMap::gpu_bytes() + composite_.gpu_bytes() +
-                                                 cloud_buffer_.gpu_bytes());
+                                                 cloud_buffer_.gpu_bytes() + (phase_ ? CloudPhaseTexture::gpu_bytes() : 0));
   s.luts_ms = timer_.ms(kLutsPass);
   s.march_ms = timer_.ms(kMarchPass);
   s.resolve_ms = timer_.ms(kResolvePass);

@@ -21,6 +21,7 @@
 #include "common/option_weather.h"
 #include "geodesy/geodetic.h"
 #include "renderer/quality_presets.h"
+#include "service/cloud_phase_option.h"
 #include "service/serve_command_line.h"
 
 namespace cloudsvc {
@@ -181,10 +182,7 @@ void add_quality_flags(CLI::App& cmd, RenderArgs& args, const RenderOptions& def
                "sizes, docs/MORPHOLOGY.md) instead of the thresholded noise field; GPU presets and --quality "
                "reference, not truth; slower on llvmpipe (docs/MORPHOLOGY.md); default off");
   cmd.add_option("--cloud-phase", args.cloud_phase,
-                 "Phase function of the cloud droplets: fit (Jendersie & d'Eon 2023, smooth, grey) or mie (the "
-                 "droplets' Lorenz-Mie phase function per wavelength, with the glory and the fogbow; each new "
-                 "droplet diameter costs 0.5-9 s once, docs/RENDERING.md); every quality; default " +
-                     std::string(model::cloud_phase_model_name(defaults.cloud_phase)))
+                 cloud_phase_help(defaults.cloud_phase, "the render waits for it (every quality, reference and truth too)"))
       ->type_name("MODEL");
 }
 

@@ -19,6 +19,7 @@
 #include "common/option_values.h"
 #include "common/option_weather.h"
 #include "protocol/shm/shm_name.h"
+#include "service/cloud_phase_option.h"
 #include "service/serve_command_line.h"
 
 namespace cloudsvc::cli {
@@ -228,10 +229,7 @@ void add_scene_flags(CLI::App& cmd, ServeCommandLine::Args& args, const ServeOpt
                "sizes, docs/MORPHOLOGY.md) instead of the thresholded noise field; slower on llvmpipe; "
                "default off");
   cmd.add_option("--cloud-phase", args.cloud_phase,
-                 "Phase function of the cloud droplets: fit (Jendersie & d'Eon 2023, smooth, grey) or mie (the "
-                 "droplets' Lorenz-Mie phase function per wavelength, with the glory and the fogbow; each new "
-                 "droplet diameter costs 0.5-9 s once, on the render thread); default " +
-                     std::string(model::cloud_phase_model_name(defaults.cloud_phase)))
+                 cloud_phase_help(defaults.cloud_phase, "on a thread of its own, while the frames go on with the fit"))
       ->type_name("MODEL");
   cmd.add_option("--time", args.time,
                  "Date and time in UTC, ISO 8601 (YYYY-MM-DDTHH:MM[:SS[.fff]]Z or +hh:mm "

@@ -57,9 +57,11 @@ float layer_shadow_optical_depth(int li, vec3 p, float ground_alt, vec3 sun, flo
 //            + E_up T(tau_b) R(tau_a)
 //   F_up   = (F_sun T_beam(tau_a, mu_s) + E_sky T(tau_a)) R(tau_b) + E_up T(tau_b)
 // with T the diffuse and T_beam the beam transmittance above, R = 1 - T, and E_up = a E_g
-// the light a ground of albedo a sends up: its irradiance E_g under the whole layer (sun
-// through T_beam(tau_a + tau_b), sky through T(tau_a + tau_b), both at ground level) with
-// the round trips between ground and cloud (ground_cloud_gain). The radiance
+// the light a ground of albedo a sends up: its irradiance E_g under the layer, as
+// independent columns (a fraction 1 - c of the ground in the clear, c under the layer's
+// full optical depth tau_c: sun through 1 - c + c T_beam(tau_c), sky through
+// 1 - c + c T(tau_c), both at ground level) with the round trips between ground and cloud
+// (ground_cloud_gain(c a, tau_c)). The radiance
 // field is taken in the P1 (diffusion) form I = (Phi + 3 F . w) / (4 pi), fluence
 // Phi = 2 (F_down + F_up), net flux F = (F_up - F_down) up, so the in-scatter into the
 // direction w towards the camera (w_up = w . up) is
@@ -83,11 +85,14 @@ vec3 diffuse_inscatter(CloudLayerGpu L, float alt, float mu_s, vec3 T_atm, float
   float mu0 = max(mu_pos, 0.05);
   float direct_a = mu_pos > 0.0 ? exp(-(1.0 - DELTA_F) * tau_a / mu0) : 0.0;
   float T_beam = mu_pos > 0.0 ? slab_beam_transmittance(tau_a, mu0) : 0.0;
-  float tau_layer = tau_a + tau_b;
-  float T_beam_layer = mu_pos > 0.0 ? slab_beam_transmittance(tau_layer, mu0) : 0.0;
+  // the ground under the layer: a fraction 1 - c in the clear, c under cloud of the layer's
+  // full optical depth (independent columns), with the round trips to the cloud's base
+  float c = clamp(coverage, 0.0, 1.0);
+  float tau_cloud = L.extinction_max * L.density_scale * (L.top_m - L.base_m);
+  float T_sun_ground = 1.0 - c + c * (mu_pos > 0.0 ? slab_beam_transmittance(tau_cloud, mu0) : 0.0);
+  float T_sky_ground = 1.0 - c + c * slab_diffuse_transmittance(tau_cloud);
   vec3 albedo = frame.ground_albedo.rgb;
-  vec3 E_up = albedo * ground_cloud_gain(albedo, tau_layer) *
-              (ground_sun * T_beam_layer + ground_sky * slab_diffuse_transmittance(tau_layer));
+  vec3 E_up = albedo * ground_cloud_gain(albedo * c, tau_cloud) * (ground_sun * T_sun_ground + ground_sky * T_sky_ground);
   vec3 F_down = F_sun * max(T_beam - direct_a, 0.0) + E_sky * Ta + E_up * Tb * (1.0 - Ta);
   vec3 F_up = (F_sun * T_beam + E_sky * Ta) * (1.0 - Tb) + E_up * Tb;
   vec3 J = (2.0 * (F_down + F_up) + 3.0 * TWO_STREAM_MEAN_COSINE * (F_up - F_down) * w_up) / (4.0 * PI);

@@ -209,14 +209,16 @@ TEST(ReferenceClouds, TwoStreamDiffuseByHand) {
   // [(0.5 + 0.375) + (0.5 - 0.375) direct] T
   const double direct = std::exp(-(1.0 - 0.86 * 0.86) * 10.0 / 0.5);
   const double T_beam = (0.875 + 0.125 * direct) * T;
-  // The ground under the whole layer (tau 20): sun and sky at ground level through it, with
-  // the round trips between ground and cloud, 1 / (1 - a (1 - T(20))); it sends up a times that.
-  const double T20 = 1.0 / (1.0 + 0.75 * 0.14 * 20.0);
-  const double T_beam20 = (0.875 + 0.125 * std::exp(-(1.0 - 0.86 * 0.86) * 20.0 / 0.5)) * T20;
-  const double gain = 1.0 / (1.0 - 0.1 * (1.0 - T20));
-  EXPECT_NEAR(ground_cloud_gain(albedo, 20.0).g, gain, 1e-12);
+  // The ground under the layer as independent columns: 0.6 of it in the clear, 0.4 under the
+  // layer's full optical depth (0.05 /m over 1000 m: 50), sun and sky at ground level, with
+  // the round trips between ground and cloud, 1 / (1 - 0.4 a (1 - T(50))); it sends up a
+  // times that.
+  const double T50 = 1.0 / (1.0 + 0.75 * 0.14 * 50.0);
+  const double T_beam50 = (0.875 + 0.125 * std::exp(-(1.0 - 0.86 * 0.86) * 50.0 / 0.5)) * T50;
+  const double gain = 1.0 / (1.0 - 0.4 * 0.1 * (1.0 - T50));
+  EXPECT_NEAR(ground_cloud_gain(0.4 * albedo, 50.0).g, gain, 1e-12);
   EXPECT_NEAR(ground_cloud_gain(glm::dvec3(0.8), 0.0).g, 1.0, 1e-12);  // no cloud: no round trips
-  const double E_up = 0.1 * gain * 2.0 * (0.7 * 0.5 * T_beam20 + 0.12 * T20);
+  const double E_up = 0.1 * gain * 2.0 * (0.7 * 0.5 * (0.6 + 0.4 * T_beam50) + 0.12 * (0.6 + 0.4 * T50));
   EXPECT_NEAR(slab_beam_transmittance(10.0, 0.5), T_beam, 1e-12);
   EXPECT_NEAR(slab_beam_transmittance(0.0, 0.3), 1.0, 1e-12);           // nothing in the way
   EXPECT_NEAR(slab_beam_transmittance(7.0, 2.0 / 3.0) / slab_diffuse_transmittance(7.0), 1.0, 1e-12);  // mu0 = 2/3
@@ -237,7 +239,7 @@ TEST(ReferenceClouds, TwoStreamDiffuseByHand) {
   // Sun below the horizon: no direct term, sky light only (isotropic view, w_up = 0).
   const glm::dvec3 night = two_stream_diffuse(L, alt, -0.1, coverage, e_sun, glm::dvec3(0.0), e_sky, glm::dvec3(0.0),
                                               e_sky_ground, albedo, 0.0);
-  const double E_up_night = 0.1 * gain * 2.0 * 0.12 * T20;
+  const double E_up_night = 0.1 * gain * 2.0 * 0.12 * (0.6 + 0.4 * T50);
   EXPECT_NEAR(night.r, (E_sky * T + E_up_night * T * (1.0 - T) + E_sky * T * (1.0 - T) + E_up_night * T) / (2.0 * kPi),
               1e-12);
 }

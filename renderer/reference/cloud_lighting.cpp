@@ -106,10 +106,14 @@ glm::dvec3 two_stream_diffuse(const ReferenceLayer& L, double alt, double mu_s, 
   const glm::dvec3 F_sun = e_sun * t_atm * mu_pos;        // direct solar flux on a horizontal surface above the layer
   const glm::dvec3 E_sky = e_sun * e_sky_here;
   const double mu0 = std::max(mu_pos, 0.05);
-  const double tau_layer = tau_above + tau_below;
-  const double T_beam_layer = mu_pos > 0.0 ? slab_beam_transmittance(tau_layer, mu0) : 0.0;
-  const glm::dvec3 E_up = ground_albedo * ground_cloud_gain(ground_albedo, tau_layer) * e_sun *
-                          (t_atm_ground * mu_pos * T_beam_layer + e_sky_ground * slab_diffuse_transmittance(tau_layer));
+  // The ground under the layer: a fraction 1 - c in the clear, c under cloud of the layer's
+  // full optical depth (independent columns), with the round trips to the cloud's base.
+  const double c = std::clamp(coverage, 0.0, 1.0);
+  const double tau_cloud = L.sigma_max_per_m * L.density_scale * (L.top_m - L.base_m);
+  const double T_sun_ground = 1.0 - c + c * (mu_pos > 0.0 ? slab_beam_transmittance(tau_cloud, mu0) : 0.0);
+  const double T_sky_ground = 1.0 - c + c * slab_diffuse_transmittance(tau_cloud);
+  const glm::dvec3 E_up = ground_albedo * ground_cloud_gain(ground_albedo * c, tau_cloud) * e_sun *
+                          (t_atm_ground * mu_pos * T_sun_ground + e_sky_ground * T_sky_ground);
   const double direct_above = mu_pos > 0.0 ? std::exp(-(1.0 - g * g) * tau_above / mu0) : 0.0;
   const double T_beam = mu_pos > 0.0 ? slab_beam_transmittance(tau_above, mu0) : 0.0;
   const glm::dvec3 F_down = F_sun * std::max(T_beam - direct_above, 0.0) + E_sky * Ta + E_up * Tb * (1.0 - Ta);

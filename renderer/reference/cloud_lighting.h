@@ -70,8 +70,10 @@ glm::dvec3 ground_cloud_gain(const glm::dvec3& albedo, double tau);
 // beam D = e^{-(1 - f) tau_a / mu0} and T_beam = slab_beam_transmittance(tau_a, mu0):
 // F_down = F_sun (T_beam - D)^+ + E_sky T_a + E_up T_b (1 - T_a), F_up = (F_sun T_beam +
 // E_sky T_a)(1 - T_b) + E_up T_b, where E_up = a E_g is the light the ground sends up: its
-// irradiance E_g under the whole layer (tau_a + tau_b; sun and sky at ground level) with the
-// ground-cloud round trips (ground_cloud_gain); in-scatter in the P1 approximation towards
+// irradiance E_g under the layer as independent columns (1 - c in the clear, c under the
+// layer's full optical depth tau_c = sigma_max * density_scale * thickness; sun and sky at
+// ground level) with the ground-cloud round trips (ground_cloud_gain(c a, tau_c));
+// in-scatter in the P1 approximation towards
 // a direction with up-component w_up: (2 (F_down + F_up) + 3 g (F_up - F_down) w_up) / (4 pi),
 // at least 0.
 // Inputs per unit solar irradiance except e_sun: t_atm = sun transmittance at the point,

@@ -32,6 +32,12 @@
 
 namespace cloudsvc::reference {
 
+// Revision of the light model the reference (and the GPU) computes: part of the key of
+// cached reference images (bench/image_cache.h), so a changed model is never compared from
+// a stale cache. 2: ground-cloud inter-reflection (cloud_lighting.h, ground_cloud_gain);
+// 3: the ground under a layer as independent clear and cloudy columns.
+inline constexpr int kLightModelRevision = 3;
+
 struct ReferenceSettings {
   // Cloud march
   double cloud_step_m = 5.0;         // primary step inside cloud layers for cumulus (scaled per layer)

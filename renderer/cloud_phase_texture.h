@@ -3,8 +3,8 @@
 // per layer slot (rgb = 680 / 550 / 440 nm), read by tabulated_phase in
 // shaders/phase_function.glsl with linear filtering along the angle.
 //
-// A row follows its layer's droplet diameter. A new diameter's table takes ~1 s at 10 um
-// and ~17 s at 50 um on 2 cores to compute (once per process, on a thread of its own,
+// A row follows its layer's droplet diameter. A new diameter's table takes ~0.7 s at 10 um
+// and ~14 s at 50 um on 2 cores to compute (once per process, on a thread of its own,
 // model::mie_phase_table_future). With `wait` the update waits for it (a rendered file or
 // test shows the Mie phase from the first frame); without, the row holds the
 // Jendersie-d'Eon fit at the same angles until the table is ready, and the frames go on

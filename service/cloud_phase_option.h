@@ -13,7 +13,7 @@ namespace cloudsvc {
 inline std::string cloud_phase_help(model::CloudPhaseModel default_model, std::string_view on_new_size) {
   return "Phase function of the cloud droplets: fit (Jendersie & d'Eon 2023, smooth, grey) or mie (the droplets' "
          "Lorenz-Mie phase function per wavelength, with the glory and the fogbow, docs/RENDERING.md); a new "
-         "droplet diameter's Mie table takes 1-17 s to compute, once per process: " +
+         "droplet diameter's Mie table takes 0.2-14 s to compute, once per process: " +
          std::string(on_new_size) + "; default " + model::cloud_phase_model_name(default_model);
 }
 

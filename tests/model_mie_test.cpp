@@ -173,6 +173,24 @@ TEST(Mie, PhaseIntegratesToOneAndToG) {
   }
 }
 
+// mie_phase evaluates an angle and its mirror image (180 deg - theta) from one recurrence:
+// against mie_amplitudes one angle at a time, on a list in no order with mirror pairs,
+// unpaired angles, a repeated angle, 0, 90 and 180 deg.
+TEST(Mie, MirroredAnglesMatchTheSeriesOneAngleAtATime) {
+  const MieCoefficients c = mie_coefficients({1.333, 1e-8}, 140.0);
+  const MieEfficiencies e = mie_efficiencies(c);
+  std::vector<double> deg = {179.9, 0.0, 0.02, 179.98, 90.0, 37.3, 142.7, 142.7, 5.0, 12.345, 180.0, 60.0};
+  std::vector<double> mu;
+  for (double d : deg) mu.push_back(std::cos(d * kPi / 180.0));
+  const std::vector<double> p = mie_phase(c, e.q_sca, mu);
+  ASSERT_EQ(p.size(), mu.size());
+  for (std::size_t i = 0; i < mu.size(); ++i) {
+    const MieAmplitudes s = mie_amplitudes(c, mu[i]);
+    const double one = (std::norm(s.s1) + std::norm(s.s2)) / (2.0 * kPi * c.x * c.x * e.q_sca);
+    EXPECT_NEAR(p[i] / one, 1.0, 1e-9) << deg[i] << " deg";
+  }
+}
+
 // Forward amplitude (optical theorem, B&H 4.76): Q_ext = (4 / x^2) Re S(0), and
 // S1 = S2 at 0 and 180 degrees up to sign (S1(180) = -S2(180)).
 TEST(Mie, OpticalTheoremAndSymmetry) {

@@ -158,46 +158,156 @@ MieAmplitudes mie_amplitudes(const MieCoefficients& c, double mu) {
   return {s1, s2};
 }
 
+namespace {
+
+// The angles of a list grouped in mirror pairs: a base cosine mu >= 0 with the indices of
+// the list's +mu and -mu (-1 when absent). Since pi_n(-mu) = (-1)^(n-1) pi_n(mu) and
+// tau_n(-mu) = (-1)^n tau_n(mu) (B&H 4.47), one recurrence in n serves both angles of a
+// pair once the sums over odd and even n are kept apart.
+struct MirrorAngles {
+  std::vector<double> mu;
+  std::vector<std::ptrdiff_t> plus, minus;
+};
+
+MirrorAngles mirror_angles(const std::vector<double>& cos_theta) {
+  // cos(pi - t) and -cos(t) differ by an ulp or two; a base cosine this close to the other
+  // angle's changes the phase by ~ n^2 kSameCosine ~ 1e-9 relative.
+  constexpr double kSameCosine = 1e-14;
+  std::vector<std::size_t> order(cos_theta.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return std::abs(cos_theta[a]) < std::abs(cos_theta[b]); });
+  MirrorAngles m;
+  for (std::size_t k = 0; k < order.size();) {
+    const double base = std::abs(cos_theta[order[k]]);
+    std::ptrdiff_t plus = -1, minus = -1;
+    for (; k < order.size() && std::abs(cos_theta[order[k]]) - base <= kSameCosine; ++k) {
+      const std::ptrdiff_t i = static_cast<std::ptrdiff_t>(order[k]);
+      if (!std::signbit(cos_theta[order[k]]) && plus < 0) {
+        plus = i;
+      } else if (std::signbit(cos_theta[order[k]]) && minus < 0) {
+        minus = i;
+      } else {
+        break;
+      }
+    }
+    m.mu.push_back(plus >= 0 ? cos_theta[static_cast<std::size_t>(plus)] : -cos_theta[static_cast<std::size_t>(minus)]);
+    m.plus.push_back(plus);
+    m.minus.push_back(minus);
+  }
+  return m;
+}
+
+}  // namespace
+
 // dC_sca/dOmega = (|S1|^2 + |S2|^2) / (2 k^2) and C_sca = Q_sca pi r^2, so with x = k r
 //   p = (|S1|^2 + |S2|^2) / (2 pi x^2 Q_sca).
 // The sums of mie_amplitudes for every angle at once: the series index outside, the angles
 // inside, in real arithmetic over arrays, which the compiler vectorises (a phase table of
-// ~2000 angles over ~1000 droplet sizes is ~10x faster than one angle at a time).
-std::vector<double> mie_phase(const MieCoefficients& c, double q_sca,
-                              const std::vector<double>& cos_theta) {
-  const std::size_t nj = cos_theta.size();
-  std::vector<double> pi_prev(nj, 0.0), pi_n(nj, 1.0), s1r(nj, 0.0), s1i(nj, 0.0), s2r(nj, 0.0), s2i(nj, 0.0);
-  const double* mu = cos_theta.data();
+// ~2000 angles over ~1000 droplet sizes is ~10x faster than one angle at a time), and an
+// angle and its mirror image (theta, 180 deg - theta) from one recurrence: per parity of n
+// the four partial sums P = f a pi, T = f b tau, Q = f a tau, R = f b pi, then
+//   S1(mu)  = P + T over all n,   S1(-mu) = (P - T)_odd - (P - T)_even,
+//   S2(mu)  = Q + R over all n,   S2(-mu) = (R - Q)_odd + (Q - R)_even.
+namespace {
+
+// mie_phase on angles already paired by mirror_angles; out has one value per angle of the
+// list they came from (angle_count).
+std::vector<double> mie_phase_mirrored(const MieCoefficients& c, double q_sca, const MirrorAngles& m,
+                                       std::size_t angle_count) {
+  const std::size_t nb = m.mu.size();
+  // The series' factors per term n = i + 1: f a_n, f b_n (f = (2n+1)/(n(n+1))) and the
+  // recurrence's n, n + 1, (2n+1)/n, (n+1)/n.
   const std::size_t terms = c.a.size();
+  std::vector<double> ar(terms), ai(terms), br(terms), bi(terms), nn(terms), n1(terms), k1(terms), k2(terms);
   for (std::size_t i = 0; i < terms; ++i) {
     const double n = static_cast<double>(i + 1);
     const double f = (2.0 * n + 1.0) / (n * (n + 1.0));
-    const double ar = f * c.a[i].real(), ai = f * c.a[i].imag(), br = f * c.b[i].real(), bi = f * c.b[i].imag();
-    const double k1 = 2.0 * n + 1.0, k2 = n + 1.0, inv_n = 1.0 / n;
-    for (std::size_t j = 0; j < nj; ++j) {
-      const double p = pi_n[j], q = pi_prev[j];
-      const double tau_n = n * mu[j] * p - k2 * q;
-      s1r[j] += ar * p + br * tau_n;
-      s1i[j] += ai * p + bi * tau_n;
-      s2r[j] += ar * tau_n + br * p;
-      s2i[j] += ai * tau_n + bi * p;
-      pi_prev[j] = p;
-      pi_n[j] = (k1 * mu[j] * p - k2 * q) * inv_n;
+    ar[i] = f * c.a[i].real();
+    ai[i] = f * c.a[i].imag();
+    br[i] = f * c.b[i].real();
+    bi[i] = f * c.b[i].imag();
+    nn[i] = n;
+    n1[i] = n + 1.0;
+    k1[i] = (2.0 * n + 1.0) / n;
+    k2[i] = (n + 1.0) / n;
+  }
+  std::vector<double> out(angle_count);
+  const double norm = 1.0 / (2.0 * kPi * c.x * c.x * q_sca);
+  // Two angles at a time in one SIMD register (GCC/Clang vector extension), the series
+  // inside, so the sums stay in registers: streaming them over all angles once per term
+  // made the loop memory-bound.
+  constexpr std::size_t kLanes = 2;
+  using Pair = double __attribute__((vector_size(8 * kLanes)));
+  struct Sums {  // per parity of n: P, T, Q, R (see above), real and imaginary parts
+    Pair p_re{}, p_im{}, t_re{}, t_im{}, q_re{}, q_im{}, r_re{}, r_im{};
+  };
+  for (std::size_t j0 = 0; j0 < nb; j0 += kLanes) {
+    Pair mu, pp, pn;
+    for (std::size_t l = 0; l < kLanes; ++l) {
+      mu[l] = j0 + l < nb ? m.mu[j0 + l] : 0.0;
+      pp[l] = 0.0;
+      pn[l] = 1.0;
+    }
+    Sums odd, even;
+    const auto term = [&, a_r = ar.data(), a_i = ai.data(), b_r = br.data(), b_i = bi.data(), n = nn.data(),
+                       n_1 = n1.data(), c1 = k1.data(), c2 = k2.data()](std::size_t i, Sums& s) __attribute__((always_inline)) {
+      const Pair tau_n = n[i] * mu * pn - n_1[i] * pp;
+      s.p_re += a_r[i] * pn;
+      s.p_im += a_i[i] * pn;
+      s.t_re += b_r[i] * tau_n;
+      s.t_im += b_i[i] * tau_n;
+      s.q_re += a_r[i] * tau_n;
+      s.q_im += a_i[i] * tau_n;
+      s.r_re += b_r[i] * pn;
+      s.r_im += b_i[i] * pn;
+      const Pair next = c1[i] * mu * pn - c2[i] * pp;
+      pp = pn;
+      pn = next;
+    };
+    std::size_t i = 0;
+    for (; i + 1 < terms; i += 2) {  // i = n - 1: i even for odd n
+      term(i, odd);
+      term(i + 1, even);
+    }
+    if (i < terms) term(i, odd);
+    for (std::size_t l = 0; l < kLanes && j0 + l < nb; ++l) {
+      const std::size_t j = j0 + l;
+      if (m.plus[j] >= 0) {
+        const double s1r = odd.p_re[l] + odd.t_re[l] + even.p_re[l] + even.t_re[l];
+        const double s1i = odd.p_im[l] + odd.t_im[l] + even.p_im[l] + even.t_im[l];
+        const double s2r = odd.q_re[l] + odd.r_re[l] + even.q_re[l] + even.r_re[l];
+        const double s2i = odd.q_im[l] + odd.r_im[l] + even.q_im[l] + even.r_im[l];
+        out[static_cast<std::size_t>(m.plus[j])] = (s1r * s1r + s1i * s1i + s2r * s2r + s2i * s2i) * norm;
+      }
+      if (m.minus[j] >= 0) {
+        const double s1r = (odd.p_re[l] - odd.t_re[l]) - (even.p_re[l] - even.t_re[l]);
+        const double s1i = (odd.p_im[l] - odd.t_im[l]) - (even.p_im[l] - even.t_im[l]);
+        const double s2r = (odd.r_re[l] - odd.q_re[l]) + (even.q_re[l] - even.r_re[l]);
+        const double s2i = (odd.r_im[l] - odd.q_im[l]) + (even.q_im[l] - even.r_im[l]);
+        out[static_cast<std::size_t>(m.minus[j])] = (s1r * s1r + s1i * s1i + s2r * s2r + s2i * s2i) * norm;
+      }
     }
   }
-  std::vector<double> out(nj);
-  const double norm = 1.0 / (2.0 * kPi * c.x * c.x * q_sca);
-  for (std::size_t j = 0; j < nj; ++j)
-    out[j] = (s1r[j] * s1r[j] + s1i[j] * s1i[j] + s2r[j] * s2r[j] + s2i[j] * s2i[j]) * norm;
   return out;
 }
 
-MieSingle mie_single(cplx m, double x, const std::vector<double>& cos_theta) {
+MieSingle mie_single_mirrored(cplx m, double x, const MirrorAngles& mirrored, std::size_t angle_count) {
   const MieCoefficients c = mie_coefficients(m, x);
   MieSingle out;
   out.eff = mie_efficiencies(c);
-  out.phase = mie_phase(c, out.eff.q_sca, cos_theta);
+  out.phase = mie_phase_mirrored(c, out.eff.q_sca, mirrored, angle_count);
   return out;
+}
+
+}  // namespace
+
+std::vector<double> mie_phase(const MieCoefficients& c, double q_sca, const std::vector<double>& cos_theta) {
+  return mie_phase_mirrored(c, q_sca, mirror_angles(cos_theta), cos_theta.size());
+}
+
+MieSingle mie_single(cplx m, double x, const std::vector<double>& cos_theta) {
+  return mie_single_mirrored(m, x, mirror_angles(cos_theta), cos_theta.size());
 }
 
 // ---- size distribution -----------------------------------------------------------
@@ -264,6 +374,7 @@ MieAverage mie_size_average(const DropletSpectrum& s, const std::vector<double>&
   const int sizes = static_cast<int>(diam.size());
   const int chunks = (sizes + kChunk - 1) / kChunk;
   const std::size_t nj = cos_theta.size();
+  const MirrorAngles mirrored = mirror_angles(cos_theta);  // the same angles for every size
   std::vector<std::vector<double>> partial(static_cast<std::size_t>(chunks));
   parallel_for(chunks, threads, [&](int k) {
     std::vector<double>& acc = partial[static_cast<std::size_t>(k)];
@@ -271,7 +382,7 @@ MieAverage mie_size_average(const DropletSpectrum& s, const std::vector<double>&
     for (int i = k * kChunk; i < std::min(sizes, (k + 1) * kChunk); ++i) {
       const double d = diam[static_cast<std::size_t>(i)], w = weight[static_cast<std::size_t>(i)];
       if (w == 0.0) continue;
-      const MieSingle one = mie_single(s.m, x_per_um * d, cos_theta);
+      const MieSingle one = mie_single_mirrored(s.m, x_per_um * d, mirrored, nj);
       const double d2 = d * d;
       const double c_sca = w * d2 * one.eff.q_sca;  // proportional to n(d) C_sca(d) dd
       acc[0] += w * d2;

@@ -25,9 +25,9 @@ namespace {
 // The one-line summary every render prints; `suffix` is appended before the newline.
 void print_stats(const std::string& label, const FrameImage& img, const std::string& suffix = "") {
   const double total = static_cast<double>(img.width) * img.height;
-  std::printf("%s: %dx%d in %.1f ms, sun elevation %.2f deg, %lld pixels with cloud (%.1f %%), "
+  std::printf("%s: %dx%d in %.1f ms, sun elevation %.2f deg azimuth %.2f deg, %lld pixels with cloud (%.1f %%), "
               "%.1f density evaluations/px%s\n",
-              label.c_str(), img.width, img.height, img.stats.render_ms, img.stats.sun_elevation_deg,
+              label.c_str(), img.width, img.height, img.stats.render_ms, img.stats.sun_elevation_deg, img.stats.sun_azimuth_deg,
               static_cast<long long>(img.stats.cloud_pixels), 100.0 * static_cast<double>(img.stats.cloud_pixels) / total,
               img.stats.density_evals_per_pixel, suffix.c_str());
   std::fflush(stdout);

@@ -62,6 +62,49 @@ TEST(TruthBandWalker, CrossesBandsAtTheirMajorants) {
   EXPECT_NEAR(down.distance(), 500.0, 1e-6);
 }
 
+// A ray that starts exactly on a band edge (a camera at 2000 m over edges at 1000, 2000 m)
+// goes into the band it heads for: down through the edge's band below to the ground,
+// up through the band above; one on the ground heading down is there already. (It once
+// stayed in the band above the edge and went on through the planet.)
+TEST(TruthBandWalker, RayStartingOnAnEdgeEntersTheBandItHeadsInto) {
+  const TruthWorld w = banded_world({0.0, 1000.0, 2000.0, 3000.0}, {1e-3, 2e-3, 4e-3});
+  const double R = w.radius_m;
+  const glm::dvec3 on_edge(0.0, 0.0, R + 2000.0), up(0.0, 0.0, 1.0);
+  double m = 0.0;
+  BandWalker down(w, on_edge, glm::normalize(glm::dvec3(0.3, 0.0, -1.0)));
+  EXPECT_GT(down.advance(0.1, m), 0.0);
+  EXPECT_EQ(m, 2e-3) << "the band below the edge";
+  EXPECT_EQ(down.advance(1e9, m), kInfinity);
+  EXPECT_EQ(down.end(), BandWalker::End::Ground);
+  EXPECT_LT(down.distance(), 2100.0);  // 2000 m at 17 deg from the vertical: ~2088 m
+  BandWalker rising(w, on_edge, up);
+  rising.advance(0.1, m);
+  EXPECT_EQ(m, 4e-3) << "the band above the edge";
+  BandWalker grounded(w, glm::dvec3(0.0, 0.0, R), -up);
+  EXPECT_EQ(grounded.advance(1e-9, m), kInfinity);
+  EXPECT_EQ(grounded.end(), BandWalker::End::Ground);
+  EXPECT_EQ(grounded.distance(), 0.0);
+}
+
+// Seen from 2000 m, the altitude of a band edge, straight down onto an overcast stratus
+// deck: every pixel of the truth is opaque cloud, as in the model reference, and no
+// density the paths meet exceeds its majorant.
+TEST(TruthRenderer, CameraOnABandEdgeSeesTheDeckBelow) {
+  ViewRequest v;
+  v.position = {47.45, 8.56, 2000.0};
+  v.attitude = {315.0, -60.0, 0.0};
+  v.unix_time_s = *geo::parse_utc_iso8601("2026-06-21T10:00:00Z");
+  v.width = 3;
+  v.height = 2;
+  v.fov_deg = 16.0;
+  TruthSettings ts;
+  ts.spp = 4;
+  const TruthImage t = render_truth(v, *weather::preset("overcast-stratus"), ts);
+  EXPECT_EQ(t.counters.majorant_violations, 0u);
+  for (int i = 0; i < v.width * v.height; ++i)
+    EXPECT_GT(t.image.rgba[static_cast<std::size_t>(i) * 4 + 3], 0.99f) << "pixel " << i << ": cloud opacity";
+}
+
 TEST(TruthBandWalker, GrazingRayReentersTheBandItLeft) {
   // A horizontal ray at 1500 m stays in band 1 (curvature only raises it): 1000..2000 m
   // is left through the 2000 m sphere at sqrt((R+2000)^2 - (R+1500)^2).

@@ -26,8 +26,18 @@ BandWalker::BandWalker(const TruthWorld& world, const glm::dvec3& x0, const glm:
     band_ = bands - 1;
     return;
   }
-  const auto it = std::upper_bound(world.band_edges.begin(), world.band_edges.end(), h0_);
-  band_ = std::clamp(static_cast<int>(it - world.band_edges.begin()) - 1, 0, bands - 1);
+  // The band the ray goes into: a start on an edge belongs to the band below when the ray
+  // heads down (find_segment takes only crossings strictly ahead, so it would never see
+  // the edge it starts on and the ray would cross the planet in the band above).
+  const auto& e = world.band_edges;
+  const auto it = mu_ < 0.0 ? std::lower_bound(e.begin(), e.end(), h0_) : std::upper_bound(e.begin(), e.end(), h0_);
+  band_ = static_cast<int>(it - e.begin()) - 1;
+  if (band_ < 0 && mu_ < 0.0) {  // on or below the ground, heading down: there already
+    band_ = -1;
+    end_ = End::Ground;
+    return;
+  }
+  band_ = std::clamp(band_, 0, bands - 1);
 }
 
 void BandWalker::find_segment() {

@@ -9,7 +9,8 @@
 // shell_crossings.h, one band at a time: inside band b the ray leaves through the outer
 // sphere at its far root, or enters the inner sphere at its near root if that lies ahead.
 // A band is re-entered only through a root strictly beyond the current distance, so a
-// point on a boundary never re-detects the sphere it has just crossed. Bands the world
+// point on a boundary never re-detects the sphere it has just crossed; a ray that starts
+// on a boundary starts in the band it heads into (below it when it heads down). Bands the world
 // refines locally (TruthWorld::local) are cut into stretches of local_stretch_m, each with
 // its own majorant.
 #pragma once

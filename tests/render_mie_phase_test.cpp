@@ -143,8 +143,9 @@ TEST(MiePhaseImage, WithoutWaitingTheFitStandsInUntilTheTableIsReady) {
   const FrameImage fit = render_deck(shared_renderer(), w, v);
   std::printf("first frames: %d table(s) pending, RMSE against the fit %.2e\n", before.stats.phase_tables_pending,
               reference::compare_images(before, fit).rmse);
-  if (before.stats.phase_tables_pending == 1)  // (the table takes seconds, the frames milliseconds)
+  if (before.stats.phase_tables_pending == 1) {  // (the table takes seconds, the frames milliseconds)
     EXPECT_LT(reference::compare_images(before, fit).rmse, 1e-4 * mean_luminance(fit));
+  }
   model::mie_phase_table(16.7);  // waits for the table
   const FrameImage after = render_deck(service, w, v);
   const FrameImage waited = render_deck(mie_renderer(), w, v);

@@ -198,21 +198,16 @@ MirrorAngles mirror_angles(const std::vector<double>& cos_theta) {
   return m;
 }
 
-}  // namespace
-
-// dC_sca/dOmega = (|S1|^2 + |S2|^2) / (2 k^2) and C_sca = Q_sca pi r^2, so with x = k r
-//   p = (|S1|^2 + |S2|^2) / (2 pi x^2 Q_sca).
-// The sums of mie_amplitudes for every angle at once: the series index outside, the angles
-// inside, in real arithmetic over arrays, which the compiler vectorises (a phase table of
-// ~2000 angles over ~1000 droplet sizes is ~10x faster than one angle at a time), and an
-// angle and its mirror image (theta, 180 deg - theta) from one recurrence: per parity of n
-// the four partial sums P = f a pi, T = f b tau, Q = f a tau, R = f b pi, then
-//   S1(mu)  = P + T over all n,   S1(-mu) = (P - T)_odd - (P - T)_even,
-//   S2(mu)  = Q + R over all n,   S2(-mu) = (R - Q)_odd + (Q - R)_even.
-namespace {
-
 // mie_phase on angles already paired by mirror_angles; out has one value per angle of the
 // list they came from (angle_count).
+//
+// dC_sca/dOmega = (|S1|^2 + |S2|^2) / (2 k^2) and C_sca = Q_sca pi r^2, so with x = k r
+//   p = (|S1|^2 + |S2|^2) / (2 pi x^2 Q_sca).
+// The sums of mie_amplitudes for a pair of base angles at a time, the series index inside,
+// and each base angle's mirror image (theta, 180 deg - theta) from the same recurrence: per
+// parity of n the four partial sums P = f a pi, T = f b tau, Q = f a tau, R = f b pi, then
+//   S1(mu)  = P + T over all n,   S1(-mu) = (P - T)_odd - (P - T)_even,
+//   S2(mu)  = Q + R over all n,   S2(-mu) = (R - Q)_odd + (Q - R)_even.
 std::vector<double> mie_phase_mirrored(const MieCoefficients& c, double q_sca, const MirrorAngles& m,
                                        std::size_t angle_count) {
   const std::size_t nb = m.mu.size();
@@ -234,9 +229,9 @@ std::vector<double> mie_phase_mirrored(const MieCoefficients& c, double q_sca, c
   }
   std::vector<double> out(angle_count);
   const double norm = 1.0 / (2.0 * kPi * c.x * c.x * q_sca);
-  // Two angles at a time in one SIMD register (GCC/Clang vector extension), the series
-  // inside, so the sums stay in registers: streaming them over all angles once per term
-  // made the loop memory-bound.
+  // Two base angles in one SIMD register (GCC/Clang vector extension) with the sums in
+  // registers: the series over all angles at once, streaming the sums through memory once
+  // per term, was memory-bound (and, bounds-checked under AddressSanitizer, ~100x slower).
   constexpr std::size_t kLanes = 2;
   using Pair = double __attribute__((vector_size(8 * kLanes)));
   struct Sums {  // per parity of n: P, T, Q, R (see above), real and imaginary parts

@@ -3,19 +3,19 @@
 # deck and a sunset deck, each rendered by the GPU (default preset; Jendersie-d'Eon fit and
 # Lorenz-Mie phase) next to the path-traced truth of the same view (`--quality truth`).
 #
-#   bash scripts/gallery.sh [OUT_DIR (docs/img/gallery)]     # needs build/bin/cloudsvc
+#   bash scripts/gallery.sh                                  # needs build/bin/cloudsvc
 #   GALLERY_SIZE=96 GALLERY_SPP=256 GALLERY_ZOOM=3 bash scripts/gallery.sh
 #                      # square image size, truth paths per pixel, PNG enlargement
 #
 # Every image of a row is shown with the same exposure, from the row's truth: PNG =
 # sRGB(x / (1 + x)), x = radiance / (mean radiance of the truth image), so brightness
 # differences between the columns are the renderers', not an auto-exposure's; under each
-# image its mean radiance (green) over the truth's. Writes
-# OUT_DIR/*.png and docs/GALLERY.md (the table, the command, the numbers); the linear EXR
-# renders go to a temporary directory.
+# image its mean radiance (green) over the truth's. Writes docs/img/gallery/*.png and
+# docs/GALLERY.md (the table, the command, the numbers); the linear EXR renders go to a
+# temporary directory.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-out="${1:-docs/img/gallery}"
+out=docs/img/gallery  # docs/GALLERY.md links the images there
 size="${GALLERY_SIZE:-96}"
 spp="${GALLERY_SPP:-256}"
 zoom="${GALLERY_ZOOM:-3}"  # the PNGs are enlarged this many times, pixels kept square
@@ -109,11 +109,9 @@ for row in "${rows[@]}"; do
   wflag="$weather"
   [ -f "$work/$weather.json" ] && wflag="$work/$weather.json"
   read -r -a view_flags <<<"$view"
-  cells=()
   truth_file=""
   for kind in $columns; do
     render "$work/$name-$kind.exr" "$kind" "${view_flags[@]}" --weather "$wflag"
-    cells+=("$kind")
     case "$kind" in truth-*) truth_file="$work/$name-$kind.exr" ;; esac
     echo "gallery: $name $kind" >&2
   done
@@ -124,9 +122,8 @@ for row in "${rows[@]}"; do
   {
     echo "**${caption}.**"
     echo
-    header="|" rule="|" images="|" secs="|"
-    for i in "${!cells[@]}"; do
-      k="${cells[$i]}"
+    header="|" rule="|" images="|" ratios="|"
+    for k in $columns; do
       to_png "$work/$name-$k.exr" "$out/$name-$k.png" "$scale"
       ratio="$(awk -v a="$(mean_green "$work/$name-$k.exr")" -v m="$mean" 'BEGIN { printf "%.3f", a / m }')"
       case "$k" in
@@ -135,9 +132,9 @@ for row in "${rows[@]}"; do
       header+=" ${label} |"
       rule+="---|"
       images+=" ![${name} ${label}](img/gallery/${name}-${k}.png) |"
-      secs+=" ${ratio} × truth |"
+      ratios+=" ${ratio} × truth |"
     done
-    echo "$header"; echo "$rule"; echo "$images"; echo "$secs"
+    echo "$header"; echo "$rule"; echo "$images"; echo "$ratios"
     echo
   } >> "$md"
 done

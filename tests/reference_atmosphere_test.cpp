@@ -7,10 +7,10 @@
 #include <cstdio>
 #include <numbers>
 
-#include "geodesy/utc_time.h"
 #include "renderer/reference/atmosphere_tables.h"
 #include "renderer/reference/reference_atmosphere.h"
 #include "renderer/reference/reference_renderer.h"
+#include "tests/make_view.h"
 
 namespace cloudsvc::reference {
 namespace {
@@ -155,14 +155,7 @@ void sky_irradiance_facts() {
 }
 
 ViewRequest view(double alt, double heading, double pitch, const char* time, int w, int h, double fov) {
-  ViewRequest v;
-  v.position = {47.45, 8.56, alt};
-  v.attitude = {heading, pitch, 0.0};
-  v.unix_time_s = *geo::parse_utc_iso8601(time);
-  v.width = w;
-  v.height = h;
-  v.fov_deg = fov;
-  return v;
+  return test::make_view(47.45, 8.56, alt, heading, pitch, time, w, h, fov);
 }
 
 // Looking straight at the noon sun (elevation 66 deg) with a field of view smaller than the

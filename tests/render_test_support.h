@@ -14,6 +14,7 @@
 #include "renderer/cloud_renderer.h"
 #include "renderer/gl/egl_context.h"
 #include "renderer/image_output.h"
+#include "tests/make_view.h"
 #include "weather/presets.h"
 
 namespace cloudsvc::test {
@@ -24,18 +25,6 @@ inline CloudRenderer& shared_renderer() {
   static std::unique_ptr<gl::EglContext> context = std::make_unique<gl::EglContext>();
   static std::unique_ptr<CloudRenderer> renderer = std::make_unique<CloudRenderer>();
   return *renderer;
-}
-
-inline ViewRequest make_view(double lat, double lon, double alt, double heading, double pitch,
-                             const std::string& time_utc, int w = 160, int h = 90, double fov = 60.0) {
-  ViewRequest v;
-  v.position = {lat, lon, alt};
-  v.attitude = {heading, pitch, 0.0};
-  v.unix_time_s = *geo::parse_utc_iso8601(time_utc);
-  v.width = w;
-  v.height = h;
-  v.fov_deg = fov;
-  return v;
 }
 
 // Writes img as PNG to $CLOUDSVC_TEST_IMAGES/<name>.png when that variable is set (for

@@ -8,9 +8,9 @@
 #include <cmath>
 #include <cstdio>
 
-#include "geodesy/utc_time.h"
 #include "renderer/reference/reference_renderer.h"
 #include "renderer/truth/truth_renderer.h"
+#include "tests/make_view.h"
 #include "weather/cloud_layer.h"
 
 namespace cloudsvc {
@@ -38,12 +38,7 @@ struct Pair {
 // 2 x 2 px over 10 deg from 100 m, straight down (the ground) or up (the deck's base),
 // Zurich, 2026-06-21 10:00 UTC (sun 60 deg high).
 Pair measure(double albedo, double pitch_deg) {
-  ViewRequest v;
-  v.position = {47.45, 8.56, 100.0};
-  v.attitude = {0.0, pitch_deg, 0.0};
-  v.unix_time_s = *geo::parse_utc_iso8601("2026-06-21T10:00:00Z");
-  v.width = v.height = 2;
-  v.fov_deg = 10.0;
+  const ViewRequest v = test::make_view(47.45, 8.56, 100.0, 0.0, pitch_deg, "2026-06-21T10:00:00Z", 2, 2, 10.0);
   const weather::Weather w = deck_over(albedo);
   const FrameImage ref = reference::render_reference(v, w, {});
   truth::TruthSettings ts;

@@ -21,6 +21,7 @@
 #include "renderer/truth/path_tracer.h"
 #include "renderer/truth/scene_world.h"
 #include "renderer/truth/truth_renderer.h"
+#include "tests/make_view.h"
 #include "weather/presets.h"
 
 namespace cloudsvc::truth {
@@ -90,13 +91,7 @@ TEST(TruthBandWalker, RayStartingOnAnEdgeEntersTheBandItHeadsInto) {
 // deck: every pixel of the truth is opaque cloud, as in the model reference, and no
 // density the paths meet exceeds its majorant.
 TEST(TruthRenderer, CameraOnABandEdgeSeesTheDeckBelow) {
-  ViewRequest v;
-  v.position = {47.45, 8.56, 2000.0};
-  v.attitude = {315.0, -60.0, 0.0};
-  v.unix_time_s = *geo::parse_utc_iso8601("2026-06-21T10:00:00Z");
-  v.width = 3;
-  v.height = 2;
-  v.fov_deg = 16.0;
+  const ViewRequest v = test::make_view(47.45, 8.56, 2000.0, 315.0, -60.0, "2026-06-21T10:00:00Z", 3, 2, 16.0);
   TruthSettings ts;
   ts.spp = 4;
   const TruthImage t = render_truth(v, *weather::preset("overcast-stratus"), ts);
@@ -566,13 +561,8 @@ SppComparison compare_spp(const TruthImage& a, const TruthImage& b) {
 // scatters too widely for its ratio to be a stable test); no majorant violation or lost
 // path; the image does not depend on the thread count.
 TEST(TruthRenderer, ConvergesWithSppAndIsThreadCountIndependent) {
-  ViewRequest v;
-  v.position = {47.45, 8.56, 600.0};  // below the cumulus bases (1200 m): cloud and sky pixels
-  v.attitude = {270.0, 15.0, 0.0};
-  v.unix_time_s = *geo::parse_utc_iso8601("2026-06-21T14:00:00Z");
-  v.width = 8;
-  v.height = 5;
-  v.fov_deg = 60.0;
+  // below the cumulus bases (1200 m): cloud and sky pixels
+  const ViewRequest v = test::make_view(47.45, 8.56, 600.0, 270.0, 15.0, "2026-06-21T14:00:00Z", 8, 5, 60.0);
   TruthSettings s16;
   s16.spp = 16;
   s16.seed = 3;

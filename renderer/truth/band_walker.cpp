@@ -33,7 +33,6 @@ BandWalker::BandWalker(const TruthWorld& world, const glm::dvec3& x0, const glm:
   const auto it = mu_ < 0.0 ? std::lower_bound(e.begin(), e.end(), h0_) : std::upper_bound(e.begin(), e.end(), h0_);
   band_ = static_cast<int>(it - e.begin()) - 1;
   if (band_ < 0 && mu_ < 0.0) {  // on or below the ground, heading down: there already
-    band_ = -1;
     end_ = End::Ground;
     return;
   }

@@ -8,9 +8,9 @@
 // frames (median render_ms) with the GPU renderer.
 //
 // Sweep (not the full product): one knob at a time around the centre (the RenderQuality
-// defaults: 64 log steps, t_ref 1000 m, 6 light steps, 3 octaves) over
+// defaults: 64 log steps, t_ref 1000 m, 6 light steps) over
 //   primary steps {16, 24, 32, 48, 64, 96, 128, 192}, light steps {2, 3, 4, 6, 8, 12},
-//   octaves {1, 2, 3, 4}, step distribution {uniform, log t_ref 250/1000/4000 m},
+//   step distribution {uniform, log t_ref 250/1000/4000 m},
 // a primary x light grid {24, 32, 48, 96} x {3, 4, 8}, the naive baseline (uniform 64
 // steps, 6 light steps) and the named presets (renderer/quality_presets.h).
 //
@@ -95,7 +95,7 @@ struct Options {
 
 struct Config {
   std::string label;  // e.g. "P64 L6 O3 log1000"
-  std::string group;  // centre, primary, light, octaves, distribution, grid, naive, preset:<name>
+  std::string group;  // centre, primary, light, distribution, grid, naive, preset:<name>
   RenderQuality q;
 };
 
@@ -114,9 +114,9 @@ struct Row {
 std::string knob_label(const RenderQuality& q) {
   char b[128];
   if (q.step_growth_ref_m > 0)
-    std::snprintf(b, sizeof b, "P%d L%d O%d log%.0f", q.primary_steps, q.light_steps, q.ms_octaves, q.step_growth_ref_m);
+    std::snprintf(b, sizeof b, "P%d L%d log%.0f", q.primary_steps, q.light_steps, q.step_growth_ref_m);
   else
-    std::snprintf(b, sizeof b, "P%d L%d O%d uniform", q.primary_steps, q.light_steps, q.ms_octaves);
+    std::snprintf(b, sizeof b, "P%d L%d uniform", q.primary_steps, q.light_steps);
   std::string l = b;
   if (!q.ground_shadow_map) l += " shadows/px";
   if (q.ground_shadow_map && q.light_volume) l += " lightvol";
@@ -130,11 +130,10 @@ std::string knob_label(const RenderQuality& q) {
   return l;
 }
 
-RenderQuality knobs(int p, int l, int o, double tref) {
+RenderQuality knobs(int p, int l, double tref) {
   RenderQuality q;
   q.primary_steps = p;
   q.light_steps = l;
-  q.ms_octaves = o;
   q.step_growth_ref_m = tref;
   return q;
 }
@@ -199,15 +198,13 @@ std::vector<Config> sweep(bool quick) {
   add("naive", *quality_preset("naive"));
   const std::vector<int> primary = quick ? std::vector<int>{32, 128} : std::vector<int>{16, 24, 32, 48, 64, 96, 128, 192};
   const std::vector<int> light = quick ? std::vector<int>{3} : std::vector<int>{2, 3, 4, 6, 8, 12};
-  const std::vector<int> octaves = quick ? std::vector<int>{1} : std::vector<int>{1, 2, 3, 4};
   const std::vector<double> tref = quick ? std::vector<double>{0.0} : std::vector<double>{0.0, 250.0, 1000.0, 4000.0};
-  for (int p : primary) add("primary", knobs(p, c.light_steps, c.ms_octaves, c.step_growth_ref_m));
-  for (int l : light) add("light", knobs(c.primary_steps, l, c.ms_octaves, c.step_growth_ref_m));
-  for (int o : octaves) add("octaves", knobs(c.primary_steps, c.light_steps, o, c.step_growth_ref_m));
-  for (double t : tref) add("distribution", knobs(c.primary_steps, c.light_steps, c.ms_octaves, t));
+  for (int p : primary) add("primary", knobs(p, c.light_steps, c.step_growth_ref_m));
+  for (int l : light) add("light", knobs(c.primary_steps, l, c.step_growth_ref_m));
+  for (double t : tref) add("distribution", knobs(c.primary_steps, c.light_steps, t));
   if (!quick)
     for (int p : {24, 32, 48, 96})
-      for (int l : {3, 4, 8}) add("grid", knobs(p, l, c.ms_octaves, c.step_growth_ref_m));
+      for (int l : {3, 4, 8}) add("grid", knobs(p, l, c.step_growth_ref_m));
   for (const auto& [name, q] : skip_configs()) out.push_back({knob_label(q), "skip:" + name, q});
   // (labels of the skip rows repeat the knobs; the group names the skip)
   for (const std::string& name : quality_preset_names()) {
@@ -439,12 +436,12 @@ std::string csv_num(double v) {
 // that readers of the earlier columns are unaffected.
 void write_csv(const fs::path& file, const std::vector<Row>& rows) {
   std::ofstream f(file);
-  f << "scene,config,group,primary_steps,light_steps,ms_octaves,step_growth_ref_m,median_ms,density_evals_per_px,"
+  f << "scene,config,group,primary_steps,light_steps,step_growth_ref_m,median_ms,density_evals_per_px,"
        "texture_bytes,rmse,relative_rmse,psnr_db,max_abs_error,oiio_rmse,opacity_rmse,rmse_over_naive,cloud_pixels,"
        "cloud_relative_error,opacity_bias\n";
   for (const Row& r : rows)
     f << '"' << r.scene << "\",\"" << r.label << "\"," << r.group << ',' << r.q.primary_steps << ',' << r.q.light_steps << ','
-      << r.q.ms_octaves << ',' << r.q.step_growth_ref_m << ',' << r.median_ms << ',' << r.evals_px << ','
+      << r.q.step_growth_ref_m << ',' << r.median_ms << ',' << r.evals_px << ','
       << static_cast<long long>(r.texture_bytes) << ',' << r.rmse << ',' << r.rel_rmse << ',' << r.psnr << ','
       << r.max_err << ',' << r.oiio_rmse << ',' << r.opacity_rmse << ',' << csv_num(r.rmse_over_naive) << ','
       << r.cloud_px << ',' << csv_num(r.cloud_rel) << ',' << r.opacity_bias << '\n';

@@ -16,6 +16,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -82,40 +83,29 @@ int main(int argc, char** argv) {
   app.add_option("--seed", seed, "random seed");
   app.add_option("--tau", taus, "optical depths")->check(CLI::Range(0.01, 1000.0));
   app.add_option("--sun", suns, "sun zenith angles, degrees")->check(CLI::Range(0.0, 85.0));
-  int octaves = cloudsvc::RenderQuality{}.ms_octaves;
-  const SlabRendererModelOptions shader_model;
-  bool p1 = shader_model.p1_diffuse, eddington = shader_model.eddington_beam;
-  double mean_cosine = shader_model.mean_cosine, delta_f = shader_model.delta_f, sun_tau_scale = 1.0;
-  app.add_option("--octaves", octaves, "renderer model: sun octaves (light-model experiments)")->check(CLI::Range(1, 8));
-  app.add_option("--p1", p1, "renderer model: P1 (diffusion) in-scatter of the diffuse field (1/0)");
-  app.add_option("--delta-f", delta_f, "renderer model: delta-scaling forward fraction")->check(CLI::Range(0.0, 0.99));
-  app.add_option("--sun-tau-scale", sun_tau_scale, "renderer model: sun optical-depth scale")->check(CLI::Range(0.01, 1.0));
-  app.add_option("--eddington", eddington, "renderer model: Eddington beam transmittance (1/0)");
-  app.add_option("--mean-cosine", mean_cosine, "renderer model: two-stream mean cosine")->check(CLI::Range(0.0, 0.99));
+  bool ms_column = false;
+  double ms_scale = 1.0;
+  app.add_flag("--ms-source-column", ms_column,
+               "renderer model: the diffuse source from a Monte Carlo column computed for each case instead of the "
+               "table's interpolation (tells the light model's error from the table's)");
+  app.add_option("--ms-source-scale", ms_scale, "photon multiplier of those columns")->check(CLI::Range(0.001, 1000.0));
   CLI11_PARSE(app, argc, argv);
 
   const auto t0 = std::chrono::steady_clock::now();
   const double d_um = 14.0;
   std::printf("## Slab multiple scattering: renderer model vs Monte Carlo\n\n");
   std::printf("Homogeneous conservative slab, JdD phase for d = %g um (mean cosine %.4f), sigma_t = %.4g 1/m "
-              "(N0 = 300 cm^-3, Q_ext = 2), black ground, no atmosphere, E_sun = 1. Renderer model: "
-              "sun single scattering (--octaves), delta-Eddington two-stream diffuse term in the P1 form (g = 0.86, "
-              "f = g^2; --p1 0 --eddington 0 --delta-f 0 --octaves 3 = the earlier model), light march capped at "
-              "4 km; converged = 4096 primary steps, 64 steps = shader default (jitter-averaged). "
-              "err = (model - MC) / MC. View 60 in the solar plane, observer looking away from / towards the sun.\n",
-              d_um, jdd_mean_cosine(jdd_params(d_um)), cloud_extinction_per_m(d_um));
+              "(N0 = 300 cm^-3, Q_ext = 2), black ground, no atmosphere, E_sun = 1. Renderer model: the peak beam "
+              "(single scattering and the light scattered only through the diffraction peak) over the light march, "
+              "capped at 4 km, plus the diffuse source %s (renderer/model/ms_source_table.h); converged = 4096 "
+              "primary steps, 64 steps = shader default (jitter-averaged). err = (model - MC) / MC. View 60 in the "
+              "solar plane, observer looking away from / towards the sun.\n",
+              d_um, jdd_mean_cosine(jdd_params(d_um)), cloud_extinction_per_m(d_um),
+              ms_column ? "from a Monte Carlo column per case" : "table");
 
   SlabRendererModelOptions converged = converged_renderer_model_options();
   SlabRendererModelOptions shader64;  // RenderQuality defaults, 1 m step floor
   shader64.jitter_samples = 16;
-  for (SlabRendererModelOptions* m : {&converged, &shader64}) {
-    m->ms_octaves = octaves;
-    m->p1_diffuse = p1;
-    m->eddington_beam = eddington;
-    m->delta_f = delta_f;
-    m->sun_tau_scale = sun_tau_scale;
-    m->mean_cosine = mean_cosine;
-  }
 
   std::vector<Row> rows;
   double mc_seconds = 0.0;
@@ -132,6 +122,17 @@ int main(int argc, char** argv) {
       for (const ViewCase& v : kViews) o.views.push_back(v.v);
       r.mc = run_slab_monte_carlo(slab, o);
       mc_seconds += r.mc.seconds;
+      MsSourceColumn column;
+      if (ms_column) {
+        MsSourceOptions mo;
+        mo.photons = static_cast<std::uint64_t>(ms_scale * 2.0e6 / (1.0 + tau)) + 2000;
+        mo.threads = threads;
+        mo.seed = seed + 1;
+        column = compute_ms_source_column(tau, std::cos(sun * std::numbers::pi / 180.0), jdd_params(d_um), mo);
+        mc_seconds += column.seconds;
+        converged.ms_source_column = &column;
+        shader64.ms_source_column = &column;
+      }
       for (const ViewCase& v : kViews) {
         r.model_top.push_back(slab_renderer_model_radiance(slab, v.v, true, converged).radiance);
         r.model_bottom.push_back(slab_renderer_model_radiance(slab, v.v, false, converged).radiance);

@@ -10,6 +10,7 @@
 #include "renderer/density_programs.h"
 #include "renderer/dome_field.h"
 #include "renderer/frame_buffers.h"
+#include "renderer/ms_source_texture.h"
 
 namespace cloudsvc {
 
@@ -17,6 +18,8 @@ struct CloudPassInputs {
   const FrameBuffers& frame;
   const CloudFieldTextures& field;
   const AtmosphereLuts& atmosphere;
+  // The sun's multiple-scattering source table (renderer/ms_source_texture.h).
+  const MsSourceTexture& ms_source;
   // The cumulus dome fields, where this frame draws dome layers; the passes then run their
   // programs' dome variant (renderer/density_programs.h).
   const DomeField* domes = nullptr;
@@ -34,6 +37,7 @@ struct CloudPassInputs {
     frame.bind();
     field.bind();
     atmosphere.bind_lookups();
+    ms_source.bind();
     if (domes) domes->bind();
     if (phase) phase->bind();
   }

@@ -59,8 +59,7 @@ struct FrameUniforms {
   float march_reach_m;        // farthest cloud a ray can see over the horizon
   float weather_map_height;   // texels
   float step_growth_ref_m;    // t_ref of the primary-step distribution (0 = uniform steps)
-  int primary_steps, light_steps, ms_octaves, ground_shadow_steps;
-  float ms_extinction_scale, ms_energy_scale, ms_eccentricity_scale;  // Wrenninge octaves a, b, c
+  int primary_steps, light_steps, ground_shadow_steps;
   float light_march_cutoff_tau;  // light marches stop past this optical depth (1e30 = never)
   float long_step_factor;        // probe steps in empty air are this many times longer (1 = off)
   float detail_noise_mean;       // mean value of the detail noise (level of detail)
@@ -78,6 +77,6 @@ struct FrameUniforms {
 };
 
 static_assert(sizeof(CloudLayerGpu) == 11 * 16, "std140 layout");
-static_assert(sizeof(FrameUniforms) == 64 + 20 * 16 + gpu::kMaxLayers * 11 * 16, "std140 layout");
+static_assert(sizeof(FrameUniforms) == 64 + 19 * 16 + gpu::kMaxLayers * 11 * 16, "std140 layout");
 
 }  // namespace cloudsvc

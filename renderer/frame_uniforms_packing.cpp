@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "renderer/model/droplet_optics.h"
+#include "renderer/model/ms_source_table.h"
 #include "renderer/model/phase_function.h"
 
 namespace cloudsvc {
@@ -72,20 +73,15 @@ FrameUniforms pack_frame_uniforms(const FrameContext& c, const RenderQuality& qu
 
   u.primary_steps = quality.primary_steps;
   u.light_steps = quality.light_steps;
-  u.ms_octaves = quality.ms_octaves;
   u.ground_shadow_steps = quality.ground_shadow_steps;
-  u.ms_extinction_scale = static_cast<float>(quality.ms_extinction_scale);
-  u.ms_energy_scale = static_cast<float>(quality.ms_energy_scale);
-  u.ms_eccentricity_scale = static_cast<float>(quality.ms_eccentricity_scale);
   u.step_growth_ref_m = static_cast<float>(quality.step_growth_ref_m);
   u.long_step_factor = static_cast<float>(std::max(1, quality.long_step_factor));
   u.level_of_detail = quality.level_of_detail ? 1 : 0;
   u.detail_noise_mean = resources.detail_mean;
-  // Light marches stop once the sun's beam is spent: past the cut-off for the octave that
-  // decays slowest (octave k decays as e^(-a^k tau), cloud_march.comp: the last for a < 1,
-  // the first for a >= 1).
-  const double slowest = std::pow(std::min(quality.ms_extinction_scale, 1.0), std::max(0, quality.ms_octaves - 1));
-  const double light_cut = quality.light_march_cutoff > 0.0 ? quality.light_march_cutoff / slowest : 1e30;
+  // Light marches stop once the sun's beam is spent: past the cut-off for the peak beam,
+  // which decays as e^(-w_D tau) (peak_beam_phase, shaders/phase_function.glsl).
+  const double light_cut =
+      quality.light_march_cutoff > 0.0 ? quality.light_march_cutoff / model::peak_beam_slowest_decay() : 1e30;
   u.light_march_cutoff_tau = static_cast<float>(std::min(light_cut, 1e30));
   u.coverage_pyramid = quality.coverage_pyramid && resources.coverage_pyramid ? 1 : 0;
 

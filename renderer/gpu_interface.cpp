@@ -7,6 +7,7 @@
 #include "renderer/api/frame_image.h"
 #include "renderer/model/atmosphere_constants.h"
 #include "renderer/model/mie_phase_table.h"
+#include "renderer/model/ms_source_table.h"
 #include "renderer/model/scene_constants.h"
 
 namespace cloudsvc::gpu {
@@ -64,6 +65,20 @@ std::string make_preamble() {
     << glsl_float(m::kPhaseTableRearIntervals / (180.0 - m::kPhaseTableForwardEndDeg)) << ";\n";
   s << "const float PHASE_TABLE_FORWARD_PER_DEG = "
     << glsl_float(m::kPhaseTableForwardIntervals / m::kPhaseTableForwardEndDeg) << ";\n";
+
+  // the multiple-scattering source table's grid (renderer/model/ms_source_table.h)
+  const m::MsSourceTableShape& ms = m::ms_source_table().shape();
+  s << "#define MS_TAU_NODES " << ms.n_tau << '\n';
+  s << "#define MS_SUN_NODES " << ms.n_sun << '\n';
+  s << "#define MS_DEPTH_BINS " << ms.depth_bins << '\n';
+  s << "#define MS_MU_NODES " << ms.directions.n_mu << '\n';
+  s << "#define MS_PHI_NODES " << ms.directions.n_phi << '\n';
+  s << "const float MS_TAU_MIN = " << glsl_float(m::kMsTauMin) << ";\n";
+  s << "const float MS_SUN_ZENITH_MAX_DEG = " << glsl_float(m::kMsSunZenithMaxDeg) << ";\n";
+  s << "const float MS_DEPTH_SCALE = " << glsl_float(m::kMsDepthScale) << ";\n";
+  s << "const float MS_TABLE_MEAN_COSINE = " << glsl_float(m::jdd_mean_cosine(m::jdd_params(m::kMsTableDropletUm))) << ";\n";
+  s << "const int PEAK_BEAM_ORDERS = " << m::kPeakBeamOrders << ";\n";
+  s << "const float PEAK_BEAM_MASS_DONE = " << glsl_float(m::kPeakBeamMassDone) << ";\n";
 
   namespace a = model::atmosphere;
   s << "const float ATMO_BOTTOM = " << glsl_float(a::kBottomRadius) << ";\n";

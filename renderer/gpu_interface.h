@@ -40,7 +40,8 @@ namespace cloudsvc::gpu {
   X(BASE_NOISE_MAX, 18)    /* base-noise max pyramid as mip levels (long-step probes) */ \
   X(CLOUD_DEPTH, 19)       /* ... its depth, ground-share shift, layer (composite) */ \
   X(DOME_RINGS, 20)        /* cumulus dome rings, RG32F array (cumulus_domes.glsl) */ \
-  X(CLOUD_PHASE, 21)       /* the layers' tabulated Mie phase functions (phase_function.glsl) */
+  X(CLOUD_PHASE, 21)       /* the layers' tabulated Mie phase functions (phase_function.glsl) */ \
+  X(MS_SOURCE, 22)         /* multiple-scattering source table (cloud_lighting.glsl) */
 
 // Image units: each pass binds the images it writes right before its dispatch, so outputs
 // of different passes share units. GLSL: IMG_<NAME>.

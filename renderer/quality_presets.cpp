@@ -9,7 +9,7 @@
 //   default  64 log, 6 light, long steps x2, 1/16 px per frame          4.8x,  20x work, RMSE 0.94
 //   high     96 log, 8 light, long steps x2, 1/4 px per frame           2.1x,   3x work, RMSE 0.65
 //   ultra    192 log, 12 light, every pixel, accumulated while still    0.5x, 0.3x work, RMSE 0.45
-// All: one octave (single scattering + the delta-Eddington diffuse term), the coverage
+// All: the same light model (peak beam + diffuse source, shaders/cloud_lighting.glsl), the coverage
 // pyramid and the light-march cut-off (RenderQuality defaults; not in naive); every
 // temporal preset samples the pixel footprint (footprint_jitter). 1/16 px per frame becomes
 // 1/4 while the clouds move by more than a pixel per frame (reuse() below). Log steps:
@@ -20,11 +20,10 @@
 namespace cloudsvc {
 namespace {
 
-RenderQuality march(int primary, int light, int octaves, double step_growth_ref_m) {
+RenderQuality march(int primary, int light, double step_growth_ref_m) {
   RenderQuality q;
   q.primary_steps = primary;
   q.light_steps = light;
-  q.ms_octaves = octaves;
   q.step_growth_ref_m = step_growth_ref_m;
   return q;
 }
@@ -45,7 +44,7 @@ RenderQuality reuse(RenderQuality q, int stride) {
 }
 
 RenderQuality naive() {
-  RenderQuality q = march(64, 6, 1, 0.0);
+  RenderQuality q = march(64, 6, 0.0);
   q.long_step_factor = 1;
   q.ground_shadow_map = false;
   q.coverage_pyramid = false;
@@ -54,7 +53,7 @@ RenderQuality naive() {
 }
 
 RenderQuality low() {
-  RenderQuality q = reuse(march(64, 6, 1, 1000.0), 4);
+  RenderQuality q = reuse(march(64, 6, 1000.0), 4);
   q.long_step_factor = 4;
   q.level_of_detail = true;
   q.cloud_resolution_divisor = 2;
@@ -70,9 +69,9 @@ const std::vector<Named>& presets() {
   static const std::vector<Named> p = {
       {"naive", naive()},
       {"low", low()},
-      {"medium", reuse(march(64, 4, 1, 1000.0), 4)},
-      {"high", reuse(march(96, 8, 1, 1000.0), 2)},
-      {"ultra", reuse(march(192, 12, 1, 1000.0), 1)},
+      {"medium", reuse(march(64, 4, 1000.0), 4)},
+      {"high", reuse(march(96, 8, 1000.0), 2)},
+      {"ultra", reuse(march(192, 12, 1000.0), 1)},
       {"default", reuse(RenderQuality{}, 4)},
   };
   return p;

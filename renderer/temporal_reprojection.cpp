@@ -19,8 +19,8 @@ glm::dvec2 tan_half_fov(const ViewRequest& v) {
 }
 
 bool same_march(const RenderQuality& a, const RenderQuality& b) {
-  return a.primary_steps == b.primary_steps && a.light_steps == b.light_steps && a.ms_octaves == b.ms_octaves &&
-         a.ground_shadow_steps == b.ground_shadow_steps && a.ms_extinction_scale == b.ms_extinction_scale && a.ms_energy_scale == b.ms_energy_scale && a.ms_eccentricity_scale == b.ms_eccentricity_scale &&
+  return a.primary_steps == b.primary_steps && a.light_steps == b.light_steps &&
+         a.ground_shadow_steps == b.ground_shadow_steps &&
          a.step_growth_ref_m == b.step_growth_ref_m && a.temporal_stride == b.temporal_stride &&
          a.cloud_resolution_divisor == b.cloud_resolution_divisor && a.long_step_factor == b.long_step_factor &&
          a.level_of_detail == b.level_of_detail && a.temporal_reuse == b.temporal_reuse &&

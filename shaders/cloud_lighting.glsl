@@ -1,8 +1,10 @@
 // Light arriving at a point in a cloud layer: the sun through a light march (optical
-// depth for the Wrenninge octaves), diffuse light from two-stream slab theory, and the
+// depth for the peak beam), diffuse light from a Monte Carlo source table (the sun's) and
+// two-stream slab theory (the sky's and the ground's), and the
 // optical depth of a layer above a ground point (cloud shadows, ground_shadow_map.comp). Needs common.glsl,
 // frame_uniforms.glsl, atmosphere_model.glsl, atmosphere_lookup.glsl, cloud_density.glsl.
 #include "slab_transmittance.glsl"
+#include "ms_source_lookup.glsl"
 
 // Optical depth from point p (altitude alt) towards the sun inside layer li, in n steps
 // spaced quadratically (fine near the sample, coarse far away), with the weather map
@@ -50,41 +52,43 @@ float layer_shadow_optical_depth(int li, vec3 p, float ground_alt, vec3 sun, flo
 }
 
 // Diffuse in-scattered radiance (per unit scattering) at altitude alt inside layer L: the
-// light scattered more than once, from delta-Eddington two-stream fluxes of conservative
-// scattering. With vertical optical depths tau_a above and tau_b below the point,
-// estimated from the layer's nominal extinction and the local coverage:
-//   F_down = F_sun (T_beam(tau_a, mu_s) - e^{-tau_a'/mu_s}) + E_sky T(tau_a)   (diffuse only)
-//            + E_up T(tau_b) R(tau_a)
-//   F_up   = (F_sun T_beam(tau_a, mu_s) + E_sky T(tau_a)) R(tau_b) + E_up T(tau_b)
-// with T the diffuse and T_beam the beam transmittance above, R = 1 - T, and E_up = a E_g
-// the light a ground of albedo a sends up: its irradiance E_g under the layer, as
-// independent columns (a fraction 1 - c of the ground in the clear, c under the layer's
-// full optical depth tau_c: sun through 1 - c + c T_beam(tau_c), sky through
-// 1 - c + c T(tau_c), both at ground level) with the round trips between ground and cloud
-// (ground_cloud_gain(c a, tau_c)). The radiance
-// field is taken in the P1 (diffusion) form I = (Phi + 3 F . w) / (4 pi), fluence
-// Phi = 2 (F_down + F_up), net flux F = (F_up - F_down) up, so the in-scatter into the
-// direction w towards the camera (w_up = w . up) is
-//   J = (Phi + 3 g (F_up - F_down) w_up) / (4 pi)   (>= 0)
-// brighter looking up into a cloud than down onto it, as transport gives. The sun term of
-// the march is single scattering only (one octave); this term carries the rest.
-// Checked against Monte Carlo in renderer/model/slab_renderer_model.h (docs/ACCURACY.md).
-//
+// light scattered more than once, with vertical optical depths tau_a above and tau_b below
+// the point estimated from the layer's nominal extinction and the local coverage.
+// * The sun's: the Monte Carlo source table (ms_source_over_mu) times the horizontal solar
+//   flux F_sun = E_sun T_atm mu_s, optical depths scaled to the table's droplets by
+//   (1 - g) / (1 - g_table) (similarity). With the peak beam of the sun term
+//   (peak_beam_phase) it makes the slab radiances of Monte Carlo (docs/ACCURACY.md).
+// * The sky's and the ground's: delta-Eddington two-stream fluxes of conservative
+//   scattering,
+//     F_down = E_sky T(tau_a) + E_up T(tau_b) R(tau_a),  F_up = E_sky T(tau_a) R(tau_b) + E_up T(tau_b)
+//   with T the diffuse transmittance, R = 1 - T, and E_up = a E_g the light a ground of
+//   albedo a sends up: its irradiance E_g under the layer, as independent columns (a
+//   fraction 1 - c of the ground in the clear, c under the layer's full optical depth
+//   tau_c: sun through 1 - c + c T_beam(tau_c), sky through 1 - c + c T(tau_c), both at
+//   ground level) with the round trips between ground and cloud (ground_cloud_gain(c a,
+//   tau_c)); in the P1 (diffusion) form I = (Phi + 3 F . w) / (4 pi), fluence
+//   Phi = 2 (F_down + F_up), net flux F = (F_up - F_down) up, the in-scatter into the
+//   direction w towards the camera (w_up = w . up) is
+//     J = (Phi + 3 g (F_up - F_down) w_up) / (4 pi)   (>= 0).
+// cos_phi: cosine of the azimuth between w and the sun (0 where either is vertical).
 // ground_sun and ground_sky (cloud_free_ground_irradiance below) are the irradiance the
 // ground under the point would receive without clouds; the march holds them over 10 km of
 // its ray (the sun's zenith angle at the ground below a sample moves by 1.6e-4 rad per km).
 vec3 diffuse_inscatter(CloudLayerGpu L, float alt, float mu_s, vec3 T_atm, float coverage, vec3 E_sun,
-                       vec3 ground_sun, vec3 ground_sky, float w_up) {
+                       vec3 ground_sun, vec3 ground_sky, float w_up, float cos_phi) {
   float sigma_nominal = L.extinction_max * L.density_scale * coverage;
   float tau_a = sigma_nominal * max(L.top_m - alt, 0.0);
   float tau_b = sigma_nominal * max(alt - L.base_m, 0.0);
-  float Ta = slab_diffuse_transmittance(tau_a), Tb = slab_diffuse_transmittance(tau_b);
   float mu_pos = max(mu_s, 0.0);
-  vec3 F_sun = E_sun * T_atm * mu_pos;
+  vec3 J_sun = vec3(0.0);
+  if (mu_pos > 0.0) {
+    float similarity = (1.0 - cloud_phase_mean_cosine(L.g_hg, L.g_d, L.draine_alpha, L.w_d)) / (1.0 - MS_TABLE_MEAN_COSINE);
+    float phi_deg = degrees(acos(clamp(cos_phi, -1.0, 1.0)));
+    J_sun = E_sun * T_atm * (mu_pos * ms_source_over_mu(similarity * tau_a, similarity * tau_b, mu_pos, w_up, phi_deg));
+  }
+  float Ta = slab_diffuse_transmittance(tau_a), Tb = slab_diffuse_transmittance(tau_b);
   vec3 E_sky = E_sun * sky_irradiance(alt, mu_s);
   float mu0 = max(mu_pos, 0.05);
-  float direct_a = mu_pos > 0.0 ? exp(-(1.0 - DELTA_F) * tau_a / mu0) : 0.0;
-  float T_beam = mu_pos > 0.0 ? slab_beam_transmittance(tau_a, mu0) : 0.0;
   // the ground under the layer: a fraction 1 - c in the clear, c under cloud of the layer's
   // full optical depth (independent columns), with the round trips to the cloud's base
   float c = clamp(coverage, 0.0, 1.0);
@@ -93,10 +97,10 @@ vec3 diffuse_inscatter(CloudLayerGpu L, float alt, float mu_s, vec3 T_atm, float
   float T_sky_ground = 1.0 - c + c * slab_diffuse_transmittance(tau_cloud);
   vec3 albedo = frame.ground_albedo.rgb;
   vec3 E_up = albedo * ground_cloud_gain(albedo * c, tau_cloud) * (ground_sun * T_sun_ground + ground_sky * T_sky_ground);
-  vec3 F_down = F_sun * max(T_beam - direct_a, 0.0) + E_sky * Ta + E_up * Tb * (1.0 - Ta);
-  vec3 F_up = (F_sun * T_beam + E_sky * Ta) * (1.0 - Tb) + E_up * Tb;
+  vec3 F_down = E_sky * Ta + E_up * Tb * (1.0 - Ta);
+  vec3 F_up = E_sky * Ta * (1.0 - Tb) + E_up * Tb;
   vec3 J = (2.0 * (F_down + F_up) + 3.0 * TWO_STREAM_MEAN_COSINE * (F_up - F_down) * w_up) / (4.0 * PI);
-  return max(J, vec3(0.0));
+  return J_sun + max(J, vec3(0.0));
 }
 
 // Irradiance of the ground at altitude ground_alt without clouds (W m^-2 nm^-1), for a sun

@@ -207,31 +207,29 @@ RaySample march_ray(ivec2 q, vec3 dir) {
         vec3 up = up_at(p, R, h);
         float mu_s = dot(up, sun);
         vec3 T_atm = transmittance_to_space(alt, mu_s);
-        // direct sun: single scattering (Wrenninge octaves if more than one) over the
-        // light-march optical depth
+        // direct sun: the peak beam (single scattering and the light scattered only
+        // through the diffraction peak) over the light-march optical depth
         vec3 L_sun = vec3(0.0);
         if (max(T_atm.r, max(T_atm.g, T_atm.b)) > 0.0) {
           float tau = shadow.volume_valid != 0 ? light_volume_optical_depth(li, p, alt)
                                          : light_optical_depth(li, p, alt, sun, mu_s, light_steps_at(t, L), w, frame.light_march_cutoff_tau);
-          // octave 0, single scattering: the layer's phase function (the fit, or its Mie
-          // table per wavelength); the further octaves keep the fit's smooth lobes
+          vec3 s_sum = vec3(peak_beam_phase(cos_view_sun, tau, L.g_hg, L.g_d, L.draine_alpha, L.w_d));
 #ifdef CLOUDSVC_MIE_PHASE
-          vec3 s_sum = tabulated_phase(li, cos_view_sun) * exp(-tau);
-#else
-          vec3 s_sum = vec3(cloud_phase(cos_view_sun, L.g_hg, L.g_d, L.draine_alpha, L.w_d, 1.0) * exp(-tau));
+          // single scattering with the layer's Mie table per wavelength instead of the fit
+          s_sum += (tabulated_phase(li, cos_view_sun) - cloud_phase(cos_view_sun, L.g_hg, L.g_d, L.draine_alpha, L.w_d)) * exp(-tau);
 #endif
-          float a = frame.ms_extinction_scale, b = frame.ms_energy_scale, c = frame.ms_eccentricity_scale;
-          for (int o = 1; o < frame.ms_octaves; ++o) {
-            s_sum += b * cloud_phase(cos_view_sun, L.g_hg, L.g_d, L.draine_alpha, L.w_d, c) * exp(-a * tau);
-            a *= frame.ms_extinction_scale; b *= frame.ms_energy_scale; c *= frame.ms_eccentricity_scale;
-          }
           L_sun = E_sun * T_atm * s_sum;
         }
         if (abs(t - t_ground_irradiance) > GROUND_IRRADIANCE_SPACING) {
           cloud_free_ground_irradiance(ground_alt, mu_s, E_sun, ground_sun, ground_sky);
           t_ground_irradiance = t;
         }
-        vec3 L_diffuse = diffuse_inscatter(L, alt, mu_s, T_atm, coverage, E_sun, ground_sun, ground_sky, -dot(dir, up));
+        // the scattered light travels along -dir: its azimuth from the sun's about up
+        float w_up = -dot(dir, up);
+        vec3 sun_h = sun - mu_s * up, w_h = -dir - w_up * up;
+        float hh = dot(sun_h, sun_h) * dot(w_h, w_h);
+        float cos_phi = hh > 1e-12 ? dot(sun_h, w_h) * inversesqrt(hh) : 1.0;
+        vec3 L_diffuse = diffuse_inscatter(L, alt, mu_s, T_atm, coverage, E_sun, ground_sun, ground_sky, w_up, cos_phi);
         float absorbed = one_minus_exp_neg(sigma * dt);  // albedo 1: scattered fraction
         C += T * absorbed * (L_sun + L_diffuse);
         depth_acc += t * T * absorbed;

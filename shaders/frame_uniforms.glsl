@@ -40,8 +40,7 @@ layout(std140, binding = UBO_FRAME) uniform FrameUniforms {
   float march_reach_m;
   float weather_map_height;
   float step_growth_ref_m;
-  int primary_steps, light_steps, ms_octaves, ground_shadow_steps;
-  float ms_extinction_scale, ms_energy_scale, ms_eccentricity_scale;
+  int primary_steps, light_steps, ground_shadow_steps;
   float light_march_cutoff_tau;
   float long_step_factor;
   float detail_noise_mean;

@@ -32,9 +32,35 @@ vec3 tabulated_phase(int li, float cos_theta) {
 }
 #endif
 
-// p = (1 - w_D) HG(g_HG) + w_D Draine(g_D, alpha). `eccentricity` scales both g for
-// multiple-scattering octaves (Wrenninge et al. 2013: g c^i).
-float cloud_phase(float mu, float g_hg, float g_d, float alpha, float w_d, float eccentricity) {
-  return (1.0 - w_d) * hg_phase(mu, g_hg * eccentricity) +
-         w_d * draine_phase(mu, g_d * eccentricity, alpha);
+// p = (1 - w_D) HG(g_HG) + w_D Draine(g_D, alpha).
+float cloud_phase(float mu, float g_hg, float g_d, float alpha, float w_d) {
+  return (1.0 - w_d) * hg_phase(mu, g_hg) + w_d * draine_phase(mu, g_d, alpha);
+}
+
+// Mean cosine of that blend (jdd_mean_cosine, renderer/model/phase_function.cpp; Draine
+// 2003 for the Draine lobe).
+float cloud_phase_mean_cosine(float g_hg, float g_d, float alpha, float w_d) {
+  float gd = g_d * (1.0 + alpha * (3.0 + 2.0 * g_d * g_d) / 5.0) / (1.0 + alpha * (1.0 + 2.0 * g_d * g_d) / 3.0);
+  return (1.0 - w_d) * g_hg + w_d * gd;
+}
+
+// The sun's peak beam scattered towards the camera, per unit sun irradiance and unit
+// scattering (peak_beam_phase, renderer/model/ms_source_table.h): the sun's light that has
+// scattered only through the diffraction peak (the HG lobe, weight f = 1 - w_D), after a
+// slant optical depth tau, in Poisson orders k with the peak broadened to HG(g_HG^(k+1)),
+//   sum_k e^-tau (f tau)^k / k! [f HG(mu; g_HG^(k+1)) + (1 - f) D(mu)];
+// k = 0 is single scattering. The Draine part sums to (1 - f) D(mu) e^-(1 - f) tau. At most
+// PEAK_BEAM_ORDERS peak orders; the rest of the Poisson mass takes the next order's lobe.
+float peak_beam_phase(float mu, float tau, float g_hg, float g_d, float alpha, float w_d) {
+  float f = 1.0 - w_d;
+  float beam = exp(-w_d * tau);
+  float sum = w_d * draine_phase(mu, g_d, alpha) * beam;
+  float term = exp(-tau), mass = 0.0, g = g_hg;
+  for (int k = 0; k < PEAK_BEAM_ORDERS && mass < PEAK_BEAM_MASS_DONE * beam; ++k) {
+    sum += f * term * hg_phase(mu, g);
+    mass += term;
+    term *= f * tau / float(k + 1);
+    g *= g_hg;
+  }
+  return sum + f * max(beam - mass, 0.0) * hg_phase(mu, g);
 }

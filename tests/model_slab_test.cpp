@@ -381,13 +381,13 @@ TEST(SlabMc, BouthorsTransmittanceBand) {
 // ---------------------------------------------------------------------------------
 // Renderer model (a transcription of the cloud march: cloud_march.comp, cloud_lighting.glsl)
 
-// With one octave (pure single scattering with the true phase), no diffuse term, no
-// light-march cap and converged steps, the shader's march integrates the single-
+// With the sun term reduced to single scattering (the true phase, e^-tau), no diffuse term,
+// no light-march cap and converged steps, the shader's march integrates the single-
 // scattering radiance exactly: the transcription must reproduce the closed form.
-TEST(SlabRendererModel, OneOctaveWithoutDiffuseIsSingleScattering) {
+TEST(SlabRendererModel, SingleScatteringWithoutDiffuseIsExact) {
   const JdDParams p = jdd_params(kDropletUm);
   SlabRendererModelOptions o = converged_renderer_model_options();
-  o.ms_octaves = 1;
+  o.peak_beam = false;
   o.diffuse = false;
   o.cap_light_march = false;
   o.cloud_t_eps = 0.0;
@@ -420,27 +420,32 @@ TEST(SlabRendererModel, LightMarchAndDiffuseTermAsInTheShader) {
   EXPECT_NEAR(slab_light_optical_depth(slab, z, o), slab.sigma_t_per_m * 4000.0, 1e-9);
   o.cap_light_march = false;
   EXPECT_NEAR(slab_light_optical_depth(slab, z, o), full, 1e-9 * full);
-  // At the top: tau_a = 0, so F_down = 0 and F_up = mu0 (1 - T(tau)) (two-stream R).
-  const double T = 1.0 / (1.0 + 0.75 * (1.0 - 0.86) * slab.optical_depth());
-  EXPECT_NEAR(slab_diffuse_inscatter(slab, slab.thickness_m, o), mu_s * (1.0 - T) / (2.0 * kPi), 1e-12);
-  // At the base: tau_b = 0, F_up = 0, F_down = mu0 (T_beam(tau) - D), the delta-Eddington
-  // beam (f = 0.86^2): D = e^{-(1 - f) tau / mu0}, T_beam = [(1/2 + 3/4 mu0) + (1/2 - 3/4 mu0) D] T.
-  const double D = std::exp(-(1.0 - 0.86 * 0.86) * 100.0 / mu_s);
-  const double T_beam = ((0.5 + 0.75 * mu_s) + (0.5 - 0.75 * mu_s) * D) * T;
-  EXPECT_NEAR(slab_diffuse_inscatter(slab, 0.0, o), mu_s * (T_beam - D) / (2.0 * kPi), 1e-12);
-  // P1: light travelling down (w_up = -1) out of the base carries more than light going up.
-  EXPECT_GT(slab_diffuse_inscatter(slab, 0.0, o, -1.0), slab_diffuse_inscatter(slab, 0.0, o, 1.0));
+  // The sun's diffuse light: mu_s times the source table at the point's optical depths
+  // above and below (14 um droplets: similarity scale 1), here light leaving the top
+  // straight up and, 40 degrees from the vertical, towards and away from the sun.
+  const double tau = slab.optical_depth();
+  const glm::dvec3 up{0.0, 0.0, 1.0};
+  const glm::dvec3 towards{std::sin(40.0 * kDeg), 0.0, std::cos(40.0 * kDeg)};
+  const glm::dvec3 away{-towards.x, 0.0, towards.z};
+  EXPECT_NEAR(slab_diffuse_inscatter(slab, slab.thickness_m, o, up), mu_s * ms_source_table().lookup(0.0, tau, mu_s, 1.0, 0.0),
+              1e-12);
+  EXPECT_NEAR(slab_diffuse_inscatter(slab, slab.thickness_m, o, away),
+              mu_s * ms_source_table().lookup(0.0, tau, mu_s, towards.z, 180.0), 1e-12);
+  // A low sun's light leaves the top of a thick cloud mostly forward, away from the sun.
+  EXPECT_GT(slab_diffuse_inscatter(slab, slab.thickness_m, o, away), slab_diffuse_inscatter(slab, slab.thickness_m, o, towards));
+  // Below the base, light travelling down carries more than light going up.
+  EXPECT_GT(slab_diffuse_inscatter(slab, 0.0, o, -up), slab_diffuse_inscatter(slab, 0.0, o, up));
 }
 
 // ---------------------------------------------------------------------------------
 // Error table: renderer model vs Monte Carlo, view zenith 0, reflected (camera above)
 // and transmitted (camera below; the direct sun is excluded from both).
 //
-// Asserted bands are what the light model (single scattering + delta-Eddington P1 diffuse
-// term) meets with margin; observed ratios model / MC (2026-11-22):
-//  - every case: in [1/2, 2]       (observed 0.73-1.84; the earlier octave model: 0.3-8)
-//  - tau >= 16:  in [0.6, 1.6]     (observed 0.73-1.27)
-// The table is printed so changes in either direction are visible.
+// Asserted band: what the light model (peak beam + Monte Carlo diffuse source table)
+// meets with room for this test's own Monte Carlo noise (up to 20 % at tau 64); observed
+// ratios model / MC 0.87-1.13 (2026-12-04; the earlier two-stream model: 0.73-1.84, the
+// octave model before it 0.3-8). The table is printed so changes in either direction are
+// visible.
 TEST(SlabComparison, RendererModelVersusMonteCarloTable) {
   const ViewDirection nadir{0.0, 0.0};
   const SlabRendererModelOptions converged = converged_renderer_model_options();
@@ -465,12 +470,8 @@ TEST(SlabComparison, RendererModelVersusMonteCarloTable) {
         EXPECT_GT(e.mean, 0.0);
         EXPECT_LT(e.std_error, 0.2 * e.mean) << "MC too noisy for the bands below";
         SCOPED_TRACE(testing::Message() << "tau " << tau << " sun " << sun << (top ? " reflected" : " transmitted"));
-        EXPECT_GT(ratio, 0.5);
-        EXPECT_LT(ratio, 2.0);
-        if (tau >= 16.0) {
-          EXPECT_GT(ratio, 0.6);
-          EXPECT_LT(ratio, 1.6);
-        }
+        EXPECT_GT(ratio, 0.75);
+        EXPECT_LT(ratio, 1.33);
       }
     }
   }

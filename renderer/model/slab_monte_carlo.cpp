@@ -301,13 +301,17 @@ double sample_hg_cos_theta(double g, double u) {
   return std::clamp(1.0 - one_minus_cos, -1.0, 1.0);
 }
 
+double sample_draine_cos_theta(double g, double alpha, Pcg32& rng) {
+  // p_D ∝ p_HG(mu; g) (1 + alpha mu^2); (1 + alpha mu^2) <= 1 + alpha.
+  for (;;) {
+    const double mu = sample_hg_cos_theta(g, rng.uniform());
+    if (rng.uniform() * (1.0 + alpha) <= 1.0 + alpha * mu * mu) return mu;
+  }
+}
+
 double sample_jdd_cos_theta(const JdDParams& p, Pcg32& rng) {
   if (rng.uniform() >= p.w_d) return sample_hg_cos_theta(p.g_hg, rng.uniform());
-  // Draine lobe: p_D ∝ p_HG(mu; g_D) (1 + alpha mu^2); (1 + alpha mu^2) <= 1 + alpha.
-  for (;;) {
-    const double mu = sample_hg_cos_theta(p.g_d, rng.uniform());
-    if (rng.uniform() * (1.0 + p.alpha) <= 1.0 + p.alpha * mu * mu) return mu;
-  }
+  return sample_draine_cos_theta(p.g_d, p.alpha, rng);
 }
 
 SlabMcResult run_slab_monte_carlo(const SlabSpec& slab, const SlabMcOptions& options) {

@@ -143,5 +143,7 @@ double sample_hg_cos_theta(double g, double u);
 // (1 - w_D : w_D), HG by its analytic inverse CDF, Draine by rejection from HG(g_D) with
 // acceptance (1 + alpha mu^2) / (1 + alpha) (mean acceptance ~0.55 for d = 5..50 um).
 double sample_jdd_cos_theta(const JdDParams& p, Pcg32& rng);
+// Cosine sampled from the Draine lobe alone (the rejection step above).
+double sample_draine_cos_theta(double g, double alpha, Pcg32& rng);
 
 }  // namespace cloudsvc::model

@@ -31,18 +31,6 @@ double slab_extinction(const SlabSpec& slab, double z) {
 // GLSL has no expm1).
 double one_minus_exp_neg(double x) { return -std::expm1(-x); }
 
-// Two-stream diffuse transmittance (slab_diffuse_transmittance, cloud_lighting.glsl).
-double slab_diffuse_transmittance(double tau, double mean_cosine) {
-  return 1.0 / (1.0 + 0.75 * (1.0 - mean_cosine) * tau);
-}
-
-// cloud_phase (phase_function.glsl): both asymmetries scaled by the octave's
-// eccentricity, alpha and w_D unchanged.
-double octave_phase(double mu, const JdDParams& p, double eccentricity) {
-  return (1.0 - p.w_d) * hg_phase(mu, p.g_hg * eccentricity) +
-         p.w_d * draine_phase(mu, p.g_d * eccentricity, p.alpha);
-}
-
 double cos_sun(const SlabSpec& slab) { return std::cos(slab.sun_zenith_deg * kPi / 180.0); }
 
 }  // namespace
@@ -74,32 +62,22 @@ double slab_light_optical_depth(const SlabSpec& slab, double z, const SlabRender
 }
 
 // diffuse_inscatter (cloud_lighting.glsl) with T_atm = 1, coverage 1, density scale 1,
-// E_sun = 1, E_sky = 0 (sky_irradiance), ground albedo 0 (E_ground = 0).
-double slab_diffuse_inscatter(const SlabSpec& slab, double z, const SlabRendererModelOptions& o, double view_up_z) {
-  const double sigma_nominal = slab.sigma_t_per_m * 1.0 * 1.0;           // sigma_nominal
-  const double tau_a = sigma_nominal * std::max(slab.thickness_m - z, 0.0);  // tau_a
-  const double tau_b = sigma_nominal * std::max(z - 0.0, 0.0);            // tau_b
-  const double Ta = slab_diffuse_transmittance(tau_a, o.mean_cosine);     // Ta, Tb
-  const double Tb = slab_diffuse_transmittance(tau_b, o.mean_cosine);
-  const double mu_s = cos_sun(slab);
-  const double mu_pos = std::max(mu_s, 0.0);                              // mu_pos
-  const double F_sun = 1.0 * 1.0 * mu_pos;                                // F_sun = E_sun T_atm mu
-  const double E_sky = 0.0;                                               // E_sky
-  const double E_ground = 0.0;                                            // E_ground, albedo 0
-  const double direct_a = mu_pos > 0.0 ? std::exp(-(1.0 - o.delta_f) * tau_a / std::max(mu_pos, 0.05)) : 0.0;  // direct_a
-  const double T_beam = o.eddington_beam && mu_pos > 0.0
-                            ? ((0.5 + 0.75 * mu_pos) + (0.5 - 0.75 * mu_pos) * direct_a) /
-                                  (1.0 + 0.75 * (1.0 - o.mean_cosine) * tau_a)
-                            : Ta;
-  const double F_down = F_sun * std::max(T_beam - direct_a, 0.0) + E_sky * Ta;  // F_down
-  const double F_up = (F_sun * T_beam + E_sky * Ta) * (1.0 - Tb) + E_ground * Tb;    // F_up
-  if (o.p1_diffuse) {
-    // fluence 2 (F_down + F_up), net upward flux F_up - F_down; in-scatter of the diffuse
-    // field into direction w (z component view_up_z) with the droplet phase's mean cosine
-    const double J = (2.0 * (F_down + F_up) + 3.0 * o.mean_cosine * (F_up - F_down) * view_up_z) / (4.0 * kPi);
-    return std::max(J, 0.0);
-  }
-  return (F_down + F_up) / (2.0 * kPi);                                   // isotropic hemispheres
+// E_sun = 1, E_sky = 0 (sky_irradiance) and ground albedo 0: the sun's part alone,
+// F_sun times the source table (J_sun).
+double slab_diffuse_inscatter(const SlabSpec& slab, double z, const SlabRendererModelOptions& o, const glm::dvec3& w) {
+  const double mu_pos = std::max(cos_sun(slab), 0.0);  // mu_pos
+  if (!(mu_pos > 0.0)) return 0.0;
+  const double sigma_nominal = slab.sigma_t_per_m * 1.0 * 1.0;                         // sigma_nominal
+  const double sim = ms_similarity_scale(jdd_params(slab.droplet_diameter_um));          // similarity
+  const double tau_a = sim * sigma_nominal * std::max(slab.thickness_m - z, 0.0);        // tau_a
+  const double tau_b = sim * sigma_nominal * std::max(z - 0.0, 0.0);                     // tau_b
+  const double h = std::hypot(w.x, w.y);
+  const double cos_phi = h > 1e-12 ? w.x / h : 1.0;                                      // cos_phi (sun towards +x)
+  const double phi_deg = std::acos(std::clamp(cos_phi, -1.0, 1.0)) * 180.0 / kPi;       // phi_deg
+  const double j_over_mu = o.ms_source_column
+                               ? o.ms_source_column->lookup(ms_depth_coordinate(tau_a, tau_b), w.z, phi_deg)
+                               : ms_source_table().lookup(tau_a, tau_b, mu_pos, w.z, phi_deg);
+  return 1.0 * 1.0 * mu_pos * j_over_mu;                                                 // E_sun T_atm mu_pos J/mu
 }
 
 SlabRendererModelResult slab_renderer_model_radiance(const SlabSpec& slab, const ViewDirection& v, bool top,
@@ -131,17 +109,12 @@ SlabRendererModelResult slab_renderer_model_radiance(const SlabSpec& slab, const
       const double z = z_cam + t * dir.z;                   // p, alt
       const double sigma = slab_extinction(slab, z);        // sigma = cloud_extinction_in(...)
       if (sigma <= 0.0) continue;                           // sigma <= 0: next step
-      // L_sun: direct sun, Wrenninge octaves over the light-march optical depth.
-      const double tau = o.sun_tau_scale * slab_light_optical_depth(slab, z, o);  // tau
-      double s_sum = 0.0, a = 1.0, b = 1.0, c = 1.0;
-      for (int oc = 0; oc < o.ms_octaves; ++oc) {  // the octave loop
-        s_sum += b * octave_phase(cos_view_sun, phase, c) * std::exp(-a * tau);
-        a *= o.ms_extinction_scale;
-        b *= o.ms_energy_scale;
-        c *= o.ms_eccentricity_scale;
-      }
-      const double L_sun = 1.0 * 1.0 * s_sum;  // L_sun = E_sun T_atm s_sum
-      const double L_diffuse = o.diffuse ? slab_diffuse_inscatter(slab, z, o, -dir.z) : 0.0;  // L_diffuse
+      // L_sun: the peak beam over the light-march optical depth.
+      const double tau = slab_light_optical_depth(slab, z, o);  // tau
+      const double L_sun = 1.0 * 1.0 *                           // L_sun = E_sun T_atm s_sum
+                           (o.peak_beam ? peak_beam_phase(cos_view_sun, tau, phase)
+                                        : jdd_phase(cos_view_sun, phase) * std::exp(-tau));
+      const double L_diffuse = o.diffuse ? slab_diffuse_inscatter(slab, z, o, -dir) : 0.0;  // L_diffuse
       const double absorbed = one_minus_exp_neg(sigma * dt);  // absorbed
       C_sun += T * absorbed * L_sun;                          // C += T absorbed (L_sun + L_diffuse)
       C_diff += T * absorbed * L_diffuse;

@@ -13,6 +13,7 @@
 // is excluded: it holds the direct sun, which the Monte Carlo radiances exclude as well). Units: L / E_sun in sr^-1.
 #pragma once
 
+#include "renderer/model/ms_source_table.h"
 #include "renderer/model/slab_monte_carlo.h"
 #include "renderer/model/scene_constants.h"
 #include "renderer/api/frame_image.h"
@@ -26,38 +27,25 @@ struct SlabRendererModelOptions {
   // the frame uniforms (renderer/frame_uniforms.h, same names).
   int primary_steps = RenderQuality{}.primary_steps;
   int light_steps = RenderQuality{}.light_steps;
-  int ms_octaves = RenderQuality{}.ms_octaves;
-  double ms_extinction_scale = RenderQuality{}.ms_extinction_scale;      // Wrenninge a
-  double ms_energy_scale = RenderQuality{}.ms_energy_scale;              // Wrenninge b
-  double ms_eccentricity_scale = RenderQuality{}.ms_eccentricity_scale;  // Wrenninge c
   // Primary steps are uniform in t here, at least min_step_m long; cloud_march.comp steps
   // uniformly in march_coordinate (ln(1 + t / t_ref)) without such a floor.
   double min_step_m = 1.0;
   bool cap_light_march = true;                   // light_optical_depth: len = min(len, LIGHT_MARCH_REACH_M)
   double light_max_dist_m = kLightMarchReach_m;  // LIGHT_MARCH_REACH_M (scene_constants.h)
   bool diffuse = true;                           // cloud_march.comp: L_diffuse = diffuse_inscatter(...)
-  double mean_cosine = kTwoStreamMeanCosine;     // TWO_STREAM_MEAN_COSINE (scene_constants.h)
-  // The diffuse field's in-scatter in the P1 (diffusion) approximation,
-  // (Phi + 3 g F_net . w) / (4 pi) (cloud_lighting.glsl); false: isotropic hemispheres (the
-  // model before the Monte Carlo comparison).
-  bool p1_diffuse = true;
-  // The Eddington conservative-slab transmittance of the sun's beam at depth
-  // tau, [(1/2 + 3/4 mu0) + (1/2 - 3/4 mu0) e^(-tau/mu0)] / (1 + 3/4 (1 - g) tau), instead of
-  // the diffuse-incidence form 1 / (1 + 3/4 (1 - g) tau) (equal at mu0 = 2/3).
-  bool eddington_beam = true;
-  // Delta-scaling (Joseph, Wiscombe, Weinman 1976): a fraction f of the
-  // scattering (the forward peak) is counted as unscattered, so the beam that feeds the
-  // diffuse field decays with (1 - f) tau; 0 = off.
-  double delta_f = kTwoStreamMeanCosine * kTwoStreamMeanCosine;  // cloud_lighting.glsl DELTA_F
-  // Experiment: the sun term's light-march optical depth scaled by this (1 = exact single
-  // scattering, the shader; 1 - f = the delta-scaled beam).
-  double sun_tau_scale = 1.0;
+  // false: the sun term is single scattering alone (phase e^-tau) instead of the peak beam
+  // (peak_beam_phase); a check of the march, not the shader.
+  bool peak_beam = true;
   double cloud_t_eps = 1e-3;  // CLOUD_T_EPS, cloud_march.comp: early exit
   // The shader jitters the sample within each step per pixel (cloud_march.comp: jitter from
   // hash12, t = march_distance(u0 + (st + jitter) du)). The
   // model averages over jitter_samples stratified jitters (j + 0.5) / n, i.e. the
   // expected pixel value; 1 = the step midpoint.
   int jitter_samples = 1;
+  // Experiment (bench/slab_mc_table --ms-source-column): the diffuse source from this
+  // Monte Carlo column (for this slab's optical depth and sun) instead of the table's
+  // interpolation (ms_source_table()), to tell the model's error from the table's.
+  const MsSourceColumn* ms_source_column = nullptr;
 };
 
 // Options for a converged march of the same light model: many primary steps, so the
@@ -66,7 +54,7 @@ SlabRendererModelOptions converged_renderer_model_options();
 
 struct SlabRendererModelResult {
   double radiance = 0.0;          // C / E_sun, sr^-1 (sun octaves + diffuse)
-  double radiance_sun = 0.0;      // the octave (L_sun) part
+  double radiance_sun = 0.0;      // the peak-beam (L_sun) part
   double radiance_diffuse = 0.0;  // the diffuse_inscatter part
   double transmittance = 1.0;     // T along the view ray at the end of the march
 };
@@ -78,11 +66,10 @@ SlabRendererModelResult slab_renderer_model_radiance(const SlabSpec& slab, const
 
 // Sun part pieces, exposed for tests: the light-march optical depth from height z (m) to
 // the slab top towards a sun with cosine mu_s (light_optical_depth, cloud_lighting.glsl),
-// and the diffuse in-scatter per unit scattering (diffuse_inscatter, same file) in sr^-1.
+// and the diffuse in-scatter per unit scattering (diffuse_inscatter, same file) in sr^-1
+// of light travelling in direction w (travel, z up; the sun lies towards +x).
 double slab_light_optical_depth(const SlabSpec& slab, double z, const SlabRendererModelOptions& options);
-// view_up_z: z component of the direction the in-scattered light travels (towards the
-// camera); only the P1 variant depends on it.
 double slab_diffuse_inscatter(const SlabSpec& slab, double z, const SlabRendererModelOptions& options,
-                              double view_up_z = 0.0);
+                              const glm::dvec3& w);
 
 }  // namespace cloudsvc::model

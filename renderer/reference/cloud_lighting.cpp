@@ -1,6 +1,8 @@
 // Converged cloud lighting pieces (see cloud_lighting.h).
 #include "renderer/reference/cloud_lighting.h"
 
+#include "renderer/model/ms_source_table.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -65,20 +67,10 @@ double ground_shadow_optical_depth(const CloudField& field, const glm::dvec3& p,
   return tau;
 }
 
-glm::dvec3 octave_phase_sum(const model::JdDParams& phase, const model::PhaseTable* mie, double cos_view_sun,
-                            double tau, int octaves, double a, double b, double c) {
-  glm::dvec3 sum(0.0);
-  double ai = 1.0, bi = 1.0, ci = 1.0;
-  for (int o = 0; o < octaves; ++o) {
-    const glm::dvec3 p = o == 0 && mie ? mie->at_cos(cos_view_sun)
-                                       : glm::dvec3((1.0 - phase.w_d) * model::hg_phase(cos_view_sun, phase.g_hg * ci) +
-                                                    phase.w_d * model::draine_phase(cos_view_sun, phase.g_d * ci, phase.alpha));
-    sum += bi * p * std::exp(-ai * tau);
-    ai *= a;
-    bi *= b;
-    ci *= c;
-  }
-  return sum;
+glm::dvec3 sun_phase(const model::JdDParams& phase, const model::PhaseTable* mie, double cos_view_sun, double tau) {
+  glm::dvec3 p(model::peak_beam_phase(cos_view_sun, tau, phase));
+  if (mie) p += (mie->at_cos(cos_view_sun) - glm::dvec3(model::jdd_phase(cos_view_sun, phase))) * std::exp(-tau);
+  return p;
 }
 
 double slab_diffuse_transmittance(double tau) { return 1.0 / (1.0 + 0.75 * (1.0 - kTwoStreamMeanCosine) * tau); }
@@ -93,17 +85,23 @@ glm::dvec3 ground_cloud_gain(const glm::dvec3& albedo, double tau) {
   return 1.0 / (1.0 - albedo * (1.0 - slab_diffuse_transmittance(tau)));
 }
 
-glm::dvec3 two_stream_diffuse(const ReferenceLayer& L, double alt, double mu_s, double coverage,
-                              const glm::dvec3& e_sun, const glm::dvec3& t_atm, const glm::dvec3& e_sky_here,
-                              const glm::dvec3& t_atm_ground, const glm::dvec3& e_sky_ground,
-                              const glm::dvec3& ground_albedo, double w_up) {
+glm::dvec3 diffuse_inscatter(const ReferenceLayer& L, double alt, double mu_s, double coverage,
+                             const glm::dvec3& e_sun, const glm::dvec3& t_atm, const glm::dvec3& e_sky_here,
+                             const glm::dvec3& t_atm_ground, const glm::dvec3& e_sky_ground,
+                             const glm::dvec3& ground_albedo, double w_up, double cos_phi) {
   const double g = kTwoStreamMeanCosine;
   const double sigma_nominal = L.sigma_max_per_m * L.density_scale * coverage;
   const double tau_above = sigma_nominal * std::max(L.top_m - alt, 0.0);
   const double tau_below = sigma_nominal * std::max(alt - L.base_m, 0.0);
-  const double Ta = slab_diffuse_transmittance(tau_above), Tb = slab_diffuse_transmittance(tau_below);
   const double mu_pos = std::max(mu_s, 0.0);
-  const glm::dvec3 F_sun = e_sun * t_atm * mu_pos;        // direct solar flux on a horizontal surface above the layer
+  glm::dvec3 J_sun(0.0);
+  if (mu_pos > 0.0) {
+    const double sim = model::ms_similarity_scale(L.phase);
+    const double phi_deg = std::acos(std::clamp(cos_phi, -1.0, 1.0)) * 180.0 / std::numbers::pi;
+    J_sun = e_sun * t_atm *
+            (mu_pos * model::ms_source_table().lookup(sim * tau_above, sim * tau_below, mu_pos, w_up, phi_deg));
+  }
+  const double Ta = slab_diffuse_transmittance(tau_above), Tb = slab_diffuse_transmittance(tau_below);
   const glm::dvec3 E_sky = e_sun * e_sky_here;
   const double mu0 = std::max(mu_pos, 0.05);
   // The ground under the layer: a fraction 1 - c in the clear, c under cloud of the layer's
@@ -114,12 +112,10 @@ glm::dvec3 two_stream_diffuse(const ReferenceLayer& L, double alt, double mu_s, 
   const double T_sky_ground = 1.0 - c + c * slab_diffuse_transmittance(tau_cloud);
   const glm::dvec3 E_up = ground_albedo * ground_cloud_gain(ground_albedo * c, tau_cloud) * e_sun *
                           (t_atm_ground * mu_pos * T_sun_ground + e_sky_ground * T_sky_ground);
-  const double direct_above = mu_pos > 0.0 ? std::exp(-(1.0 - g * g) * tau_above / mu0) : 0.0;
-  const double T_beam = mu_pos > 0.0 ? slab_beam_transmittance(tau_above, mu0) : 0.0;
-  const glm::dvec3 F_down = F_sun * std::max(T_beam - direct_above, 0.0) + E_sky * Ta + E_up * Tb * (1.0 - Ta);
-  const glm::dvec3 F_up = (F_sun * T_beam + E_sky * Ta) * (1.0 - Tb) + E_up * Tb;
+  const glm::dvec3 F_down = E_sky * Ta + E_up * Tb * (1.0 - Ta);
+  const glm::dvec3 F_up = E_sky * Ta * (1.0 - Tb) + E_up * Tb;
   const glm::dvec3 J = (2.0 * (F_down + F_up) + 3.0 * g * (F_up - F_down) * w_up) / (4.0 * std::numbers::pi);
-  return glm::max(J, glm::dvec3(0.0));
+  return J_sun + glm::max(J, glm::dvec3(0.0));
 }
 
 }  // namespace cloudsvc::reference

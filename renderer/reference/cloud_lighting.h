@@ -1,5 +1,6 @@
-// Light in the clouds (docs/RENDERING.md "Light"), converged: the sun through a fine light
-// march with Wrenninge octaves, the two-stream diffuse term, and cloud shadows on the
+// Light in the clouds (docs/RENDERING.md "Light"), converged: the sun's peak beam through a
+// fine light march, the diffuse term (Monte Carlo source table for the sun's light,
+// two-stream for the sky's and the ground's), and cloud shadows on the
 // ground through a fine march of every layer. Frames and units as in reference_scene.h;
 // optical depths dimensionless; radiances in the units of the solar irradiance given.
 #pragma once
@@ -32,7 +33,7 @@ double layer_step_scale(const ReferenceLayer& layer);
 // there) along the sun direction: midpoint rule with steps <= step_m over
 // [0, min(exit through the top, entry through the base, 4 km)], without detail erosion
 // (the model's light march uses the base shape only). Stops early once the depth exceeds
-// tau_stop (beyond it every octave's e^{-a^i tau} is negligible).
+// tau_stop (beyond it the peak beam's e^{-w_D tau} is negligible).
 double light_optical_depth(const CloudField& field, int li, const glm::dvec3& p, double alt, const glm::dvec3& sun,
                            double mu_s, double step_m, double tau_stop, std::uint64_t& evals);
 
@@ -42,13 +43,11 @@ double light_optical_depth(const CloudField& field, int li, const glm::dvec3& p,
 double ground_shadow_optical_depth(const CloudField& field, const glm::dvec3& p, double ground_alt,
                                    const glm::dvec3& sun, double mu_s, double light_step_m, std::uint64_t& evals);
 
-// Wrenninge et al. 2013 octave sum: sum_{i < n} b^i p(nu; g c^i) e^{-a^i tau}, p the
-// Jendersie-d'Eon HG + Draine blend with both asymmetries scaled by c^i (sr^-1, rgb).
-// Where `mie` is given, octave 0 (single scattering) scatters with that table instead
-// (per wavelength: the glory and fogbow); the further octaves, which stand for light
-// scattered many times, keep the fit's smooth lobes.
-glm::dvec3 octave_phase_sum(const model::JdDParams& phase, const model::PhaseTable* mie, double cos_view_sun,
-                            double tau, int octaves, double a, double b, double c);
+// The sun's light scattered towards the camera per unit sun irradiance after a light-march
+// optical depth tau (sr^-1, rgb): the peak beam (model::peak_beam_phase: single scattering
+// and the light scattered only through the diffraction peak). Where `mie` is given, single
+// scattering uses that table instead of the fit (per wavelength: the glory and fogbow).
+glm::dvec3 sun_phase(const model::JdDParams& phase, const model::PhaseTable* mie, double cos_view_sun, double tau);
 
 // Two-stream diffuse transmittance of a conservative slab (Bohren 1987):
 // T(tau) = 1 / (1 + 3/4 (1 - g) tau), g = kTwoStreamMeanCosine.
@@ -65,11 +64,13 @@ double slab_beam_transmittance(double tau, double mu0);
 glm::dvec3 ground_cloud_gain(const glm::dvec3& albedo, double tau);
 
 // Diffuse in-scattered radiance per unit scattering at altitude alt inside layer L
-// (docs/RENDERING.md): vertical optical depths above/below from the nominal extinction
-// sigma_max * density_scale * coverage; with mu0 = max(mu_s, 0.05), the delta-scaled direct
-// beam D = e^{-(1 - f) tau_a / mu0} and T_beam = slab_beam_transmittance(tau_a, mu0):
-// F_down = F_sun (T_beam - D)^+ + E_sky T_a + E_up T_b (1 - T_a), F_up = (F_sun T_beam +
-// E_sky T_a)(1 - T_b) + E_up T_b, where E_up = a E_g is the light the ground sends up: its
+// (docs/RENDERING.md; diffuse_inscatter in shaders/cloud_lighting.glsl): vertical optical
+// depths above/below from the nominal extinction sigma_max * density_scale * coverage.
+// The sun's part: model::ms_source_table() at those depths (scaled by
+// model::ms_similarity_scale) times F_sun = e_sun t_atm mu_s, for the scattered light's
+// zenith cosine w_up and azimuth from the sun's (cos_phi). The sky's and the ground's
+// parts: two-stream fluxes F_down = E_sky T_a + E_up T_b (1 - T_a),
+// F_up = E_sky T_a (1 - T_b) + E_up T_b, where E_up = a E_g is the light the ground sends up: its
 // irradiance E_g under the layer as independent columns (1 - c in the clear, c under the
 // layer's full optical depth tau_c = sigma_max * density_scale * thickness; sun and sky at
 // ground level) with the ground-cloud round trips (ground_cloud_gain(c a, tau_c));
@@ -79,9 +80,9 @@ glm::dvec3 ground_cloud_gain(const glm::dvec3& albedo, double tau);
 // Inputs per unit solar irradiance except e_sun: t_atm = sun transmittance at the point,
 // e_sky_here = sky irradiance at the point, t_atm_ground / e_sky_ground at ground level
 // for the same mu_s; ground_albedo rgb.
-glm::dvec3 two_stream_diffuse(const ReferenceLayer& L, double alt, double mu_s, double coverage,
-                              const glm::dvec3& e_sun, const glm::dvec3& t_atm, const glm::dvec3& e_sky_here,
-                              const glm::dvec3& t_atm_ground, const glm::dvec3& e_sky_ground,
-                              const glm::dvec3& ground_albedo, double w_up);
+glm::dvec3 diffuse_inscatter(const ReferenceLayer& L, double alt, double mu_s, double coverage,
+                             const glm::dvec3& e_sun, const glm::dvec3& t_atm, const glm::dvec3& e_sky_here,
+                             const glm::dvec3& t_atm_ground, const glm::dvec3& e_sky_ground,
+                             const glm::dvec3& ground_albedo, double w_up, double cos_phi);
 
 }  // namespace cloudsvc::reference

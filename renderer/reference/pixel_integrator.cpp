@@ -1,6 +1,8 @@
 // Per-pixel radiance of the reference (see pixel_integrator.h).
 #include "renderer/reference/pixel_integrator.h"
 
+#include "renderer/model/ms_source_table.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -47,9 +49,8 @@ PixelIntegrator::PixelIntegrator(const CloudField& field, const AtmosphereTables
       e_sun_(kSolarIrradiance[0], kSolarIrradiance[1], kSolarIrradiance[2]),
       ground_albedo_(field.scene().ground_albedo),
       camera_atmo_radius_(atmo::radius_for_altitude(field.scene().shell.camera_alt_m)) {
-  // The smallest octave extinction scale is a^(n-1); e^{-a^(n-1) tau} < cutoff beyond this.
-  const double a_min = std::pow(settings.ms_extinction_scale, std::max(settings.ms_octaves - 1, 0));
-  tau_stop_ = std::log(1.0 / settings.light_cutoff) / std::max(a_min, 1e-12);
+  // The peak beam decays as e^{-w_D tau}, slowest for the smallest w_D; < cutoff beyond this.
+  tau_stop_ = std::log(1.0 / settings.light_cutoff) / model::peak_beam_slowest_decay();
 }
 
 glm::dvec3 PixelIntegrator::sun_transmittance(double alt, double mu) const {
@@ -76,15 +77,19 @@ glm::dvec3 PixelIntegrator::cloud_inscatter(int li, const glm::dvec3& p, double 
   if (std::max({t_atm.r, t_atm.g, t_atm.b}) > 0.0) {
     const double step = settings_.light_step_m * layer_step_scale(L);
     const double tau = light_optical_depth(field_, li, p, alt, sun, mu_s, step, tau_stop_, evals);
-    sun_light = e_sun_ * t_atm *
-                octave_phase_sum(L.phase, L.mie_phase.get(), cos_view_sun, tau, settings_.ms_octaves, settings_.ms_extinction_scale, settings_.ms_energy_scale,
-                                 settings_.ms_eccentricity_scale);
+    sun_light = e_sun_ * t_atm * sun_phase(L.phase, L.mie_phase.get(), cos_view_sun, tau);
   }
   const double ground_alt = s.ground_alt_m;
+  // the scattered light travels along -dir: its zenith cosine and azimuth from the sun's
+  const glm::dvec3 up = s.up_at(p);
+  const double w_up = -glm::dot(dir, up);
+  const glm::dvec3 sun_h = sun - mu_s * up, w_h = -dir - w_up * up;
+  const double hh = glm::dot(sun_h, sun_h) * glm::dot(w_h, w_h);
+  const double cos_phi = hh > 1e-24 ? glm::dot(sun_h, w_h) / std::sqrt(hh) : 1.0;
   const glm::dvec3 diffuse =
-      two_stream_diffuse(L, alt, mu_s, coverage, e_sun_, t_atm, tables_.sky_irradiance(alt, mu_s),
-                         sun_transmittance(ground_alt, mu_s), tables_.sky_irradiance(ground_alt, mu_s), ground_albedo_,
-                         -glm::dot(dir, s.up_at(p)));
+      diffuse_inscatter(L, alt, mu_s, coverage, e_sun_, t_atm, tables_.sky_irradiance(alt, mu_s),
+                        sun_transmittance(ground_alt, mu_s), tables_.sky_irradiance(ground_alt, mu_s), ground_albedo_,
+                        w_up, cos_phi);
   return sun_light + diffuse;
 }
 

@@ -45,11 +45,8 @@ struct ReferenceSettings {
   double min_transmittance = 1e-4;   // the primary march stops below this cloud transmittance (GPU: 1e-3),
                                      // and the background behind is then not evaluated: what is left
                                      // behind contributes < 1e-4 of its own radiance
-  double light_cutoff = 1e-4;        // light march stops once every octave's e^{-a^i tau} < this (relative
+  double light_cutoff = 1e-4;        // light march stops once the peak beam's e^{-w_D tau} < this (relative
                                      // to the unshadowed sun term of the sample)
-  // Model parameters: RenderQuality's defaults (the GPU's model)
-  int ms_octaves = 1;                // Wrenninge octaves (1: single scattering + the delta-Eddington diffuse term)
-  double ms_extinction_scale = 0.4, ms_energy_scale = 0.5, ms_eccentricity_scale = 0.6;
   // Atmosphere
   double atmosphere_step_m = 500.0;  // base step of the per-pixel atmosphere integrations (atmo::altitude_step):
                                      // sun transmittance, sky and aerial-perspective single scattering

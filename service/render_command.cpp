@@ -70,6 +70,7 @@ int run_render(const RenderOptions& opt) {
     truth::TruthSettings settings;
     settings.spp = opt.spp;
     settings.seed = opt.seed;
+    if (opt.max_order > 0) settings.tracer.max_order = opt.max_order;
     settings.cloud_phase = opt.cloud_phase;
     const truth::TruthImage t = truth::render_truth(view, opt.weather, settings);
     img = t.image;
@@ -78,8 +79,9 @@ int run_render(const RenderOptions& opt) {
     std::snprintf(suffix, sizeof suffix, " spp=%d seed=%llu lost_paths=%llu majorant_violations=%llu", t.spp,
                   static_cast<unsigned long long>(opt.seed), static_cast<unsigned long long>(t.counters.lost_paths),
                   static_cast<unsigned long long>(t.counters.majorant_violations));
+    const std::string orders = opt.max_order > 0 ? " max_order=" + std::to_string(opt.max_order) : "";
     write_image(opt.out_path, img, opt.exposure_ev);
-    print_stats(opt.out_path, img, timing_suffix(frame_ms, img) + suffix);
+    print_stats(opt.out_path, img, timing_suffix(frame_ms, img) + suffix + orders);
     return img.stats.nonfinite_pixels == 0 && t.counters.majorant_violations == 0 ? 0 : 1;
   }
   if (opt.quality == "reference") {  // CPU, double precision: no GL context needed

@@ -60,6 +60,7 @@ constexpr int kMaxFrames = 100000;  // --frames upper bound (a benchmark, not a 
 constexpr const char* kReferenceQuality = "reference";
 constexpr const char* kTruthQuality = "truth";
 constexpr int kMaxSpp = 1 << 20;  // --spp upper bound
+constexpr int kMaxScatteringOrder = 1 << 20;  // --max-order upper bound (paths end far sooner)
 
 // "naive, low, medium, high, ultra, default, reference, truth": the values of --quality.
 std::string quality_names_text() {
@@ -83,7 +84,7 @@ double wrap_heading_deg(double heading_deg) {
 struct RenderArgs {
   CLI::App* command = nullptr;
   std::string lat, lon, alt, heading, pitch, roll, time, fov, size, weather, out, frames, exposure;
-  std::string quality, render_frames, spp, seed;  // --quality, --frames, --spp, --seed
+  std::string quality, render_frames, spp, seed, max_order;  // --quality, --frames, --spp, --seed, --max-order
   std::string cloud_phase;                        // --cloud-phase
   bool window = false;
   bool cumulus_domes = false;
@@ -171,6 +172,11 @@ void add_quality_flags(CLI::App& cmd, RenderArgs& args, const RenderOptions& def
   cmd.add_option("--seed", args.seed,
                  "With --quality truth: random seed (integer in [0, 2147483647]); the image depends on it, "
                  "not on the thread count; default " + std::to_string(defaults.seed))
+      ->type_name("N");
+  cmd.add_option("--max-order", args.max_order,
+                 "With --quality truth: count only light scattered at most N times (integer in [1, " +
+                     std::to_string(kMaxScatteringOrder) + "]; 1 = single scattering; the difference "
+                     "between two orders is the light of the orders between, docs/TRUTH.md); default: every order")
       ->type_name("N");
   cmd.add_option("--frames", args.render_frames,
                  "Render the same view N times (frame_index 0..N-1, integer in [1, " +
@@ -291,6 +297,10 @@ void apply_quality(const RenderArgs& a, RenderOptions& opt) {
   if (given(cmd, "--spp")) {
     opt.spp = parse_integer("--spp", a.spp, 2, kMaxSpp, "paths per pixel");
     if (!truth) fail("--spp", a.spp, "only valid with --quality truth");
+  }
+  if (given(cmd, "--max-order")) {
+    opt.max_order = parse_integer("--max-order", a.max_order, 1, kMaxScatteringOrder, "scattering order");
+    if (!truth) fail("--max-order", a.max_order, "only valid with --quality truth");
   }
   if (given(cmd, "--seed")) {
     opt.seed = static_cast<std::uint64_t>(parse_integer("--seed", a.seed, 0, std::numeric_limits<int>::max(), "seed"));

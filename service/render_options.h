@@ -34,6 +34,8 @@ struct RenderOptions {
                                                  // "truth" (the path-traced ground truth)
   int spp = 64;                                  // --spp N: paths per pixel of --quality truth
   std::uint64_t seed = 1;                        // --seed N: random seed of --quality truth
+  int max_order = 0;                             // --max-order N: highest scattering order the
+                                                 // truth counts (1 = single scattering); 0 = all
   int frames = 1;                                // --frames N >= 1: render the view N times
                                                  // (frame_index 0..N-1), write the last frame
   bool cumulus_domes = false;                    // --cumulus-domes: cumulus layers as individual

@@ -82,6 +82,8 @@ TEST_F(CliBinary, BadInputGivesOneLineExitTwoAndNoFile) {
       {{"--quality", "truth", "--spp", "1"}, "--spp"},         // needs two for a standard error
       {{"--quality", "truth", "--frames", "2"}, "--frames"},
       {{"--quality", "truth", "--seed", "-3"}, "--seed"},
+      {{"--max-order", "2"}, "--max-order"},                  // only with --quality truth
+      {{"--quality", "truth", "--max-order", "0"}, "--max-order"},
       {{"--quality", "truth", "--cumulus-domes"}, "--cumulus-domes"},  // the path tracer has no domes
   };
   for (const Case& c : cases) {
@@ -170,6 +172,41 @@ TEST_F(CliBinary, TruthRenderWritesStandardErrorChannels) {
     positive_error += px[i + 5] > 0.0f;
   }
   EXPECT_GT(positive_error, 12 * 7 / 2);  // a 4-path estimate is uncertain almost everywhere
+}
+
+// `--max-order N` counts only the light scattered at most N times. Under scattered cumulus
+// seen from 600 m the cloud bases are lit almost wholly by multiple scattering, so with the
+// same paths (same seed) the mean radiance rises with N: single scattering is well under
+// half of the full estimate (about 5 % here), and three orders lie between.
+TEST_F(CliBinary, TruthMaxOrderCountsOnlyTheFirstOrders) {
+  auto mean_green = [&](const std::vector<std::string>& extra, const std::string& name) {
+    const std::string exr = (dir_ / name).string();
+    std::vector<std::string> args = {"render", "--quality", "truth",  "--spp", "4", "--seed", "7", "--size", "12x7",
+                                     "--alt",  "600",      "--pitch", "15",    "--weather", "scattered-cumulus",
+                                     "--out",  exr};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const RunResult r = run_cloudsvc(args, dir_);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    const std::string order_tag = extra.empty() ? std::string() : std::string("max_order=").append(extra.back());
+    EXPECT_NE(r.out.find(order_tag), std::string::npos) << r.out;
+    auto in = OIIO::ImageInput::open(exr);
+    if (!in) {
+      ADD_FAILURE() << "cannot read " << exr;
+      return 0.0;
+    }
+    std::vector<float> px(static_cast<std::size_t>(12 * 7 * 7));
+    EXPECT_TRUE(in->read_image(0, 0, 0, 7, OIIO::TypeDesc::FLOAT, px.data()));
+    double sum = 0.0;
+    for (std::size_t i = 1; i < px.size(); i += 7) sum += px[i];
+    return sum / (12 * 7);
+  };
+  const double single = mean_green({"--max-order", "1"}, "o1.exr");
+  const double three = mean_green({"--max-order", "3"}, "o3.exr");
+  const double all = mean_green({}, "all.exr");
+  EXPECT_GT(single, 0.0);
+  EXPECT_LT(single, three);
+  EXPECT_LT(three, all);
+  EXPECT_LT(single, 0.5 * all);
 }
 
 // `cloudsvc demo` at a tiny size: every documented scene is written as PNG and EXR at the

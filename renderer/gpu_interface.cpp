@@ -9,6 +9,7 @@
 #include "renderer/model/mie_phase_table.h"
 #include "renderer/model/ms_source_table.h"
 #include "renderer/model/scene_constants.h"
+#include "renderer/model/slab_flux_table.h"
 
 namespace cloudsvc::gpu {
 
@@ -78,6 +79,22 @@ std::string make_preamble() {
   s << "const float MS_DEPTH_SCALE = " << glsl_float(m::kMsDepthScale) << ";\n";
   s << "const float MS_TABLE_MEAN_COSINE = " << glsl_float(m::jdd_mean_cosine(m::jdd_params(m::kMsTableDropletUm))) << ";\n";
   s << "const int PEAK_BEAM_ORDERS = " << m::kPeakBeamOrders << ";\n";
+
+  // the slab transmittance table (renderer/model/slab_flux_table.h), as constant arrays
+  const m::SlabFluxTable& flux = m::slab_flux_table();
+  s << "#define SLAB_FLUX_TAU_NODES " << m::kSlabFluxTauNodes << '\n';
+  s << "#define SLAB_FLUX_MU_NODES " << m::kSlabFluxMuNodes << '\n';
+  s << "const float SLAB_FLUX_TAU_MIN = " << glsl_float(m::kSlabFluxTauMin) << ";\n";
+  s << "const float SLAB_FLUX_MU_MIN = " << glsl_float(m::kSlabFluxMuMin) << ";\n";
+  s << "const float SLAB_FLUX_MU_STEP = " << glsl_float(m::kSlabFluxMuStep) << ";\n";
+  s << "const float SLAB_FLUX_DIFFUSION_OFFSET = " << glsl_float(flux.diffusion_offset) << ";\n";
+  const auto glsl_array = [&](const char* name, const float* v, std::size_t n) {
+    s << "const float " << name << "[" << n << "] = float[](";
+    for (std::size_t k = 0; k < n; ++k) s << (k ? ", " : "") << glsl_float(v[k]);
+    s << ");\n";
+  };
+  glsl_array("SLAB_FLUX_BEAM", flux.beam.data(), flux.beam.size());
+  glsl_array("SLAB_FLUX_DIFFUSE", flux.diffuse.data(), flux.diffuse.size());
   s << "const float PEAK_BEAM_MASS_DONE = " << glsl_float(m::kPeakBeamMassDone) << ";\n";
 
   namespace a = model::atmosphere;

@@ -1,6 +1,6 @@
 // Light arriving at a point in a cloud layer: the sun through a light march (optical
 // depth for the peak beam), diffuse light from a Monte Carlo source table (the sun's) and
-// two-stream slab theory (the sky's and the ground's), and the
+// two-stream fluxes with Monte Carlo slab transmittances (the sky's and the ground's), and the
 // optical depth of a layer above a ground point (cloud shadows, ground_shadow_map.comp). Needs common.glsl,
 // frame_uniforms.glsl, atmosphere_model.glsl, atmosphere_lookup.glsl, cloud_density.glsl.
 #include "slab_transmittance.glsl"
@@ -58,8 +58,8 @@ float layer_shadow_optical_depth(int li, vec3 p, float ground_alt, vec3 sun, flo
 //   flux F_sun = E_sun T_atm mu_s, optical depths scaled to the table's droplets by
 //   (1 - g) / (1 - g_table) (similarity). With the peak beam of the sun term
 //   (peak_beam_phase) it makes the slab radiances of Monte Carlo (docs/ACCURACY.md).
-// * The sky's and the ground's: delta-Eddington two-stream fluxes of conservative
-//   scattering,
+// * The sky's and the ground's: two-stream fluxes of conservative scattering with the
+//   slab transmittances of the Monte Carlo table (slab_transmittance.glsl),
 //     F_down = E_sky T(tau_a) + E_up T(tau_b) R(tau_a),  F_up = E_sky T(tau_a) R(tau_b) + E_up T(tau_b)
 //   with T the diffuse transmittance, R = 1 - T, and E_up = a E_g the light a ground of
 //   albedo a sends up: its irradiance E_g under the layer, as independent columns (a

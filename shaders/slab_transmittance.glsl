@@ -1,23 +1,48 @@
-// Transmittance of a conservative scattering slab of clouds (two-stream, delta-scaled):
-// the diffuse light under a layer and the sun's beam through it (cloud_lighting.glsl,
-// and the composite's ground under cloud shadows). Needs common.glsl.
-// delta-scaling (Joseph, Wiscombe & Weinman 1976): the forward peak, a fraction g^2 of the
-// scattering, is counted as unscattered light in the two-stream fluxes
-const float DELTA_F = TWO_STREAM_MEAN_COSINE * TWO_STREAM_MEAN_COSINE;
+// Transmittance of a conservative scattering slab of clouds: the diffuse light under a
+// layer and the sun's beam through it (cloud_lighting.glsl, and the composite's ground
+// under cloud shadows). The Monte Carlo table of renderer/model/slab_flux_table.h, whose
+// arrays and grid the preamble holds (renderer/gpu_interface.cpp); the same lookups as
+// model::slab_beam_transmittance / slab_diffuse_transmittance. Needs common.glsl.
 
-// Diffuse transmittance of a conservative slab of optical depth tau lit by diffuse light
-// (two-stream, Bohren 1987 "Multiple scattering of light and some of its observable
-// consequences"); delta-scaling leaves (1 - g) tau unchanged.
-float slab_diffuse_transmittance(float tau) { return 1.0 / (1.0 + 0.75 * (1.0 - TWO_STREAM_MEAN_COSINE) * tau); }
+// f(tau) from values v0 (tau node 0), vi, vi1 (nodes i, i + 1 around tau) and vn (the
+// last node), as the table interpolates: linear in log2 tau between nodes, 1 - (1 - v0)
+// tau / tau_min below the first, the diffusion limit vn (tau_max + b) / (tau + b) above.
+int slab_flux_tau_index(float tau, out float frac) {
+  float x = log2(max(tau, 1e-30) / SLAB_FLUX_TAU_MIN);
+  int i = clamp(int(floor(x)), 0, SLAB_FLUX_TAU_NODES - 2);
+  frac = x - float(i);
+  return i;
+}
 
-// Total (direct + diffuse) transmittance of a conservative slab of optical depth tau for
-// a collimated beam at zenith cosine mu0 > 0: the delta-Eddington solution
-//   T = [(1/2 + 3/4 mu0) + (1/2 - 3/4 mu0) e^{-tau'/mu0}] / (1 + 3/4 (1 - g) tau),
-// tau' = (1 - g^2) tau; the direct part is e^{-tau'/mu0}. Equal to the diffuse form at
-// mu0 = 2/3, and 1 at tau = 0.
+float slab_flux_in_tau(float tau, int i, float frac, float v0, float vi, float vi1, float vn) {
+  if (!(tau > 0.0)) return 1.0;
+  float tau_max = SLAB_FLUX_TAU_MIN * exp2(float(SLAB_FLUX_TAU_NODES - 1));
+  if (tau <= SLAB_FLUX_TAU_MIN) return 1.0 - (1.0 - v0) * tau / SLAB_FLUX_TAU_MIN;
+  if (tau >= tau_max) return vn * (tau_max + SLAB_FLUX_DIFFUSION_OFFSET) / (tau + SLAB_FLUX_DIFFUSION_OFFSET);
+  return mix(vi, vi1, frac);
+}
+
+// Transmittance of diffuse light through a slab of optical depth tau (1 at tau = 0).
+float slab_diffuse_transmittance(float tau) {
+  float frac;
+  int i = slab_flux_tau_index(tau, frac);
+  return slab_flux_in_tau(tau, i, frac, SLAB_FLUX_DIFFUSE[0], SLAB_FLUX_DIFFUSE[i], SLAB_FLUX_DIFFUSE[i + 1],
+                          SLAB_FLUX_DIFFUSE[SLAB_FLUX_TAU_NODES - 1]);
+}
+
+// Total (direct + diffuse) transmittance of a collimated beam at zenith cosine mu0 > 0.
 float slab_beam_transmittance(float tau, float mu0) {
-  float direct = exp(-(1.0 - DELTA_F) * tau / mu0);
-  return ((0.5 + 0.75 * mu0) + (0.5 - 0.75 * mu0) * direct) / (1.0 + 0.75 * (1.0 - TWO_STREAM_MEAN_COSINE) * tau);
+  float m = clamp((mu0 - SLAB_FLUX_MU_MIN) / SLAB_FLUX_MU_STEP, 0.0, float(SLAB_FLUX_MU_NODES - 1));
+  int j = min(int(m), SLAB_FLUX_MU_NODES - 2);
+  float fm = m - float(j);
+  float frac;
+  int i = slab_flux_tau_index(tau, frac);
+  int n = SLAB_FLUX_MU_NODES, last = (SLAB_FLUX_TAU_NODES - 1) * n;
+  float v0 = mix(SLAB_FLUX_BEAM[j], SLAB_FLUX_BEAM[j + 1], fm);
+  float vi = mix(SLAB_FLUX_BEAM[i * n + j], SLAB_FLUX_BEAM[i * n + j + 1], fm);
+  float vi1 = mix(SLAB_FLUX_BEAM[(i + 1) * n + j], SLAB_FLUX_BEAM[(i + 1) * n + j + 1], fm);
+  float vn = mix(SLAB_FLUX_BEAM[last + j], SLAB_FLUX_BEAM[last + j + 1], fm);
+  return slab_flux_in_tau(tau, i, frac, v0, vi, vi1, vn);
 }
 
 // Light bouncing between a Lambertian ground of albedo a and a conservative slab of

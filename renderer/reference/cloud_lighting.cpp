@@ -73,14 +73,6 @@ glm::dvec3 sun_phase(const model::JdDParams& phase, const model::PhaseTable* mie
   return p;
 }
 
-double slab_diffuse_transmittance(double tau) { return 1.0 / (1.0 + 0.75 * (1.0 - kTwoStreamMeanCosine) * tau); }
-
-double slab_beam_transmittance(double tau, double mu0) {
-  const double f = kTwoStreamMeanCosine * kTwoStreamMeanCosine;
-  const double direct = std::exp(-(1.0 - f) * tau / mu0);
-  return ((0.5 + 0.75 * mu0) + (0.5 - 0.75 * mu0) * direct) / (1.0 + 0.75 * (1.0 - kTwoStreamMeanCosine) * tau);
-}
-
 glm::dvec3 ground_cloud_gain(const glm::dvec3& albedo, double tau) {
   return 1.0 / (1.0 - albedo * (1.0 - slab_diffuse_transmittance(tau)));
 }

@@ -1,6 +1,7 @@
 // Light in the clouds (docs/RENDERING.md "Light"), converged: the sun's peak beam through a
 // fine light march, the diffuse term (Monte Carlo source table for the sun's light,
-// two-stream for the sky's and the ground's), and cloud shadows on the
+// two-stream fluxes with Monte Carlo slab transmittances for the sky's and the ground's),
+// and cloud shadows on the
 // ground through a fine march of every layer. Frames and units as in reference_scene.h;
 // optical depths dimensionless; radiances in the units of the solar irradiance given.
 #pragma once
@@ -10,6 +11,7 @@
 #include <glm/glm.hpp>
 
 #include "renderer/model/scene_constants.h"
+#include "renderer/model/slab_flux_table.h"
 #include "renderer/reference/cloud_field.h"
 
 namespace cloudsvc::reference {
@@ -49,14 +51,10 @@ double ground_shadow_optical_depth(const CloudField& field, const glm::dvec3& p,
 // scattering uses that table instead of the fit (per wavelength: the glory and fogbow).
 glm::dvec3 sun_phase(const model::JdDParams& phase, const model::PhaseTable* mie, double cos_view_sun, double tau);
 
-// Two-stream diffuse transmittance of a conservative slab (Bohren 1987):
-// T(tau) = 1 / (1 + 3/4 (1 - g) tau), g = kTwoStreamMeanCosine.
-double slab_diffuse_transmittance(double tau);
-
-// Delta-Eddington total transmittance of a conservative slab for a collimated beam at
-// zenith cosine mu0 > 0 (Joseph, Wiscombe & Weinman 1976, forward fraction f = g^2):
-// [(1/2 + 3/4 mu0) + (1/2 - 3/4 mu0) e^{-(1 - f) tau / mu0}] / (1 + 3/4 (1 - g) tau).
-double slab_beam_transmittance(double tau, double mu0);
+// The transmittance of a conservative slab, for diffuse light and for the sun's beam: the
+// Monte Carlo table of renderer/model/slab_flux_table.h.
+using model::slab_beam_transmittance;
+using model::slab_diffuse_transmittance;
 
 // Ground-cloud inter-reflection: 1 / (1 - a R(tau)), R = 1 - slab_diffuse_transmittance(tau)
 // the diffuse reflectance from below of the clouds above a ground of albedo a (per channel;

@@ -35,8 +35,10 @@ namespace cloudsvc::reference {
 // Revision of the light model the reference (and the GPU) computes: part of the key of
 // cached reference images (bench/image_cache.h), so a changed model is never compared from
 // a stale cache. 2: ground-cloud inter-reflection (cloud_lighting.h, ground_cloud_gain);
-// 3: the ground under a layer as independent clear and cloudy columns.
-inline constexpr int kLightModelRevision = 3;
+// 3: the ground under a layer as independent clear and cloudy columns; 4: the peak beam,
+// the diffuse source table and the slab transmittances from Monte Carlo (model::
+// ms_source_table, model::slab_flux_table).
+inline constexpr int kLightModelRevision = 4;
 
 struct ReferenceSettings {
   // Cloud march

@@ -32,6 +32,14 @@ struct CloudLayerGpu {
   int dome;                                    // 1: individual cumulus domes (cumulus_domes.glsl, slot = layer)
   alignas(16) glm::vec4 anvil;  // weather::Anvil: spread (0: none), base, top, density_ratio
   glm::mat4 noise_rotation;  // upper 3x3: local ENU -> ECEF axes of the wind-rotated field
+  // optical depths scale by this onto the diffuse source table's droplets
+  // (model::ms_similarity_scale of the layer's phase function)
+  float ms_similarity;
+  float pad0 = 0.0f, pad1 = 0.0f, pad2 = 0.0f;  // std140 aligns the next member to a vec4
+  // transmittance of the layer's full nominal optical depth extinction_max * density_scale
+  // * thickness (model::slab_flux_table): element j < 11 for the sun's beam at the table's
+  // zenith cosine mu_j (kSlabFluxMuMin + j kSlabFluxMuStep), element 11 for diffuse light
+  glm::vec4 ground_transmittance[3];
 };
 
 struct FrameUniforms {
@@ -76,7 +84,7 @@ struct FrameUniforms {
   CloudLayerGpu layers[gpu::kMaxLayers];
 };
 
-static_assert(sizeof(CloudLayerGpu) == 11 * 16, "std140 layout");
-static_assert(sizeof(FrameUniforms) == 64 + 19 * 16 + gpu::kMaxLayers * 11 * 16, "std140 layout");
+static_assert(sizeof(CloudLayerGpu) == 15 * 16, "std140 layout");
+static_assert(sizeof(FrameUniforms) == 64 + 19 * 16 + gpu::kMaxLayers * 15 * 16, "std140 layout");
 
 }  // namespace cloudsvc

@@ -6,6 +6,7 @@
 #include "renderer/model/droplet_optics.h"
 #include "renderer/model/ms_source_table.h"
 #include "renderer/model/phase_function.h"
+#include "renderer/model/slab_flux_table.h"
 
 namespace cloudsvc {
 
@@ -122,6 +123,14 @@ FrameUniforms pack_frame_uniforms(const FrameContext& c, const RenderQuality& qu
     g.dome = lf.domes ? 1 : 0;
     g.anvil = glm::vec4(tr.anvil.spread, tr.anvil.base, tr.anvil.top, tr.anvil.density_ratio);
     g.noise_rotation = glm::mat4(glm::mat3(lf.field_rotation * c.enu_to_ecef));
+    g.ms_similarity = static_cast<float>(model::ms_similarity_scale(ph));
+    // the layer's full nominal optical depth, as diffuse_inscatter (cloud_lighting.glsl) forms it
+    const double tau_cloud = static_cast<double>(g.extinction_max) * g.density_scale * (g.top_m - g.base_m);
+    static_assert(model::kSlabFluxMuNodes == 11, "ground_transmittance holds 11 beam values and the diffuse one");
+    for (int j = 0; j < model::kSlabFluxMuNodes; ++j)
+      g.ground_transmittance[j / 4][j % 4] =
+          static_cast<float>(model::slab_beam_transmittance(tau_cloud, model::kSlabFluxMuMin + j * model::kSlabFluxMuStep));
+    g.ground_transmittance[2][3] = static_cast<float>(model::slab_diffuse_transmittance(tau_cloud));
   }
   u.layer_count = c.layer_count;
   u.frame_index = static_cast<int>(c.view.frame_index % 65536u);

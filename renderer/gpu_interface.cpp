@@ -77,7 +77,6 @@ std::string make_preamble() {
   s << "const float MS_TAU_MIN = " << glsl_float(m::kMsTauMin) << ";\n";
   s << "const float MS_SUN_ZENITH_MAX_DEG = " << glsl_float(m::kMsSunZenithMaxDeg) << ";\n";
   s << "const float MS_DEPTH_SCALE = " << glsl_float(m::kMsDepthScale) << ";\n";
-  s << "const float MS_TABLE_MEAN_COSINE = " << glsl_float(m::jdd_mean_cosine(m::jdd_params(m::kMsTableDropletUm))) << ";\n";
   s << "const int PEAK_BEAM_ORDERS = " << m::kPeakBeamOrders << ";\n";
 
   // the slab transmittance table (renderer/model/slab_flux_table.h), as constant arrays
@@ -96,6 +95,7 @@ std::string make_preamble() {
   glsl_array("SLAB_FLUX_BEAM", flux.beam.data(), flux.beam.size());
   glsl_array("SLAB_FLUX_DIFFUSE", flux.diffuse.data(), flux.diffuse.size());
   s << "const float PEAK_BEAM_MASS_DONE = " << glsl_float(m::kPeakBeamMassDone) << ";\n";
+  s << "const float PEAK_BEAM_NEGLIGIBLE = " << glsl_float(m::kPeakBeamNegligible) << ";\n";
 
   namespace a = model::atmosphere;
   s << "const float ATMO_BOTTOM = " << glsl_float(a::kBottomRadius) << ";\n";

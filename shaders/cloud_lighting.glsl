@@ -74,6 +74,15 @@ float layer_shadow_optical_depth(int li, vec3 p, float ground_alt, vec3 sun, flo
 // ground_sun and ground_sky (cloud_free_ground_irradiance below) are the irradiance the
 // ground under the point would receive without clouds; the march holds them over 10 km of
 // its ray (the sun's zenith angle at the ground below a sample moves by 1.6e-4 rad per km).
+// Transmittance of layer L's full nominal optical depth for the sun's beam at zenith cosine
+// mu0: CloudLayerGpu::ground_transmittance, linear in mu0 between the table's nodes (as
+// slab_beam_transmittance interpolates).
+float layer_beam_transmittance(CloudLayerGpu L, float mu0) {
+  float m = clamp((mu0 - SLAB_FLUX_MU_MIN) / SLAB_FLUX_MU_STEP, 0.0, float(SLAB_FLUX_MU_NODES - 1));
+  int j = min(int(m), SLAB_FLUX_MU_NODES - 2);
+  return mix(L.ground_transmittance[j / 4][j % 4], L.ground_transmittance[(j + 1) / 4][(j + 1) % 4], m - float(j));
+}
+
 vec3 diffuse_inscatter(CloudLayerGpu L, float alt, float mu_s, vec3 T_atm, float coverage, vec3 E_sun,
                        vec3 ground_sun, vec3 ground_sky, float w_up, float cos_phi) {
   float sigma_nominal = L.extinction_max * L.density_scale * coverage;
@@ -82,9 +91,8 @@ vec3 diffuse_inscatter(CloudLayerGpu L, float alt, float mu_s, vec3 T_atm, float
   float mu_pos = max(mu_s, 0.0);
   vec3 J_sun = vec3(0.0);
   if (mu_pos > 0.0) {
-    float similarity = (1.0 - cloud_phase_mean_cosine(L.g_hg, L.g_d, L.draine_alpha, L.w_d)) / (1.0 - MS_TABLE_MEAN_COSINE);
     float phi_deg = degrees(acos(clamp(cos_phi, -1.0, 1.0)));
-    J_sun = E_sun * T_atm * (mu_pos * ms_source_over_mu(similarity * tau_a, similarity * tau_b, mu_pos, w_up, phi_deg));
+    J_sun = E_sun * T_atm * (mu_pos * ms_source_over_mu(L.ms_similarity * tau_a, L.ms_similarity * tau_b, mu_pos, w_up, phi_deg));
   }
   float Ta = slab_diffuse_transmittance(tau_a), Tb = slab_diffuse_transmittance(tau_b);
   vec3 E_sky = E_sun * sky_irradiance(alt, mu_s);
@@ -92,11 +100,13 @@ vec3 diffuse_inscatter(CloudLayerGpu L, float alt, float mu_s, vec3 T_atm, float
   // the ground under the layer: a fraction 1 - c in the clear, c under cloud of the layer's
   // full optical depth (independent columns), with the round trips to the cloud's base
   float c = clamp(coverage, 0.0, 1.0);
-  float tau_cloud = L.extinction_max * L.density_scale * (L.top_m - L.base_m);
-  float T_sun_ground = 1.0 - c + c * (mu_pos > 0.0 ? slab_beam_transmittance(tau_cloud, mu0) : 0.0);
-  float T_sky_ground = 1.0 - c + c * slab_diffuse_transmittance(tau_cloud);
+  // (the layer's full optical depth tau_c's transmittances: L.ground_transmittance, per frame)
+  float T_sky_cloud = L.ground_transmittance[2].w;
+  float T_sun_ground = 1.0 - c + c * (mu_pos > 0.0 ? layer_beam_transmittance(L, mu0) : 0.0);
+  float T_sky_ground = 1.0 - c + c * T_sky_cloud;
   vec3 albedo = frame.ground_albedo.rgb;
-  vec3 E_up = albedo * ground_cloud_gain(albedo * c, tau_cloud) * (ground_sun * T_sun_ground + ground_sky * T_sky_ground);
+  vec3 E_up = albedo * ground_cloud_gain_for_transmittance(albedo * c, T_sky_cloud) *
+              (ground_sun * T_sun_ground + ground_sky * T_sky_ground);
   vec3 F_down = E_sky * Ta + E_up * Tb * (1.0 - Ta);
   vec3 F_up = E_sky * Ta * (1.0 - Tb) + E_up * Tb;
   vec3 J = (2.0 * (F_down + F_up) + 3.0 * TWO_STREAM_MEAN_COSINE * (F_up - F_down) * w_up) / (4.0 * PI);

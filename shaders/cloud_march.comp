@@ -138,6 +138,15 @@ RaySample march_ray(ivec2 q, vec3 dir) {
     for (int k = 0; k < n_iv && T > CLOUD_T_EPS; ++k) {
       int li = iv[k].layer;
       CloudLayerGpu L = frame.layers[li];
+      // light marches stop where the sun's peak beam towards the camera is spent
+      // (RenderQuality::light_march_cutoff): past the frame's cut-off, and earlier where
+      // this view's scattering angle bounds it below PEAK_BEAM_NEGLIGIBLE times the
+      // horizontal solar flux (the diffuse light scales with it; sun.z: mu_s at the camera)
+      float light_cut = frame.light_march_cutoff_tau < 1e29
+                            ? min(frame.light_march_cutoff_tau,
+                                  peak_beam_cutoff_tau(cos_view_sun, L.g_hg, L.g_d, L.draine_alpha, L.w_d,
+                                                       PEAK_BEAM_NEGLIGIBLE * max(sun.z, 0.05)))
+                            : frame.light_march_cutoff_tau;
       float u0 = march_coordinate(iv[k].t0, t_ref), u1 = march_coordinate(iv[k].t1, t_ref);
       // with steps growing with distance (t_ref > 0), a near layer's share of the budget
       // can leave a far one a few steps: every layer crossing gets at least a quarter of
@@ -212,7 +221,7 @@ RaySample march_ray(ivec2 q, vec3 dir) {
         vec3 L_sun = vec3(0.0);
         if (max(T_atm.r, max(T_atm.g, T_atm.b)) > 0.0) {
           float tau = shadow.volume_valid != 0 ? light_volume_optical_depth(li, p, alt)
-                                         : light_optical_depth(li, p, alt, sun, mu_s, light_steps_at(t, L), w, frame.light_march_cutoff_tau);
+                                         : light_optical_depth(li, p, alt, sun, mu_s, light_steps_at(t, L), w, light_cut);
           vec3 s_sum = vec3(peak_beam_phase(cos_view_sun, tau, L.g_hg, L.g_d, L.draine_alpha, L.w_d));
 #ifdef CLOUDSVC_MIE_PHASE
           // single scattering with the layer's Mie table per wavelength instead of the fit

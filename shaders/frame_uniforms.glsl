@@ -15,6 +15,10 @@ struct CloudLayerGpu {
   int dome;    // 1: individual cumulus domes (cumulus_domes.glsl; dome slot = layer index)
   vec4 anvil;  // weather::Anvil: spread (0: none), base, top, density_ratio
   mat4 noise_rotation;
+  float ms_similarity;  // model::ms_similarity_scale: optical depths onto the source table's droplets
+  // the slab transmittance of the layer's full nominal optical depth: [j / 4][j % 4] for the
+  // sun's beam at the table's zenith cosine j (< SLAB_FLUX_MU_NODES), [2].w for diffuse light
+  vec4 ground_transmittance[3];
 };
 
 layout(std140, binding = UBO_FRAME) uniform FrameUniforms {

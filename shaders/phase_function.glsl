@@ -37,13 +37,6 @@ float cloud_phase(float mu, float g_hg, float g_d, float alpha, float w_d) {
   return (1.0 - w_d) * hg_phase(mu, g_hg) + w_d * draine_phase(mu, g_d, alpha);
 }
 
-// Mean cosine of that blend (jdd_mean_cosine, renderer/model/phase_function.cpp; Draine
-// 2003 for the Draine lobe).
-float cloud_phase_mean_cosine(float g_hg, float g_d, float alpha, float w_d) {
-  float gd = g_d * (1.0 + alpha * (3.0 + 2.0 * g_d * g_d) / 5.0) / (1.0 + alpha * (1.0 + 2.0 * g_d * g_d) / 3.0);
-  return (1.0 - w_d) * g_hg + w_d * gd;
-}
-
 // The sun's peak beam scattered towards the camera, per unit sun irradiance and unit
 // scattering (peak_beam_phase, renderer/model/ms_source_table.h): the sun's light that has
 // scattered only through the diffraction peak (the HG lobe, weight f = 1 - w_D), after a
@@ -63,4 +56,17 @@ float peak_beam_phase(float mu, float tau, float g_hg, float g_d, float alpha, f
     g *= g_hg;
   }
   return sum + f * max(beam - mass, 0.0) * hg_phase(mu, g);
+}
+
+// The optical depth towards the sun beyond which peak_beam_phase(mu, tau) stays below
+// `negligible` for any tau (model::peak_beam_cutoff_tau, the same bound):
+// [f max_k HG(mu; g_HG^(k+1)) + w_D D(mu)] e^(-w_D tau) <= negligible.
+float peak_beam_cutoff_tau(float mu, float g_hg, float g_d, float alpha, float w_d, float negligible) {
+  float lobe = 0.0, g = g_hg;
+  for (int k = 0; k <= PEAK_BEAM_ORDERS; ++k) {
+    lobe = max(lobe, hg_phase(mu, g));
+    g *= g_hg;
+  }
+  float bound = (1.0 - w_d) * lobe + w_d * draine_phase(mu, g_d, alpha);
+  return log(max(bound / negligible, 1.0)) / w_d;
 }

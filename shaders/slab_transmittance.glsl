@@ -49,6 +49,8 @@ float slab_beam_transmittance(float tau, float mu0) {
 // optical depth tau above it: the irradiance reaching the ground gains the geometric series
 // 1 / (1 - a R) of ground-cloud round trips, R = 1 - T(tau) the slab's diffuse reflectance
 // from below (the adding method, e.g. Liou 2002 §6.2; Bouthors et al. 2008 §5 for clouds).
+// With the slab's diffuse transmittance T given:
+vec3 ground_cloud_gain_for_transmittance(vec3 albedo, float T) { return 1.0 / (1.0 - albedo * (1.0 - T)); }
 vec3 ground_cloud_gain(vec3 albedo, float tau) {
-  return 1.0 / (1.0 - albedo * (1.0 - slab_diffuse_transmittance(tau)));
+  return ground_cloud_gain_for_transmittance(albedo, slab_diffuse_transmittance(tau));
 }

@@ -82,7 +82,8 @@ Offsets expected_frame_uniforms() {
       MEMBER(CloudLayerGpu, top_weight), MEMBER(CloudLayerGpu, noise_vertical_scale),
       MEMBER(CloudLayerGpu, base_noise_offset), MEMBER(CloudLayerGpu, stratiform),
       MEMBER(CloudLayerGpu, detail_noise_offset), MEMBER(CloudLayerGpu, dome),
-      MEMBER(CloudLayerGpu, anvil), MEMBER(CloudLayerGpu, noise_rotation)};
+      MEMBER(CloudLayerGpu, anvil), MEMBER(CloudLayerGpu, noise_rotation), MEMBER(CloudLayerGpu, ms_similarity),
+      ARRAY_MEMBER(CloudLayerGpu, ground_transmittance)};
   for (int i = 0; i < gpu::kMaxLayers; ++i)
     for (const auto& [name, offset] : layer)
       e["FrameUniforms.layers[" + std::to_string(i) + "]" + name.substr(name.find('.'))] =

@@ -65,6 +65,30 @@ TEST(PeakBeam, BroadensTowardsTheSunWithDepth) {
             2.0 * peak_beam_phase(c3, 1.0, p) / peak_beam_phase(1.0, 1.0, p));
 }
 
+// Past peak_beam_cutoff_tau the peak beam is negligible at any depth, for every droplet
+// size and scattering angle (checked on a fine grid of depths beyond the cut-off). Away
+// from the sun the cut-off comes well before the frame's 12 / w_D: ~8 at 120 degrees for
+// 14 um droplets; towards the sun (the diffraction peak, ~1000 sr^-1) it lies beyond it.
+TEST(PeakBeam, IsNegligibleBeyondItsViewCutoff) {
+  for (double d : {5.0, 14.0, 30.0, 50.0}) {
+    const JdDParams p = jdd_params(d);
+    std::vector<double> cosines = {std::cos(0.05 * std::numbers::pi / 180.0), std::cos(0.5 * std::numbers::pi / 180.0)};
+    for (int i = 0; i <= 160; ++i) cosines.push_back(-1.0 + i / 80.0);
+    for (double cos_theta : cosines) {
+      const double tau_c = peak_beam_cutoff_tau(cos_theta, p, kPeakBeamNegligible);
+      ASSERT_TRUE(std::isfinite(tau_c) && tau_c >= 0.0);
+      for (double x = 0.0; x < 40.0; x += 0.25)
+        EXPECT_LE(peak_beam_phase(cos_theta, tau_c + x, p), kPeakBeamNegligible * (1.0 + 1e-9))
+            << "d " << d << " cos " << cos_theta << " tau_c " << tau_c << " + " << x;
+    }
+  }
+  const JdDParams p = jdd_params(kDropletUm);
+  const double back = peak_beam_cutoff_tau(std::cos(120.0 * std::numbers::pi / 180.0), p, kPeakBeamNegligible);
+  EXPECT_GT(back, 6.0);
+  EXPECT_LT(back, 0.6 * 12.0 / peak_beam_slowest_decay());
+  EXPECT_GT(peak_beam_cutoff_tau(1.0, p, kPeakBeamNegligible), 12.0 / peak_beam_slowest_decay());
+}
+
 TEST(MsDepthCoordinate, RoundTripsAndIsLogSpacedAtTheBoundaries) {
   for (double tau : {0.01, 1.0, 16.0, 512.0}) {
     for (double y : {0.0, 0.1, 0.25, 0.5, 0.7, 1.0}) {

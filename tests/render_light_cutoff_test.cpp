@@ -1,8 +1,11 @@
 // Light marches stop once the sun's beam is spent (RenderQuality::light_march_cutoff,
-// shaders/cloud_lighting.glsl): past an optical depth of 12 / w_D (27 for the smallest
+// shaders/cloud_march.comp): past an optical depth of 12 / w_D (27 for the smallest
 // droplets) towards the sun the sun term, the peak beam e^(-w_D tau), is below 6e-6 of its
-// unshadowed value whatever lies beyond, so the image may not
-// change visibly while thick clouds need far fewer density evaluations. Cumulonimbus towers
+// unshadowed value whatever lies beyond, and earlier where the view's scattering angle
+// bounds the peak beam below 1e-4 sr^-1 per unit horizontal solar flux
+// (model::peak_beam_cutoff_tau), so the image may not change visibly (at most 0.3 % in
+// any pixel: an 8-bit sRGB step is 0.4 % or more) while thick clouds need far fewer
+// density evaluations. Cumulonimbus towers
 // seen from beside them at 3 km (the thickest preset; from above, the thin anvil shield
 // hides them and its light marches rarely reach tau 12) and a stratocumulus deck at sunset
 // (long slant light paths), every pixel marched in full.
@@ -31,8 +34,9 @@ class LightCutoff : public ::testing::TestWithParam<int> {};
 TEST_P(LightCutoff, StopsSpentLightMarchesWithoutChangingTheImage) {
   const accuracy::AccuracyScene& s = thick_scenes()[static_cast<size_t>(GetParam())];
   const ViewRequest v = accuracy::accuracy_view(s, 96, 54);
-  // the cut-off applies to the peak beam's slowest decay, e^(-w_D tau) with the smallest
-  // w_D of the droplet fit (model::peak_beam_slowest_decay: 0.448), i.e. at tau = 12 / 0.448
+  // the frame's cut-off applies to the peak beam's slowest decay, e^(-w_D tau) with the
+  // smallest w_D of the droplet fit (model::peak_beam_slowest_decay: 0.448), i.e. at
+  // tau = 12 / 0.448; the view's (peak_beam_cutoff_tau) comes first away from the sun
   RenderQuality every;
   every.light_march_cutoff = 0.0;
   RenderQuality cut = every;
@@ -53,7 +57,7 @@ TEST_P(LightCutoff, StopsSpentLightMarchesWithoutChangingTheImage) {
     worst = std::max(worst, std::abs(static_cast<double>(b.rgba[k]) - a.rgba[k]) / (std::abs(a.rgba[k]) + 1e-3 * peak));
   std::printf("%s: density evaluations per pixel %.1f -> %.1f, worst relative change %.2e\n", s.name,
               a.stats.density_evals_per_pixel, b.stats.density_evals_per_pixel, worst);
-  EXPECT_LT(worst, 1e-4);
+  EXPECT_LT(worst, 3e-3);
   EXPECT_LT(b.stats.density_evals_per_pixel, 0.9 * a.stats.density_evals_per_pixel);
 }
 

@@ -334,6 +334,13 @@ double peak_beam_phase(double cos_theta, double tau, const JdDParams& phase) {
 
 double peak_beam_slowest_decay() { return jdd_params(5.0).w_d; }  // the fit's smallest diameter
 
+double peak_beam_cutoff_tau(double cos_theta, const JdDParams& phase, double negligible) {
+  double lobe = 0.0, g = phase.g_hg;
+  for (int k = 0; k <= kPeakBeamOrders; ++k, g *= phase.g_hg) lobe = std::max(lobe, hg_phase(cos_theta, g));
+  const double bound = (1.0 - phase.w_d) * lobe + phase.w_d * draine_phase(cos_theta, phase.g_d, phase.alpha);
+  return std::log(std::max(bound / negligible, 1.0)) / phase.w_d;
+}
+
 double ms_similarity_scale(const JdDParams& phase) {
   static const double table_g = jdd_mean_cosine(jdd_params(kMsTableDropletUm));
   return (1.0 - jdd_mean_cosine(phase)) / (1.0 - table_g);

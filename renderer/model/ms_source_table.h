@@ -170,6 +170,16 @@ double peak_beam_phase(double cos_theta, double tau, const JdDParams& phase);
 // The peak beam decays as e^(-w_D tau); w_D grows with the droplet size, so over the fit's
 // droplets (5-50 um) this smallest w_D is the slowest decay a light march has to follow.
 double peak_beam_slowest_decay();
+// The optical depth towards the sun beyond which the peak beam scattered by cos_theta stays
+// below `negligible` (sr^-1 per unit sun irradiance) for any optical depth: the peak beam
+// is at most [f max_k HG(cos; g_HG^(k+1)) + w_D D(cos)] e^(-w_D tau), k = 0 ..
+// kPeakBeamOrders (the Poisson weights sum to e^(-w_D tau)), so a light march may stop
+// there (RenderQuality::light_march_cutoff, shaders/phase_function.glsl, the same). 0
+// where the bound is below `negligible` even unshadowed. The march uses kPeakBeamNegligible
+// times the sun's zenith cosine at the camera (at least 0.05): ~0.1 % of the diffuse light
+// of a sunlit cloud, whose source is 0.02-0.3 sr^-1 per unit horizontal solar flux.
+inline constexpr double kPeakBeamNegligible = 1e-4;
+double peak_beam_cutoff_tau(double cos_theta, const JdDParams& phase, double negligible);
 
 // The droplet size the table is computed for (Bouthors et al. 2008's r_e = 7 um) and the
 // similarity scale that maps another phase function onto it: optical depths times

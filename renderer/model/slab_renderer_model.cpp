@@ -61,14 +61,17 @@ double slab_light_optical_depth(const SlabSpec& slab, double z, const SlabRender
   return tau;
 }
 
+namespace {
+
 // diffuse_inscatter (cloud_lighting.glsl) with T_atm = 1, coverage 1, density scale 1,
 // E_sun = 1, E_sky = 0 (sky_irradiance) and ground albedo 0: the sun's part alone,
 // F_sun times the source table (J_sun).
-double slab_diffuse_inscatter(const SlabSpec& slab, double z, const SlabRendererModelOptions& o, const glm::dvec3& w) {
+// sim: the similarity scale of the slab's phase function (CloudLayerGpu::ms_similarity).
+double diffuse_inscatter_scaled(const SlabSpec& slab, double z, const SlabRendererModelOptions& o, const glm::dvec3& w,
+                                double sim) {
   const double mu_pos = std::max(cos_sun(slab), 0.0);  // mu_pos
   if (!(mu_pos > 0.0)) return 0.0;
   const double sigma_nominal = slab.sigma_t_per_m * 1.0 * 1.0;                         // sigma_nominal
-  const double sim = ms_similarity_scale(jdd_params(slab.droplet_diameter_um));          // similarity
   const double tau_a = sim * sigma_nominal * std::max(slab.thickness_m - z, 0.0);        // tau_a
   const double tau_b = sim * sigma_nominal * std::max(z - 0.0, 0.0);                     // tau_b
   const double h = std::hypot(w.x, w.y);
@@ -80,11 +83,18 @@ double slab_diffuse_inscatter(const SlabSpec& slab, double z, const SlabRenderer
   return 1.0 * 1.0 * mu_pos * j_over_mu;                                                 // E_sun T_atm mu_pos J/mu
 }
 
+}  // namespace
+
+double slab_diffuse_inscatter(const SlabSpec& slab, double z, const SlabRendererModelOptions& o, const glm::dvec3& w) {
+  return diffuse_inscatter_scaled(slab, z, o, w, ms_similarity_scale(jdd_params(slab.droplet_diameter_um)));
+}
+
 SlabRendererModelResult slab_renderer_model_radiance(const SlabSpec& slab, const ViewDirection& v, bool top,
                                                      const SlabRendererModelOptions& o) {
   if (!(slab.sigma_t_per_m > 0.0) || !(slab.thickness_m > 0.0) || o.primary_steps < 1 || o.light_steps < 1)
     throw std::invalid_argument("slab renderer model: bad slab or options");
   const JdDParams phase = jdd_params(slab.droplet_diameter_um);
+  const double sim = ms_similarity_scale(phase);  // L.ms_similarity
   // Camera ray: opposite to the light's travel direction (dir in cloud_march.comp).
   const glm::dvec3 dir = -view_travel_direction(v, top);
   const glm::dvec3 sun = sun_direction(slab.sun_zenith_deg);
@@ -114,7 +124,7 @@ SlabRendererModelResult slab_renderer_model_radiance(const SlabSpec& slab, const
       const double L_sun = 1.0 * 1.0 *                           // L_sun = E_sun T_atm s_sum
                            (o.peak_beam ? peak_beam_phase(cos_view_sun, tau, phase)
                                         : jdd_phase(cos_view_sun, phase) * std::exp(-tau));
-      const double L_diffuse = o.diffuse ? slab_diffuse_inscatter(slab, z, o, -dir) : 0.0;  // L_diffuse
+      const double L_diffuse = o.diffuse ? diffuse_inscatter_scaled(slab, z, o, -dir, sim) : 0.0;  // L_diffuse
       const double absorbed = one_minus_exp_neg(sigma * dt);  // absorbed
       C_sun += T * absorbed * L_sun;                          // C += T absorbed (L_sun + L_diffuse)
       C_diff += T * absorbed * L_diffuse;

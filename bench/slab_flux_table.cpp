@@ -38,7 +38,7 @@ int main(int argc, char** argv) {
   std::uint64_t photons = 20000, seed = 1;
   int threads = cloudsvc::kAllThreads;
   app.add_option("--out", out, "output file (renderer/model/data/slab_flux_table.inc)")->required();
-  app.add_option("--photons", photons, "photons per node, times 1 + tau / 8 (20000: ~3 min on 2 cores)")->check(CLI::Range(1000, 100000000));
+  app.add_option("--photons", photons, "photons per node, times 1 + tau / 8 (20000: ~2 min on 2 cores)")->check(CLI::Range(1000, 100000000));
   app.add_option("--seed", seed, "random seed");
   app.add_option("--threads", threads, "worker threads (0: all cores; the table does not depend on it)")
       ->check(CLI::Range(0, 256));

@@ -124,7 +124,7 @@ FrameUniforms pack_frame_uniforms(const FrameContext& c, const RenderQuality& qu
     g.anvil = glm::vec4(tr.anvil.spread, tr.anvil.base, tr.anvil.top, tr.anvil.density_ratio);
     g.noise_rotation = glm::mat4(glm::mat3(lf.field_rotation * c.enu_to_ecef));
     g.ms_similarity = static_cast<float>(model::ms_similarity_scale(ph));
-    // the layer's full nominal optical depth, as diffuse_inscatter (cloud_lighting.glsl) forms it
+    // the layer's full nominal optical depth tau_c of diffuse_inscatter (cloud_lighting.glsl)
     const double tau_cloud = static_cast<double>(g.extinction_max) * g.density_scale * (g.top_m - g.base_m);
     static_assert(model::kSlabFluxMuNodes == 11, "ground_transmittance holds 11 beam values and the diffuse one");
     for (int j = 0; j < model::kSlabFluxMuNodes; ++j)

@@ -51,12 +51,21 @@ float layer_shadow_optical_depth(int li, vec3 p, float ground_alt, vec3 sun, flo
   return tau;
 }
 
+// Transmittance of layer L's full nominal optical depth for the sun's beam at zenith cosine
+// mu0: CloudLayerGpu::ground_transmittance, linear in mu0 between the table's nodes (as
+// slab_beam_transmittance interpolates).
+float layer_beam_transmittance(CloudLayerGpu L, float mu0) {
+  float m = clamp((mu0 - SLAB_FLUX_MU_MIN) / SLAB_FLUX_MU_STEP, 0.0, float(SLAB_FLUX_MU_NODES - 1));
+  int j = min(int(m), SLAB_FLUX_MU_NODES - 2);
+  return mix(L.ground_transmittance[j / 4][j % 4], L.ground_transmittance[(j + 1) / 4][(j + 1) % 4], m - float(j));
+}
+
 // Diffuse in-scattered radiance (per unit scattering) at altitude alt inside layer L: the
 // light scattered more than once, with vertical optical depths tau_a above and tau_b below
 // the point estimated from the layer's nominal extinction and the local coverage.
 // * The sun's: the Monte Carlo source table (ms_source_over_mu) times the horizontal solar
 //   flux F_sun = E_sun T_atm mu_s, optical depths scaled to the table's droplets by
-//   (1 - g) / (1 - g_table) (similarity). With the peak beam of the sun term
+//   (1 - g) / (1 - g_table) (similarity; L.ms_similarity). With the peak beam of the sun term
 //   (peak_beam_phase) it makes the slab radiances of Monte Carlo (docs/ACCURACY.md).
 // * The sky's and the ground's: two-stream fluxes of conservative scattering with the
 //   slab transmittances of the Monte Carlo table (slab_transmittance.glsl),
@@ -74,15 +83,6 @@ float layer_shadow_optical_depth(int li, vec3 p, float ground_alt, vec3 sun, flo
 // ground_sun and ground_sky (cloud_free_ground_irradiance below) are the irradiance the
 // ground under the point would receive without clouds; the march holds them over 10 km of
 // its ray (the sun's zenith angle at the ground below a sample moves by 1.6e-4 rad per km).
-// Transmittance of layer L's full nominal optical depth for the sun's beam at zenith cosine
-// mu0: CloudLayerGpu::ground_transmittance, linear in mu0 between the table's nodes (as
-// slab_beam_transmittance interpolates).
-float layer_beam_transmittance(CloudLayerGpu L, float mu0) {
-  float m = clamp((mu0 - SLAB_FLUX_MU_MIN) / SLAB_FLUX_MU_STEP, 0.0, float(SLAB_FLUX_MU_NODES - 1));
-  int j = min(int(m), SLAB_FLUX_MU_NODES - 2);
-  return mix(L.ground_transmittance[j / 4][j % 4], L.ground_transmittance[(j + 1) / 4][(j + 1) % 4], m - float(j));
-}
-
 vec3 diffuse_inscatter(CloudLayerGpu L, float alt, float mu_s, vec3 T_atm, float coverage, vec3 E_sun,
                        vec3 ground_sun, vec3 ground_sky, float w_up, float cos_phi) {
   float sigma_nominal = L.extinction_max * L.density_scale * coverage;

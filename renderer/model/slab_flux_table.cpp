@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <numbers>
 
 #include "renderer/model/ms_source_table.h"
 #include "renderer/model/phase_function.h"
@@ -72,7 +73,7 @@ SlabFluxTableBuild build_slab_flux_table(std::uint64_t photons, std::uint64_t se
     o.threads = threads;
     o.ddis_probability = 0.0;  // fluxes only: no views
     const SlabMcResult r =
-        run_slab_monte_carlo(slab_from_optical_depth(tau, std::acos(mu0) * 180.0 / 3.14159265358979323846, kMsTableDropletUm), o);
+        run_slab_monte_carlo(slab_from_optical_depth(tau, std::acos(mu0) * 180.0 / std::numbers::pi, kMsTableDropletUm), o);
     out.max_relative_se = std::max(out.max_relative_se, r.transmitted.std_error / r.transmitted.mean);
     return r.transmitted.mean;
   };

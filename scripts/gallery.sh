@@ -96,9 +96,9 @@ md="docs/GALLERY.md"
   echo 'has them, is measured in docs/ACCURACY.md §4 (`build/bin/render_mie_phase_test`), and the'
   echo "truth's Mie single scattering against the closed form in docs/TRUTH.md. The ratios are"
   echo "the light model's error (docs/RENDERING.md, \"Light\"): on homogeneous slabs it is within"
-  echo "a factor 1.03–1.06 of Monte Carlo (docs/ACCURACY.md §4); under the deck the ground's light"
-  echo "and the deck's transmission to the ground still go through the two-stream term"
-  echo "(docs/ACCURACY.md, ground–cloud inter-reflection)."
+  echo "a factor 1.03–1.06 of Monte Carlo (docs/ACCURACY.md §4); under the deck the light the"
+  echo "ground sends up still goes through the two-stream in-scatter (docs/ACCURACY.md,"
+  echo "ground–cloud inter-reflection)."
   echo
 } > "$md"
 

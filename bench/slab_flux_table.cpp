@@ -46,7 +46,7 @@ int main(int argc, char** argv) {
 
   const SlabFluxTableBuild b = build_slab_flux_table(photons, seed, threads);
   std::printf("| tau | diffuse T | / two-stream |");
-  for (int j = 0; j < kSlabFluxMuNodes; j += 2) std::printf(" T(mu %.3f) | / two-stream |", kSlabFluxMuMin + j * kSlabFluxMuStep);
+  for (int j = 0; j < kSlabFluxMuNodes; j += 2) std::printf(" T(mu %.3f) | / two-stream |", slab_flux_mu_node(j));
   std::printf("\n|---:|---:|---:|");
   for (int j = 0; j < kSlabFluxMuNodes; j += 2) std::printf("---:|---:|");
   std::printf("\n");
@@ -55,7 +55,7 @@ int main(int argc, char** argv) {
     const double td = b.table.diffuse[static_cast<std::size_t>(i)];
     std::printf("| %g | %.4f | %.3f |", tau, td, two_stream_diffuse(tau) / td);
     for (int j = 0; j < kSlabFluxMuNodes; j += 2) {
-      const double mu = kSlabFluxMuMin + j * kSlabFluxMuStep;
+      const double mu = slab_flux_mu_node(j);
       const double t = b.table.beam[static_cast<std::size_t>(i * kSlabFluxMuNodes + j)];
       std::printf(" %.4f | %.3f |", t, two_stream_beam(tau, mu) / t);
     }

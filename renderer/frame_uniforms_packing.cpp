@@ -129,7 +129,7 @@ FrameUniforms pack_frame_uniforms(const FrameContext& c, const RenderQuality& qu
     static_assert(model::kSlabFluxMuNodes == 11, "ground_transmittance holds 11 beam values and the diffuse one");
     for (int j = 0; j < model::kSlabFluxMuNodes; ++j)
       g.ground_transmittance[j / 4][j % 4] =
-          static_cast<float>(model::slab_beam_transmittance(tau_cloud, model::kSlabFluxMuMin + j * model::kSlabFluxMuStep));
+          static_cast<float>(model::slab_beam_transmittance(tau_cloud, model::slab_flux_mu_node(j)));
     g.ground_transmittance[2][3] = static_cast<float>(model::slab_diffuse_transmittance(tau_cloud));
   }
   u.layer_count = c.layer_count;

@@ -55,9 +55,9 @@ float layer_shadow_optical_depth(int li, vec3 p, float ground_alt, vec3 sun, flo
 // mu0: CloudLayerGpu::ground_transmittance, linear in mu0 between the table's nodes (as
 // slab_beam_transmittance interpolates).
 float layer_beam_transmittance(CloudLayerGpu L, float mu0) {
-  float m = clamp((mu0 - SLAB_FLUX_MU_MIN) / SLAB_FLUX_MU_STEP, 0.0, float(SLAB_FLUX_MU_NODES - 1));
-  int j = min(int(m), SLAB_FLUX_MU_NODES - 2);
-  return mix(L.ground_transmittance[j / 4][j % 4], L.ground_transmittance[(j + 1) / 4][(j + 1) % 4], m - float(j));
+  float fm;
+  int j = slab_flux_mu_index(mu0, fm);
+  return mix(L.ground_transmittance[j / 4][j % 4], L.ground_transmittance[(j + 1) / 4][(j + 1) % 4], fm);
 }
 
 // Diffuse in-scattered radiance (per unit scattering) at altitude alt inside layer L: the

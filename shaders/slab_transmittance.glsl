@@ -30,11 +30,19 @@ float slab_diffuse_transmittance(float tau) {
                           SLAB_FLUX_DIFFUSE[SLAB_FLUX_TAU_NODES - 1]);
 }
 
-// Total (direct + diffuse) transmittance of a collimated beam at zenith cosine mu0 > 0.
-float slab_beam_transmittance(float tau, float mu0) {
+// The table's sun-cosine node j at or below mu0 (clamped to the grid) and the weight fm of
+// node j + 1: linear interpolation in mu0.
+int slab_flux_mu_index(float mu0, out float fm) {
   float m = clamp((mu0 - SLAB_FLUX_MU_MIN) / SLAB_FLUX_MU_STEP, 0.0, float(SLAB_FLUX_MU_NODES - 1));
   int j = min(int(m), SLAB_FLUX_MU_NODES - 2);
-  float fm = m - float(j);
+  fm = m - float(j);
+  return j;
+}
+
+// Total (direct + diffuse) transmittance of a collimated beam at zenith cosine mu0 > 0.
+float slab_beam_transmittance(float tau, float mu0) {
+  float fm;
+  int j = slab_flux_mu_index(mu0, fm);
   float frac;
   int i = slab_flux_tau_index(tau, frac);
   int n = SLAB_FLUX_MU_NODES, last = (SLAB_FLUX_TAU_NODES - 1) * n;

@@ -82,7 +82,7 @@ SlabFluxTableBuild build_slab_flux_table(std::uint64_t photons, std::uint64_t se
     const double tau = kSlabFluxTauMin * std::ldexp(1.0, i);
     for (int j = 0; j < kSlabFluxMuNodes; ++j)
       out.table.beam[static_cast<std::size_t>(i * kSlabFluxMuNodes + j)] =
-          static_cast<float>(transmitted(tau, kSlabFluxMuMin + j * kSlabFluxMuStep));
+          static_cast<float>(transmitted(tau, slab_flux_mu_node(j)));
     double diffuse = 0.0;
     for (int k = 0; k < 8; ++k) diffuse += 2.0 * kGaussW[k] * kGaussX[k] * transmitted(tau, kGaussX[k]);
     out.table.diffuse[static_cast<std::size_t>(i)] = static_cast<float>(diffuse);

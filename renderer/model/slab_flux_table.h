@@ -31,6 +31,8 @@ inline constexpr double kSlabFluxTauMin = 0.25;
 inline constexpr int kSlabFluxMuNodes = 11;
 inline constexpr double kSlabFluxMuMin = 0.05;
 inline constexpr double kSlabFluxMuStep = 0.095;
+// The sun zenith cosine of node j.
+inline constexpr double slab_flux_mu_node(int j) { return kSlabFluxMuMin + j * kSlabFluxMuStep; }
 
 struct SlabFluxTable {
   // beam[i * kSlabFluxMuNodes + j]: total transmittance T(tau_i, mu_j) of a collimated beam

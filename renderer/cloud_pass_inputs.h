@@ -10,7 +10,7 @@
 #include "renderer/density_programs.h"
 #include "renderer/dome_field.h"
 #include "renderer/frame_buffers.h"
-#include "renderer/ms_source_texture.h"
+#include "renderer/ms_source_textures.h"
 
 namespace cloudsvc {
 
@@ -18,8 +18,8 @@ struct CloudPassInputs {
   const FrameBuffers& frame;
   const CloudFieldTextures& field;
   const AtmosphereLuts& atmosphere;
-  // The sun's multiple-scattering source table (renderer/ms_source_texture.h).
-  const MsSourceTexture& ms_source;
+  // The multiple-scattering source tables (renderer/ms_source_textures.h).
+  const MsSourceTextures& ms_source;
   // The cumulus dome fields, where this frame draws dome layers; the passes then run their
   // programs' dome variant (renderer/density_programs.h).
   const DomeField* domes = nullptr;

@@ -191,9 +191,10 @@ FrameStats CloudRenderer::frame_stats(const FrameContext& frame, const Atmospher
   for (int i = 0; i < frame.layer_count; ++i) s.dome_layers += frame.layers[static_cast<std::size_t>(i)].domes ? 1 : 0;
   s.phase_tables_pending = phase_ ? phase_->pending_rows() : 0;
   s.marched_fraction = plan.stride == 0 ? 0.0 : plan.marched_fraction();
-  s.gpu_memory_bytes = static_cast<std::int64_t>(field_.gpu_bytes() + AtmosphereLuts::gpu_bytes() + MsSourceTexture::gpu_bytes() +
-                                                 GroundShadowMap::gpu_bytes() + composite_.gpu_bytes() +
-                                                 cloud_buffer_.gpu_bytes() + (phase_ ? CloudPhaseTexture::gpu_bytes() : 0));
+  s.gpu_memory_bytes = static_cast<std::int64_t>(field_.gpu_bytes() + AtmosphereLuts::gpu_bytes() +
+                                                 MsSourceTextures::gpu_bytes() + GroundShadowMap::gpu_bytes() +
+                                                 composite_.gpu_bytes() + cloud_buffer_.gpu_bytes() +
+                                                 (phase_ ? CloudPhaseTexture::gpu_bytes() : 0));
   s.luts_ms = timer_.ms(kLutsPass);
   s.march_ms = timer_.ms(kMarchPass);
   s.resolve_ms = timer_.ms(kResolvePass);

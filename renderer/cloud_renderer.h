@@ -82,7 +82,7 @@ class CloudRenderer {
   std::unique_ptr<CloudPhaseTexture> phase_;  // config_.cloud_phase == kMie only
   FrameBuffers frame_buffers_;
   AtmosphereLuts atmosphere_;
-  MsSourceTexture ms_source_;
+  MsSourceTextures ms_source_;
   GroundShadowMap shadow_map_;
   CloudBuffer cloud_buffer_;
   CloudMarchPass march_;

@@ -1,8 +1,9 @@
-// Light arriving at a point in a cloud layer: the sun through a light march (optical
-// depth for the peak beam), diffuse light from a Monte Carlo source table (the sun's) and
-// two-stream fluxes with Monte Carlo slab transmittances (the sky's and the ground's), and the
-// optical depth of a layer above a ground point (cloud shadows, ground_shadow_map.comp). Needs common.glsl,
-// frame_uniforms.glsl, atmosphere_model.glsl, atmosphere_lookup.glsl, cloud_density.glsl.
+// Light arriving at a point in a cloud layer: the sun through a light march (optical depth
+// for the peak beam), diffuse light from Monte Carlo source tables (the sun's, and the
+// sky's and the ground's diffuse light) with Monte Carlo slab transmittances to the ground,
+// and the optical depth of a layer above a ground point (cloud shadows,
+// ground_shadow_map.comp). Needs common.glsl, frame_uniforms.glsl, atmosphere_model.glsl,
+// atmosphere_lookup.glsl, cloud_density.glsl.
 #include "slab_transmittance.glsl"
 #include "ms_source_lookup.glsl"
 
@@ -67,18 +68,15 @@ float layer_beam_transmittance(CloudLayerGpu L, float mu0) {
 //   flux F_sun = E_sun T_atm mu_s, optical depths scaled to the table's droplets by
 //   (1 - g) / (1 - g_table) (similarity; L.ms_similarity). With the peak beam of the sun term
 //   (peak_beam_phase) it makes the slab radiances of Monte Carlo (docs/ACCURACY.md).
-// * The sky's and the ground's: two-stream fluxes of conservative scattering with the
-//   slab transmittances of the Monte Carlo table (slab_transmittance.glsl),
-//     F_down = E_sky T(tau_a) + E_up T(tau_b) R(tau_a),  F_up = E_sky T(tau_a) R(tau_b) + E_up T(tau_b)
-//   with T the diffuse transmittance, R = 1 - T, and E_up = a E_g the light a ground of
-//   albedo a sends up: its irradiance E_g under the layer, as independent columns (a
-//   fraction 1 - c of the ground in the clear, c under the layer's full optical depth
-//   tau_c: sun through 1 - c + c T_beam(tau_c), sky through 1 - c + c T(tau_c), both at
-//   ground level) with the round trips between ground and cloud (ground_cloud_gain(c a,
-//   tau_c)); in the P1 (diffusion) form I = (Phi + 3 F . w) / (4 pi), fluence
-//   Phi = 2 (F_down + F_up), net flux F = (F_up - F_down) up, the in-scatter into the
-//   direction w towards the camera (w_up = w . up) is
-//     J = (Phi + 3 g (F_up - F_down) w_up) / (4 pi)   (>= 0).
+// * The sky's and the ground's: the Monte Carlo source of diffuse light (ms_diffuse_incidence_source)
+//   entering through the layer's top (the sky's irradiance E_sky at the point's altitude)
+//   and through its base (the table turned upside down), with E_up = a E_g the light a
+//   ground of albedo a sends up: its irradiance E_g under the layer, as independent
+//   columns (a fraction 1 - c of the ground in the clear, c under the layer's full optical
+//   depth tau_c: sun through 1 - c + c T_beam(tau_c), sky through 1 - c + c T(tau_c), both
+//   at ground level; slab_transmittance.glsl) with the round trips between ground and cloud
+//   (ground_cloud_gain(c a, tau_c)):
+//     J = E_sky J_dif(tau_a, tau_b, w_up) + E_up J_dif(tau_b, tau_a, -w_up).
 // cos_phi: cosine of the azimuth between w and the sun (0 where either is vertical).
 // ground_sun and ground_sky (cloud_free_ground_irradiance below) are the irradiance the
 // ground under the point would receive without clouds; the march holds them over 10 km of
@@ -86,15 +84,15 @@ float layer_beam_transmittance(CloudLayerGpu L, float mu0) {
 vec3 diffuse_inscatter(CloudLayerGpu L, float alt, float mu_s, vec3 T_atm, float coverage, vec3 E_sun,
                        vec3 ground_sun, vec3 ground_sky, float w_up, float cos_phi) {
   float sigma_nominal = L.extinction_max * L.density_scale * coverage;
-  float tau_a = sigma_nominal * max(L.top_m - alt, 0.0);
-  float tau_b = sigma_nominal * max(alt - L.base_m, 0.0);
+  // the optical depths above and below the point, scaled to the tables' droplets
+  float sa = L.ms_similarity * sigma_nominal * max(L.top_m - alt, 0.0);
+  float sb = L.ms_similarity * sigma_nominal * max(alt - L.base_m, 0.0);
   float mu_pos = max(mu_s, 0.0);
   vec3 J_sun = vec3(0.0);
   if (mu_pos > 0.0) {
     float phi_deg = degrees(acos(clamp(cos_phi, -1.0, 1.0)));
-    J_sun = E_sun * T_atm * (mu_pos * ms_source_over_mu(L.ms_similarity * tau_a, L.ms_similarity * tau_b, mu_pos, w_up, phi_deg));
+    J_sun = E_sun * T_atm * (mu_pos * ms_source_over_mu(sa, sb, mu_pos, w_up, phi_deg));
   }
-  float Ta = slab_diffuse_transmittance(tau_a), Tb = slab_diffuse_transmittance(tau_b);
   vec3 E_sky = E_sun * sky_irradiance(alt, mu_s);
   float mu0 = max(mu_pos, 0.05);
   // the ground under the layer: a fraction 1 - c in the clear, c under cloud of the layer's
@@ -107,10 +105,7 @@ vec3 diffuse_inscatter(CloudLayerGpu L, float alt, float mu_s, vec3 T_atm, float
   vec3 albedo = frame.ground_albedo.rgb;
   vec3 E_up = albedo * ground_cloud_gain_for_transmittance(albedo * c, T_sky_cloud) *
               (ground_sun * T_sun_ground + ground_sky * T_sky_ground);
-  vec3 F_down = E_sky * Ta + E_up * Tb * (1.0 - Ta);
-  vec3 F_up = E_sky * Ta * (1.0 - Tb) + E_up * Tb;
-  vec3 J = (2.0 * (F_down + F_up) + 3.0 * TWO_STREAM_MEAN_COSINE * (F_up - F_down) * w_up) / (4.0 * PI);
-  return J_sun + max(J, vec3(0.0));
+  return J_sun + E_sky * ms_diffuse_incidence_source(sa, sb, w_up) + E_up * ms_diffuse_incidence_source(sb, sa, -w_up);
 }
 
 // Irradiance of the ground at altitude ground_alt without clouds (W m^-2 nm^-1), for a sun

@@ -167,11 +167,10 @@ TEST(GpuInterface, SamplersSitAtTheirNamedUnits) {
 TEST(GpuInterface, PreambleCarriesTheModelConstants) {
   const std::string& p = gpu::glsl_interface_preamble();
   EXPECT_NE(p.find("const float LIGHT_MARCH_REACH_M = 4000.0;"), std::string::npos) << p;
-  EXPECT_NE(p.find("const float TWO_STREAM_MEAN_COSINE = 0.860000014;"), std::string::npos) << p;
   EXPECT_NE(p.find("const float CLOUD_PIXEL_OPACITY = 0.00999999978;"), std::string::npos) << p;
   EXPECT_NE(p.find("#define MAX_LAYERS " + std::to_string(gpu::kMaxLayers)), std::string::npos);
   EXPECT_NE(p.find("#define TEX_CLOUD_RADIANCE " + std::to_string(gpu::tex::CLOUD_RADIANCE)), std::string::npos);
-  static_assert(model::kLightMarchReach_m == 4000.0 && model::kTwoStreamMeanCosine == 0.86 && kCloudPixelOpacity == 0.01,
+  static_assert(model::kLightMarchReach_m == 4000.0 && kCloudPixelOpacity == 0.01,
                 "the expected literals above follow the model constants");
 }
 

@@ -1,5 +1,6 @@
-// The shader's lookup of the multiple-scattering source table (ms_source_over_mu in
-// shaders/ms_source_lookup.glsl, over renderer/ms_source_texture.h's R32F texture) against
+// The shader's lookups of the multiple-scattering source tables (ms_source_over_mu and
+// ms_diffuse_incidence_source in shaders/ms_source_lookup.glsl, over
+// renderer/ms_source_textures.h's R32F textures) against
 // model::MsSourceTable::lookup in double precision, on the GPU (llvmpipe here): the same
 // table, so any difference is the texture's filtering and the float arithmetic. Likewise
 // the peak beam (peak_beam_phase, shaders/phase_function.glsl and the model's).
@@ -19,7 +20,7 @@
 #include "renderer/model/ms_source_table.h"
 #include "renderer/model/phase_function.h"
 #include "renderer/model/slab_flux_table.h"
-#include "renderer/ms_source_texture.h"
+#include "renderer/ms_source_textures.h"
 
 namespace cloudsvc {
 namespace {
@@ -28,6 +29,7 @@ struct Input {
   float tau_a, tau_b, mu_s, mu_w, phi_deg;
   float cos_theta = 0.0f, tau = 0.0f;  // the peak beam's inputs
   float diffuse = 0.0f;                // 1: the slab's diffuse transmittance, 0: its beam's at mu_s
+                                       // (2: the diffuse one, and the diffuse incidence table)
 };
 
 constexpr double kDropletUm = 20.0;
@@ -35,7 +37,7 @@ constexpr double kDropletUm = 20.0;
 std::vector<std::array<float, 4>> run_gpu(const std::vector<Input>& in) {
   static gl::EglContext context;
   static gl::ShaderProgram prog = gl::ShaderProgram::compute("test_ms_source_lookup.comp");
-  static MsSourceTexture texture;
+  static MsSourceTextures texture;
   std::vector<float> a, b;
   for (const Input& x : in) {
     a.insert(a.end(), {x.tau_a, x.tau_b, x.mu_s, x.mu_w});
@@ -97,6 +99,39 @@ TEST(MsSourceLookup, GpuMatchesTheDoubleLookup) {
     sum_ref += ref;
   }
   std::printf("GPU vs double lookup over %zu points: worst relative difference %.2e, mean difference %.2e of the mean\n",
+              in.size(), worst, bias / sum_ref);
+  EXPECT_LT(std::abs(bias / sum_ref), 1e-3) << "a systematic difference";
+}
+
+// The diffuse incidence table likewise (the same tolerances), optical depths 0.05 .. 800.
+TEST(MsSourceLookup, GpuDiffuseIncidenceTableMatchesTheDoubleLookup) {
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<Input> in;
+  for (int i = 0; i < 4000; ++i) {
+    const double tau = 0.05 * std::pow(2.0, 14.0 * u(rng));
+    const double x = u(rng);
+    Input v{static_cast<float>(tau * x), static_cast<float>(tau * (1.0 - x)), 1.0f,
+            static_cast<float>(2.0 * u(rng) - 1.0), 0.0f};
+    v.diffuse = 2.0f;
+    in.push_back(v);
+  }
+  const std::vector<std::array<float, 4>> out = run_gpu(in);
+  const model::MsSourceTable& table = model::ms_diffuse_incidence_table();
+  const double peak = *std::max_element(table.values().begin(), table.values().end());
+  double worst = 0.0, bias = 0.0, sum_ref = 0.0;
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    const Input& x = in[i];
+    const double ref = table.lookup(x.tau_a, x.tau_b, 1.0, x.mu_w, 0.0);
+    ASSERT_TRUE(std::isfinite(out[i][0]));
+    EXPECT_NEAR(out[i][0], ref, 0.01 * ref + 1e-3 * peak)
+        << "tau_a " << x.tau_a << " tau_b " << x.tau_b << " mu_w " << x.mu_w;
+    worst = std::max(worst, std::abs(out[i][0] - ref) / (ref + 1e-3 * peak));
+    bias += out[i][0] - ref;
+    sum_ref += ref;
+  }
+  std::printf("GPU vs double diffuse incidence table over %zu points: worst relative difference %.2e, mean "
+              "difference %.2e of the mean\n",
               in.size(), worst, bias / sum_ref);
   EXPECT_LT(std::abs(bias / sum_ref), 1e-3) << "a systematic difference";
 }

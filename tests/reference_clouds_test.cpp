@@ -200,10 +200,7 @@ TEST(ReferenceClouds, DiffuseInscatterByHand) {
   L.phase = model::jdd_params(model::kMsTableDropletUm);  // similarity scale 1
   const glm::dvec3 e_sun(2.0), t_atm(0.8), e_sky(0.1), t_ground(0.7), e_sky_ground(0.12), albedo(0.1);
   const double mu_s = 0.5, coverage = 0.4, alt = 1500.0;
-  // sigma_nominal = 0.02 /m; tau above = tau below = 10; T(10) the slab's diffuse
-  // transmittance (model::slab_diffuse_transmittance, the Monte Carlo table).
-  const double T = model::slab_diffuse_transmittance(10.0);
-  EXPECT_NEAR(T, 0.49, 0.03);  // ~ halfway between the table's nodes at 8 (0.544) and 16 (0.383)
+  // sigma_nominal = 0.02 /m; tau above = tau below = 10.
   const double E_sky = 2.0 * 0.1;
   // The ground under the layer as independent columns: 0.6 of it in the clear, 0.4 under the
   // layer's full optical depth (0.05 /m over 1000 m: 50), sun and sky at ground level, with
@@ -216,17 +213,19 @@ TEST(ReferenceClouds, DiffuseInscatterByHand) {
   EXPECT_NEAR(ground_cloud_gain(glm::dvec3(0.8), 0.0).g, 1.0, 1e-12);  // no cloud: no round trips
   EXPECT_NEAR(slab_beam_transmittance(0.0, 0.3), 1.0, 1e-12);           // nothing in the way
   const double E_up = 0.1 * gain * 2.0 * (0.7 * 0.5 * (0.6 + 0.4 * T_beam50) + 0.12 * (0.6 + 0.4 * T50));
-  // the sky's and the ground's light: two-stream fluxes, P1 in-scatter
-  const double F_down = E_sky * T + E_up * T * (1.0 - T);
-  const double F_up = E_sky * T * (1.0 - T) + E_up * T;
+  // the sky's light enters through the top, the ground's through the base: the diffuse
+  // incidence table, the base's turned upside down (at mid-depth: the same column mirrored)
   const double w_up = -0.6, cos_phi = 0.3;
-  const double two_stream = (2.0 * (F_down + F_up) + 3.0 * 0.86 * (F_up - F_down) * w_up) / (4.0 * kPi);
+  const model::MsSourceTable& iso = model::ms_diffuse_incidence_table();
+  const double down = iso.lookup(10.0, 10.0, 1.0, w_up, 0.0), up = iso.lookup(10.0, 10.0, 1.0, -w_up, 0.0);
+  EXPECT_GT(down, up);  // more of the sky's light goes on down
+  const double diffuse = E_sky * down + E_up * up;
   // the sun's: the source table times the horizontal solar flux F_sun = 2 * 0.8 * 0.5
   const double table = model::ms_source_table().lookup(10.0, 10.0, mu_s, w_up, std::acos(cos_phi) * 180.0 / kPi);
   EXPECT_GT(table, 0.0);
   const glm::dvec3 got =
       diffuse_inscatter(L, alt, mu_s, coverage, e_sun, t_atm, e_sky, t_ground, e_sky_ground, albedo, w_up, cos_phi);
-  EXPECT_NEAR(got.g, 2.0 * 0.8 * 0.5 * table + two_stream, 1e-12);
+  EXPECT_NEAR(got.g, 2.0 * 0.8 * 0.5 * table + diffuse, 1e-12);
   // Looking up into the cloud (light travelling down) is brighter than looking down onto
   // it from its middle: more of the sun's light travels down there.
   const glm::dvec3 from_below =
@@ -239,8 +238,7 @@ TEST(ReferenceClouds, DiffuseInscatterByHand) {
   const glm::dvec3 night = diffuse_inscatter(L, alt, -0.1, coverage, e_sun, glm::dvec3(0.0), e_sky, glm::dvec3(0.0),
                                              e_sky_ground, albedo, 0.0, 1.0);
   const double E_up_night = 0.1 * gain * 2.0 * 0.12 * (0.6 + 0.4 * T50);
-  EXPECT_NEAR(night.r, (E_sky * T + E_up_night * T * (1.0 - T) + E_sky * T * (1.0 - T) + E_up_night * T) / (2.0 * kPi),
-              1e-12);
+  EXPECT_NEAR(night.r, (E_sky + E_up_night) * iso.lookup(10.0, 10.0, 1.0, 0.0, 0.0), 1e-12);
 }
 
 TEST(ReferenceClouds, LayerStepScale) {

@@ -18,6 +18,8 @@
 namespace cloudsvc::embedded {
 extern const unsigned char ms_source_table[];  // renderer/model/data/ms_source_table.bin
 extern const std::size_t ms_source_table_size;
+extern const unsigned char ms_diffuse_incidence_table[];  // renderer/model/data/ms_diffuse_incidence_table.bin
+extern const std::size_t ms_diffuse_incidence_table_size;
 }  // namespace cloudsvc::embedded
 
 namespace cloudsvc::model {
@@ -192,13 +194,20 @@ MsSourceTable MsSourceTable::deserialise(const unsigned char* data, std::size_t 
   return MsSourceTable(shape, std::move(values));
 }
 
+const MsSourceTable& ms_diffuse_incidence_table() {
+  static const MsSourceTable table =
+      MsSourceTable::deserialise(embedded::ms_diffuse_incidence_table, embedded::ms_diffuse_incidence_table_size);
+  return table;
+}
+
 const MsSourceTable& ms_source_table() {
   static const MsSourceTable table = MsSourceTable::deserialise(embedded::ms_source_table, embedded::ms_source_table_size);
   return table;
 }
 
 MsSourceTableBuild build_ms_source_table(const MsSourceTableShape& shape, const JdDParams& phase,
-                                         double photons_scale, std::uint64_t seed, int threads) {
+                                         double photons_scale, std::uint64_t seed, int threads,
+                                         bool diffuse_incidence) {
   MsSourceTableBuild out;
   std::vector<float> values;
   values.reserve(shape.size());
@@ -212,6 +221,7 @@ MsSourceTableBuild build_ms_source_table(const MsSourceTableShape& shape, const 
       o.threads = threads;
       o.depth_bins = shape.depth_bins;
       o.directions = shape.directions;
+      o.diffuse_incidence = diffuse_incidence;
       MsSourceColumn c = compute_ms_source_column(tau, std::cos(zenith * kPi / 180.0), phase, o);
       for (double v : c.j_over_mu) values.push_back(static_cast<float>(v));
       out.columns.push_back(std::move(c));
@@ -223,13 +233,15 @@ MsSourceTableBuild build_ms_source_table(const MsSourceTableShape& shape, const 
 
 MsSourceColumn compute_ms_source_column(double tau, double mu_s, const JdDParams& phase,
                                         const MsSourceOptions& options) {
+  if (options.diffuse_incidence) mu_s = 1.0;  // unused
   if (!(tau > 0.0) || !(mu_s > 0.0 && mu_s <= 1.0) || options.depth_bins < 2 || options.chunks < 2 ||
       options.directions.n_mu < 2 || options.directions.n_phi < 2)
     throw std::invalid_argument("ms source column: needs tau > 0, 0 < mu_s <= 1, >= 2 bins, chunks and directions");
   const auto t_start = std::chrono::steady_clock::now();
   const double f = 1.0 - phase.w_d;  // weight of the diffraction peak
   const TabulatedKernel kernel(16385, [&](double mu) {
-    return f * hg_phase(mu, kMsKernelG) + (1.0 - f) * draine_phase(mu, phase.g_d, phase.alpha);
+    const double kernel_g = options.diffuse_incidence ? kMsDiffuseIncidenceKernelG : kMsKernelG;
+    return f * hg_phase(mu, kernel_g) + (1.0 - f) * draine_phase(mu, phase.g_d, phase.alpha);
   });
   const MsDirectionGrid grid = options.directions;
   const int nd = grid.size(), nb = options.depth_bins;
@@ -250,6 +262,12 @@ MsSourceColumn compute_ms_source_column(double tau, double mu_s, const JdDParams
       double z = tau;
       glm::dvec3 d = sun_travel;
       bool diffuse = false;  // scattered at least once through the Draine lobe
+      if (options.diffuse_incidence) {  // cosine-weighted downward: mu = sqrt(u)
+        const double mu = std::sqrt(rng.uniform()), phi = 2.0 * kPi * rng.uniform();
+        const double s = std::sqrt(std::max(0.0, 1.0 - mu * mu));
+        d = {s * std::cos(phi), s * std::sin(phi), -mu};
+        diffuse = true;
+      }
       std::uint64_t collisions = 0;
       for (;;) {
         const double zn = z - std::log(1.0 - rng.uniform()) * d.z;
@@ -278,6 +296,21 @@ MsSourceColumn compute_ms_source_column(double tau, double mu_s, const JdDParams
       out.collisions += collisions;
     }
   });
+
+  // Diffuse incidence has no preferred azimuth: every azimuth node estimates the same
+  // source, so each chunk's tally is folded to the mean over the nodes of its zenith
+  // cosine (less Monte Carlo noise; the standard errors below are of the folded means).
+  if (options.diffuse_incidence) {
+    for (ChunkTally& t : tallies)
+      for (int j = 0; j < nb; ++j)
+        for (int i_mu = 0; i_mu < grid.n_mu; ++i_mu) {
+          double* row = t.sum.data() + static_cast<std::size_t>(j) * nd + static_cast<std::size_t>(i_mu) * grid.n_phi;
+          double mean = 0.0;
+          for (int i = 0; i < grid.n_phi; ++i) mean += row[i];
+          mean /= grid.n_phi;
+          for (int i = 0; i < grid.n_phi; ++i) row[i] = mean;
+        }
+  }
 
   MsSourceColumn col;
   col.tau = tau;

@@ -31,9 +31,5 @@ inline constexpr double kNightSkyRadiance = 2.0e-9;
 // the layer top (or base) but over at most this distance; a long grazing path through a
 // sheet stops there. Part of the model's definition. [LIGHT_MARCH_REACH_M]
 inline constexpr double kLightMarchReach_m = 4000.0;
-// Droplet phase-function mean cosine g of the P1 in-scatter of the sky's and the ground's
-// diffuse light (cloud_lighting.h, diffuse_inscatter; the slab transmittances come from
-// slab_flux_table.h). [TWO_STREAM_MEAN_COSINE]
-inline constexpr double kTwoStreamMeanCosine = 0.86;
 
 }  // namespace cloudsvc::model

@@ -81,19 +81,17 @@ glm::dvec3 diffuse_inscatter(const ReferenceLayer& L, double alt, double mu_s, d
                              const glm::dvec3& e_sun, const glm::dvec3& t_atm, const glm::dvec3& e_sky_here,
                              const glm::dvec3& t_atm_ground, const glm::dvec3& e_sky_ground,
                              const glm::dvec3& ground_albedo, double w_up, double cos_phi) {
-  const double g = kTwoStreamMeanCosine;
+  const double sim = model::ms_similarity_scale(L.phase);
   const double sigma_nominal = L.sigma_max_per_m * L.density_scale * coverage;
   const double tau_above = sigma_nominal * std::max(L.top_m - alt, 0.0);
   const double tau_below = sigma_nominal * std::max(alt - L.base_m, 0.0);
   const double mu_pos = std::max(mu_s, 0.0);
   glm::dvec3 J_sun(0.0);
   if (mu_pos > 0.0) {
-    const double sim = model::ms_similarity_scale(L.phase);
     const double phi_deg = std::acos(std::clamp(cos_phi, -1.0, 1.0)) * 180.0 / std::numbers::pi;
     J_sun = e_sun * t_atm *
             (mu_pos * model::ms_source_table().lookup(sim * tau_above, sim * tau_below, mu_pos, w_up, phi_deg));
   }
-  const double Ta = slab_diffuse_transmittance(tau_above), Tb = slab_diffuse_transmittance(tau_below);
   const glm::dvec3 E_sky = e_sun * e_sky_here;
   const double mu0 = std::max(mu_pos, 0.05);
   // The ground under the layer: a fraction 1 - c in the clear, c under cloud of the layer's
@@ -104,10 +102,12 @@ glm::dvec3 diffuse_inscatter(const ReferenceLayer& L, double alt, double mu_s, d
   const double T_sky_ground = 1.0 - c + c * slab_diffuse_transmittance(tau_cloud);
   const glm::dvec3 E_up = ground_albedo * ground_cloud_gain(ground_albedo * c, tau_cloud) * e_sun *
                           (t_atm_ground * mu_pos * T_sun_ground + e_sky_ground * T_sky_ground);
-  const glm::dvec3 F_down = E_sky * Ta + E_up * Tb * (1.0 - Ta);
-  const glm::dvec3 F_up = E_sky * Ta * (1.0 - Tb) + E_up * Tb;
-  const glm::dvec3 J = (2.0 * (F_down + F_up) + 3.0 * g * (F_up - F_down) * w_up) / (4.0 * std::numbers::pi);
-  return J_sun + glm::max(J, glm::dvec3(0.0));
+  // the sky's light enters through the layer's top, the ground's through its base: the
+  // Monte Carlo source of diffuse incident light, the base's turned upside down
+  const model::MsSourceTable& iso = model::ms_diffuse_incidence_table();
+  const glm::dvec3 J = E_sky * iso.lookup(sim * tau_above, sim * tau_below, 1.0, w_up, 0.0) +
+                       E_up * iso.lookup(sim * tau_below, sim * tau_above, 1.0, -w_up, 0.0);
+  return J_sun + J;
 }
 
 }  // namespace cloudsvc::reference

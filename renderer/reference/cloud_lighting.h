@@ -1,6 +1,6 @@
 // Light in the clouds (docs/RENDERING.md "Light"), converged: the sun's peak beam through a
-// fine light march, the diffuse term (Monte Carlo source table for the sun's light,
-// two-stream fluxes with Monte Carlo slab transmittances for the sky's and the ground's),
+// fine light march, the diffuse term (Monte Carlo source tables for the sun's light and for
+// the sky's and the ground's diffuse light, Monte Carlo slab transmittances to the ground),
 // and cloud shadows on the
 // ground through a fine march of every layer. Frames and units as in reference_scene.h;
 // optical depths dimensionless; radiances in the units of the solar irradiance given.
@@ -16,9 +16,7 @@
 
 namespace cloudsvc::reference {
 
-// The model's light-march reach and two-stream mean cosine (renderer/model/scene_constants.h,
-// shared with the shaders).
-using model::kTwoStreamMeanCosine;
+// The model's light-march reach (renderer/model/scene_constants.h, shared with the shaders).
 inline constexpr double kLightMarchCap_m = model::kLightMarchReach_m;
 
 // Step scale of a layer: cloud_step_m and light_step_m are for cumulus (8 km noise period,
@@ -67,14 +65,13 @@ glm::dvec3 ground_cloud_gain(const glm::dvec3& albedo, double tau);
 // The sun's part: model::ms_source_table() at those depths (scaled by
 // model::ms_similarity_scale) times F_sun = e_sun t_atm mu_s, for the scattered light's
 // zenith cosine w_up and azimuth from the sun's (cos_phi). The sky's and the ground's
-// parts: two-stream fluxes F_down = E_sky T_a + E_up T_b (1 - T_a),
-// F_up = E_sky T_a (1 - T_b) + E_up T_b, where E_up = a E_g is the light the ground sends up: its
-// irradiance E_g under the layer as independent columns (1 - c in the clear, c under the
-// layer's full optical depth tau_c = sigma_max * density_scale * thickness; sun and sky at
-// ground level) with the ground-cloud round trips (ground_cloud_gain(c a, tau_c));
-// in-scatter in the P1 approximation towards
-// a direction with up-component w_up: (2 (F_down + F_up) + 3 g (F_up - F_down) w_up) / (4 pi),
-// at least 0.
+// parts: model::ms_diffuse_incidence_table() (the Monte Carlo source of diffuse light entering
+// through the top), J = E_sky J_dif(tau_a, tau_b, w_up) + E_up J_dif(tau_b, tau_a, -w_up),
+// the ground's light entering through the base (the table turned upside down); E_up = a E_g
+// is the light the ground sends up: its irradiance E_g under the layer as independent
+// columns (1 - c in the clear, c under the layer's full optical depth tau_c = sigma_max *
+// density_scale * thickness; sun and sky at ground level) with the ground-cloud round trips
+// (ground_cloud_gain(c a, tau_c)).
 // Inputs per unit solar irradiance except e_sun: t_atm = sun transmittance at the point,
 // e_sky_here = sky irradiance at the point, t_atm_ground / e_sky_ground at ground level
 // for the same mu_s; ground_albedo rgb.

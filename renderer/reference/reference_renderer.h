@@ -11,8 +11,8 @@
 //   clouds: march every layer interval with steps of cloud_step_m (scaled per layer,
 //     cloud_lighting.h) until the cloud transmittance falls below min_transmittance;
 //     at each sample with sigma_t > 0: sun = E_sun T_atm sum_i b^i p_i e^{-a^i tau} with tau
-//     from a light march with light_step_m steps (4 km cap), plus the two-stream diffuse
-//     term; energy-conserving accumulation (Hillaire 2016, albedo 1).
+//     from a light march with light_step_m steps (4 km cap), plus the diffuse term (Monte
+//     Carlo source tables); energy-conserving accumulation (Hillaire 2016, albedo 1).
 //   background: sky (single scattering integrated along the ray + Psi_ms, sun disk, night
 //     sky radiance) or ground (Lambertian, sun through a fine shadow march of every layer,
 //     sky irradiance, aerial perspective integrated along the ray to the ground).

@@ -64,10 +64,32 @@ std::vector<std::array<float, 4>> run_gpu(const std::vector<Input>& in) {
   return out;
 }
 
-// Random points over the table's range and beyond it (thinner and thicker slabs, the sun
-// below 84 degrees): the GPU's value within 1 % of the double lookup at the same float
-// inputs (plus 1e-3 of the table's largest value, for the texture filter's 8-bit weights
-// between nodes of very different size), and the depth coordinate within 1e-5.
+// The GPU's source values (out[i][0]) against the double lookup of `table` at the same
+// float inputs: each within 1 % (plus 1e-3 of the table's largest value, for the texture
+// filter's 8-bit weights between nodes of very different size), and no systematic
+// difference (the mean difference below 1e-3 of the mean).
+void expect_source_lookups_match(const std::vector<Input>& in, const std::vector<std::array<float, 4>>& out,
+                                 const model::MsSourceTable& table, bool diffuse_incidence, const char* what) {
+  const double peak = *std::max_element(table.values().begin(), table.values().end());
+  double worst = 0.0, bias = 0.0, sum_ref = 0.0;
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    const Input& x = in[i];
+    const double ref = diffuse_incidence ? table.lookup(x.tau_a, x.tau_b, 1.0, x.mu_w, 0.0)
+                                         : table.lookup(x.tau_a, x.tau_b, x.mu_s, x.mu_w, x.phi_deg);
+    ASSERT_TRUE(std::isfinite(out[i][0]));
+    EXPECT_NEAR(out[i][0], ref, 0.01 * ref + 1e-3 * peak)
+        << "tau_a " << x.tau_a << " tau_b " << x.tau_b << " mu_s " << x.mu_s << " mu_w " << x.mu_w << " phi " << x.phi_deg;
+    worst = std::max(worst, std::abs(out[i][0] - ref) / (ref + 1e-3 * peak));
+    bias += out[i][0] - ref;
+    sum_ref += ref;
+  }
+  std::printf("GPU vs double %s over %zu points: worst relative difference %.2e, mean difference %.2e of the mean\n",
+              what, in.size(), worst, bias / sum_ref);
+  EXPECT_LT(std::abs(bias / sum_ref), 1e-3) << "a systematic difference";
+}
+
+// Random points over the sun table's range and beyond it (thinner and thicker slabs, the
+// sun below 84 degrees), and the depth coordinate within 1e-5.
 TEST(MsSourceLookup, GpuMatchesTheDoubleLookup) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(0.0, 1.0);
@@ -83,27 +105,13 @@ TEST(MsSourceLookup, GpuMatchesTheDoubleLookup) {
     in.back().tau = static_cast<float>(40.0 * u(rng) * u(rng));
   }
   const std::vector<std::array<float, 4>> out = run_gpu(in);
-  const model::MsSourceTable& table = model::ms_source_table();
-  const double peak = *std::max_element(table.values().begin(), table.values().end());
-  double worst = 0.0, bias = 0.0, sum_ref = 0.0;
-  for (std::size_t i = 0; i < in.size(); ++i) {
-    const Input& x = in[i];
-    const double ref = table.lookup(x.tau_a, x.tau_b, x.mu_s, x.mu_w, x.phi_deg);
-    const double y = model::ms_depth_coordinate(x.tau_a, x.tau_b);
-    ASSERT_TRUE(std::isfinite(out[i][0]));
-    EXPECT_NEAR(out[i][1], y, 1e-5) << "tau_a " << x.tau_a << " tau_b " << x.tau_b;
-    EXPECT_NEAR(out[i][0], ref, 0.01 * ref + 1e-3 * peak)
-        << "tau_a " << x.tau_a << " tau_b " << x.tau_b << " mu_s " << x.mu_s << " mu_w " << x.mu_w << " phi " << x.phi_deg;
-    worst = std::max(worst, std::abs(out[i][0] - ref) / (ref + 1e-3 * peak));
-    bias += out[i][0] - ref;
-    sum_ref += ref;
-  }
-  std::printf("GPU vs double lookup over %zu points: worst relative difference %.2e, mean difference %.2e of the mean\n",
-              in.size(), worst, bias / sum_ref);
-  EXPECT_LT(std::abs(bias / sum_ref), 1e-3) << "a systematic difference";
+  for (std::size_t i = 0; i < in.size(); ++i)
+    EXPECT_NEAR(out[i][1], model::ms_depth_coordinate(in[i].tau_a, in[i].tau_b), 1e-5)
+        << "tau_a " << in[i].tau_a << " tau_b " << in[i].tau_b;
+  expect_source_lookups_match(in, out, model::ms_source_table(), false, "sun table");
 }
 
-// The diffuse incidence table likewise (the same tolerances), optical depths 0.05 .. 800.
+// The diffuse incidence table likewise, optical depths 0.05 .. 800.
 TEST(MsSourceLookup, GpuDiffuseIncidenceTableMatchesTheDoubleLookup) {
   std::mt19937 rng(9);
   std::uniform_real_distribution<double> u(0.0, 1.0);
@@ -116,24 +124,7 @@ TEST(MsSourceLookup, GpuDiffuseIncidenceTableMatchesTheDoubleLookup) {
     v.diffuse = 2.0f;
     in.push_back(v);
   }
-  const std::vector<std::array<float, 4>> out = run_gpu(in);
-  const model::MsSourceTable& table = model::ms_diffuse_incidence_table();
-  const double peak = *std::max_element(table.values().begin(), table.values().end());
-  double worst = 0.0, bias = 0.0, sum_ref = 0.0;
-  for (std::size_t i = 0; i < in.size(); ++i) {
-    const Input& x = in[i];
-    const double ref = table.lookup(x.tau_a, x.tau_b, 1.0, x.mu_w, 0.0);
-    ASSERT_TRUE(std::isfinite(out[i][0]));
-    EXPECT_NEAR(out[i][0], ref, 0.01 * ref + 1e-3 * peak)
-        << "tau_a " << x.tau_a << " tau_b " << x.tau_b << " mu_w " << x.mu_w;
-    worst = std::max(worst, std::abs(out[i][0] - ref) / (ref + 1e-3 * peak));
-    bias += out[i][0] - ref;
-    sum_ref += ref;
-  }
-  std::printf("GPU vs double diffuse incidence table over %zu points: worst relative difference %.2e, mean "
-              "difference %.2e of the mean\n",
-              in.size(), worst, bias / sum_ref);
-  EXPECT_LT(std::abs(bias / sum_ref), 1e-3) << "a systematic difference";
+  expect_source_lookups_match(in, run_gpu(in), model::ms_diffuse_incidence_table(), true, "diffuse incidence table");
 }
 
 // The peak beam in float against double at the same float inputs: within 1e-3 relative

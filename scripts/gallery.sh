@@ -96,10 +96,11 @@ md="docs/GALLERY.md"
   echo 'has them, is measured in docs/ACCURACY.md §4 (`build/bin/render_mie_phase_test`), and the'
   echo "truth's Mie single scattering against the closed form in docs/TRUTH.md. The ratios are"
   echo "the light model's error (docs/RENDERING.md, \"Light\"): on homogeneous slabs it is within"
-  echo "a factor 1.03–1.06 of Monte Carlo (docs/ACCURACY.md §4); under a deck the ground and"
-  echo "the deck's base are within 5 % of the truth (docs/ACCURACY.md, ground–cloud"
-  echo "inter-reflection). What is left in these views is the deck's 3-D structure, which the"
-  echo "light model sees as slabs (docs/ACCURACY.md §0)."
+  echo "a factor 1.03–1.06 of Monte Carlo (docs/ACCURACY.md §4); under a deck, the ground seen"
+  echo "straight down and the deck's base straight up are within 5 % of the truth"
+  echo "(docs/ACCURACY.md, ground–cloud inter-reflection). The level views under the deck"
+  echo "below look through its textured base at grazing angles, where the light model reads"
+  echo "the deck as slabs of its nominal depth (docs/ACCURACY.md §0)."
   echo
 } > "$md"
 

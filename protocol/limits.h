@@ -21,7 +21,7 @@ inline constexpr std::uint32_t kMaxImageSize = 8192;
 // (weather::kMaxCloudLayers, which the renderer draws too).
 inline constexpr std::size_t kMaxLayers = weather::kMaxCloudLayers;
 // Largest WeatherMapTile width or height, texels: the weather module's limit, the one rule
-// set for tiles (weather/map_tile.h), 1024. 1024 x 1024 x 4 channels x 4 bytes is 16 MiB,
+// set for tiles (weather/map_tile.h), 1024. 1024 x 1024 x 5 channels x 4 bytes is 20 MiB,
 // well inside kMaxPayloadBytes; larger areas are sent as several tiles.
 inline constexpr std::uint32_t kMaxTileSize = weather::kMaxTileTexels;
 // Longest strings, bytes of UTF-8.

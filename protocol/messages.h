@@ -49,7 +49,8 @@ inline constexpr std::uint8_t kCoverage = 1u << 0;             // [0, 1], 0.5 = 
 inline constexpr std::uint8_t kVerticalDevelopment = 1u << 1;  // [0, 1], 0.5 = layer's own
 inline constexpr std::uint8_t kDensity = 1u << 2;              // [0, 1], 0.5 = layer's own
 inline constexpr std::uint8_t kPrecipitation = 1u << 3;        // [0, 1], 0 = none
-inline constexpr std::uint8_t kAll = 0x0f;
+inline constexpr std::uint8_t kGroundAlbedo = 1u << 4;         // [0, 1], grey Lambertian
+inline constexpr std::uint8_t kAll = 0x1f;
 }  // namespace tile_channel
 
 enum class ShmPixelFormat : std::uint8_t {

@@ -57,6 +57,7 @@ static_assert(tile_channel::kVerticalDevelopment ==
 static_assert(tile_channel::kDensity == static_cast<std::uint8_t>(w::TileChannel::Density));
 static_assert(tile_channel::kPrecipitation ==
               static_cast<std::uint8_t>(w::TileChannel::Precipitation));
+static_assert(tile_channel::kGroundAlbedo == static_cast<std::uint8_t>(w::TileChannel::GroundAlbedo));
 static_assert(tile_channel::kAll == static_cast<std::uint8_t>(w::TileChannel::ANY));
 
 static_assert(static_cast<int>(ShmPixelFormat::Rgba16fLinear) ==

@@ -10,6 +10,7 @@
 #include "renderer/density_programs.h"
 #include "renderer/dome_field.h"
 #include "renderer/frame_buffers.h"
+#include "renderer/ground_albedo_texture.h"
 #include "renderer/ms_source_textures.h"
 
 namespace cloudsvc {
@@ -20,6 +21,8 @@ struct CloudPassInputs {
   const AtmosphereLuts& atmosphere;
   // The multiple-scattering source tables (renderer/ms_source_textures.h).
   const MsSourceTextures& ms_source;
+  // The ground's albedo where tiles set it (renderer/ground_albedo_texture.h).
+  const GroundAlbedoTexture& ground_albedo;
   // The cumulus dome fields, where this frame draws dome layers; the passes then run their
   // programs' dome variant (renderer/density_programs.h).
   const DomeField* domes = nullptr;
@@ -38,6 +41,7 @@ struct CloudPassInputs {
     field.bind();
     atmosphere.bind_lookups();
     ms_source.bind();
+    ground_albedo.bind();
     if (domes) domes->bind();
     if (phase) phase->bind();
   }

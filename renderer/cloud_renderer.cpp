@@ -19,6 +19,7 @@ enum TimedPass { kLutsPass = 0, kMarchPass = 1, kResolvePass = 2, kCompositePass
 
 CloudRenderer::CloudRenderer(const RendererConfig& config)
     : config_(config),
+      ground_albedo_map_(config.weather_map_width, config.weather_map_height),
       field_(config),
       march_(config.cloud_phase) {
   if (config.cumulus_domes) domes_ = std::make_unique<DomeField>();
@@ -34,7 +35,11 @@ void CloudRenderer::apply_tile(const weather::MapTile& tile, double now_utc_s) {
   // the values, little beside apply_tile's resampling of every keyframe.
   const std::string problem = tile.problem();
   if (!problem.empty()) throw std::invalid_argument("weather tile: " + problem);
-  timeline_.apply(tile, now_utc_s);
+  if (tile.channels & weather::kWeatherMapTileChannels) timeline_.apply(tile, now_utc_s);
+  if (tile.channels & weather::kGroundAlbedoTileChannel) {
+    ground_albedo_map_.apply(tile);
+    cloud_buffer_.reset_history();  // the clouds' light from the ground changes at once
+  }
 }
 
 void CloudRenderer::set_weather(const weather::Weather& w) {
@@ -133,15 +138,18 @@ FrameImage CloudRenderer::render(const ViewRequest& view, const RenderQuality& q
     }
   const AtmosphereLuts::ViewLutUpdate view_luts = atmosphere_.plan_view_dependent(frame);  // sets frame.ap
   const FrameRays rays = classify_frame_rays(frame);
-  const FrameUniforms uniforms = pack_frame_uniforms(frame, quality, field_.summary());
+  ground_albedo_.update(ground_albedo_map_);
+  GpuResourceSummary resources = field_.summary();
+  ground_albedo_.describe(resources);
+  const FrameUniforms uniforms = pack_frame_uniforms(frame, quality, resources);
   frame_buffers_.start_frame(uniforms);
   if (draws_domes) {
     field_.bind();  // the ring fill reads the weather map
     domes_->update(frame, weather_, weather_generation_, uniforms);
   }
   if (phase_) phase_->update(frame);
-  const CloudPassInputs inputs{frame_buffers_, field_, atmosphere_, ms_source_, draws_domes ? domes_.get() : nullptr,
-                               density_loops_fit(quality), phase_.get()};
+  const CloudPassInputs inputs{frame_buffers_, field_, atmosphere_, ms_source_, ground_albedo_,
+                               draws_domes ? domes_.get() : nullptr, density_loops_fit(quality), phase_.get()};
 
   timer_.reset();
   timer_.begin(kLutsPass);  // 2.
@@ -192,7 +200,8 @@ FrameStats CloudRenderer::frame_stats(const FrameContext& frame, const Atmospher
   s.phase_tables_pending = phase_ ? phase_->pending_rows() : 0;
   s.marched_fraction = plan.stride == 0 ? 0.0 : plan.marched_fraction();
   s.gpu_memory_bytes = static_cast<std::int64_t>(field_.gpu_bytes() + AtmosphereLuts::gpu_bytes() +
-                                                 MsSourceTextures::gpu_bytes() + GroundShadowMap::gpu_bytes() +
+                                                 MsSourceTextures::gpu_bytes() + ground_albedo_.gpu_bytes() +
+                                                 GroundShadowMap::gpu_bytes() +
                                                  composite_.gpu_bytes() + cloud_buffer_.gpu_bytes() +
                                                  (phase_ ? CloudPhaseTexture::gpu_bytes() : 0));
   s.luts_ms = timer_.ms(kLutsPass);

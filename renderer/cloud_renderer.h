@@ -29,8 +29,10 @@
 #include "renderer/frame_buffers.h"
 #include "renderer/frame_context.h"
 #include "renderer/gl/pass_timer.h"
+#include "renderer/ground_albedo_texture.h"
 #include "renderer/ground_shadow_map.h"
 #include "weather/cloud_layer.h"
+#include "weather/ground_albedo_map.h"
 #include "weather/weather_timeline.h"
 #include "weather/wind_drift.h"
 
@@ -45,10 +47,13 @@ class CloudRenderer {
   void set_weather(const weather::Weather& w);
   const weather::Weather& weather() const { return weather_; }
 
-  // Streams a weather-map tile in (weather/weather_timeline.h): it fades in over time
-  // instead of popping. now_utc_s is the current time. Throws std::invalid_argument
-  // ("weather tile: " + problem()) when the tile breaks the rules of weather/map_tile.h.
+  // Streams a weather-map tile in (weather/weather_timeline.h): its weather channels fade
+  // in over time instead of popping; its ground-albedo channel, if any, applies from the
+  // next frame (weather/ground_albedo_map.h; kept when set_weather changes the weather).
+  // now_utc_s is the current time. Throws std::invalid_argument ("weather tile: " +
+  // problem()) when the tile breaks the rules of weather/map_tile.h.
   void apply_tile(const weather::MapTile& tile, double now_utc_s);
+  const weather::GroundAlbedoMap& ground_albedo_map() const { return ground_albedo_map_; }
   std::size_t weather_keyframes() const { return timeline_.keyframe_count(); }
 
   // Renders one view and reads it back (rows from the top). Consecutive views reuse the
@@ -72,6 +77,7 @@ class CloudRenderer {
   std::uint32_t map_seed_ = 0;
   bool map_valid_ = false;
   weather::WeatherTimeline timeline_;
+  weather::GroundAlbedoMap ground_albedo_map_;
   std::optional<WindAnchor> wind_anchor_;  // latched at the first view after set_weather
   bool warned_loop_cap_ = false;           // the loop-cap warning (render) is printed once
   std::uint64_t weather_generation_ = 0;   // bumped by every change of the cloud field's inputs
@@ -83,6 +89,7 @@ class CloudRenderer {
   FrameBuffers frame_buffers_;
   AtmosphereLuts atmosphere_;
   MsSourceTextures ms_source_;
+  GroundAlbedoTexture ground_albedo_;
   GroundShadowMap shadow_map_;
   CloudBuffer cloud_buffer_;
   CloudMarchPass march_;

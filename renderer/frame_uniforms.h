@@ -80,11 +80,13 @@ struct FrameUniforms {
   glm::vec4 noise_quantiles[4];   // base-noise value below which a fraction i/15 lies, i = 0..15
   glm::vec4 weather_pole_south;   // weather map value at the south pole (row mean)
   glm::vec4 weather_pole_north;   // ... at the north pole
-  glm::vec4 ground_albedo;        // rgb: the ground's Lambertian albedo (FrameContext::ground_albedo)
+  glm::vec4 ground_albedo;        // rgb: the ground's Lambertian albedo (FrameContext::ground_albedo);
+                                  // w: 1 where tiles have set some of it (ground_albedo_at)
+  glm::vec4 ground_albedo_poles;  // the albedo map's (R, G) at the south pole, then the north's
   CloudLayerGpu layers[gpu::kMaxLayers];
 };
 
 static_assert(sizeof(CloudLayerGpu) == 15 * 16, "std140 layout");
-static_assert(sizeof(FrameUniforms) == 64 + 19 * 16 + gpu::kMaxLayers * 15 * 16, "std140 layout");
+static_assert(sizeof(FrameUniforms) == 64 + 20 * 16 + gpu::kMaxLayers * 15 * 16, "std140 layout");
 
 }  // namespace cloudsvc

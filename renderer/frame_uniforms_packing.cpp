@@ -90,7 +90,8 @@ FrameUniforms pack_frame_uniforms(const FrameContext& c, const RenderQuality& qu
   u.weather_blend = resources.weather_blend;
   u.weather_pole_south = to_vec4(resources.weather_pole_south);
   u.weather_pole_north = to_vec4(resources.weather_pole_north);
-  u.ground_albedo = glm::vec4(glm::vec3(c.ground_albedo), 0.0f);
+  u.ground_albedo = glm::vec4(glm::vec3(c.ground_albedo), resources.ground_albedo_map ? 1.0f : 0.0f);
+  u.ground_albedo_poles = to_vec4(resources.ground_albedo_poles);
   const NoiseQuantiles& q = resources.base_quantiles;
   for (int i = 0; i < 4; ++i) u.noise_quantiles[i] = glm::vec4(q[4 * i], q[4 * i + 1], q[4 * i + 2], q[4 * i + 3]);
 

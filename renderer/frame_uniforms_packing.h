@@ -27,6 +27,10 @@ struct GpuResourceSummary {
   int weather_map_height = 1;
   float weather_blend = 0.0f;     // weight of the second weather keyframe (weather_timeline.h)
   bool coverage_pyramid = false;  // the coverage max-pyramid is bound (renderer/coverage_pyramid.h)
+  // Tiles have set the ground's albedo somewhere (renderer/ground_albedo_texture.h), and the
+  // map's (R, G) at the south pole, then the north's.
+  bool ground_albedo_map = false;
+  std::array<float, 4> ground_albedo_poles{};
 };
 
 FrameUniforms pack_frame_uniforms(const FrameContext& frame, const RenderQuality& quality,

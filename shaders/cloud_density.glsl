@@ -18,9 +18,6 @@ layout(binding = TEX_BASE_NOISE_MAX) uniform sampler3D base_noise_max;
 
 uint g_density_evals = 0u;  // per-invocation count of density evaluations
 
-// A point p of the local frame as seen from the shell centre, in ECEF axes (m).
-vec3 from_shell_centre(vec3 p) { return mat3(frame.enu_to_ecef) * (p + vec3(0.0, 0.0, frame.shell_radius_m + frame.camera_altitude_m)); }
-
 // Weather map at a point p (local frame): the map is indexed by latitude/longitude of the
 // point's direction from the shell centre, in ECEF axes.
 vec4 weather_at(vec3 p) {

@@ -79,10 +79,11 @@ float layer_beam_transmittance(CloudLayerGpu L, float mu0) {
 //     J = E_sky J_dif(tau_a, tau_b, w_up) + E_up J_dif(tau_b, tau_a, -w_up).
 // cos_phi: cosine of the azimuth between w and the sun (0 where either is vertical).
 // ground_sun and ground_sky (cloud_free_ground_irradiance below) are the irradiance the
-// ground under the point would receive without clouds; the march holds them over 10 km of
-// its ray (the sun's zenith angle at the ground below a sample moves by 1.6e-4 rad per km).
+// ground under the point would receive without clouds, albedo its albedo (ground_albedo_at);
+// the march holds all three over 10 km of its ray (the sun's zenith angle at the ground below
+// a sample moves by 1.6e-4 rad per km).
 vec3 diffuse_inscatter(CloudLayerGpu L, float alt, float mu_s, vec3 T_atm, float coverage, vec3 E_sun,
-                       vec3 ground_sun, vec3 ground_sky, float w_up, float cos_phi) {
+                       vec3 ground_sun, vec3 ground_sky, vec3 albedo, float w_up, float cos_phi) {
   float sigma_nominal = L.extinction_max * L.density_scale * coverage;
   // the optical depths above and below the point, scaled to the tables' droplets
   float sa = L.ms_similarity * sigma_nominal * max(L.top_m - alt, 0.0);
@@ -102,7 +103,6 @@ vec3 diffuse_inscatter(CloudLayerGpu L, float alt, float mu_s, vec3 T_atm, float
   float T_sky_cloud = L.ground_transmittance[2].w;
   float T_sun_ground = 1.0 - c + c * (mu_pos > 0.0 ? layer_beam_transmittance(L, mu0) : 0.0);
   float T_sky_ground = 1.0 - c + c * T_sky_cloud;
-  vec3 albedo = frame.ground_albedo.rgb;
   vec3 E_up = albedo * ground_cloud_gain_for_transmittance(albedo * c, T_sky_cloud) *
               (ground_sun * T_sun_ground + ground_sky * T_sky_ground);
   return J_sun + E_sky * ms_diffuse_incidence_source(sa, sb, w_up) + E_up * ms_diffuse_incidence_source(sb, sa, -w_up);

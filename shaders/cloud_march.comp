@@ -16,6 +16,7 @@
 #include "atmosphere_lookup.glsl"
 #include "phase_function.glsl"
 #include "weather_map_sampling.glsl"
+#include "ground_albedo.glsl"
 #include "cloud_density.glsl"
 #include "cloud_intervals.glsl"
 #include "coverage_pyramid.glsl"
@@ -128,9 +129,10 @@ RaySample march_ray(ivec2 q, vec3 dir) {
   int depth_layer = n_iv > 0 ? iv[0].layer : -1;
   float strongest = 0.0;  // largest single-step contribution T * absorbed, and its layer
   int cloud_layer = -1;
-  // cloud_free_ground_irradiance, evaluated at the first cloud sample and again every
-  // GROUND_IRRADIANCE_SPACING along the ray (at t_ground_irradiance)
-  vec3 ground_sun = vec3(0.0), ground_sky = vec3(0.0);
+  // cloud_free_ground_irradiance and the ground's albedo below, evaluated at the first
+  // cloud sample and again every GROUND_IRRADIANCE_SPACING along the ray (at
+  // t_ground_irradiance)
+  vec3 ground_sun = vec3(0.0), ground_sky = vec3(0.0), ground_albedo = frame.ground_albedo.rgb;
   float t_ground_irradiance = -1e30;
   if (n_iv > 0) {
     float jitter = hash12(uvec2(q) + uvec2(frame.frame_index * 7919, frame.frame_index * 104729));
@@ -231,6 +233,7 @@ RaySample march_ray(ivec2 q, vec3 dir) {
         }
         if (abs(t - t_ground_irradiance) > GROUND_IRRADIANCE_SPACING) {
           cloud_free_ground_irradiance(ground_alt, mu_s, E_sun, ground_sun, ground_sky);
+          ground_albedo = ground_albedo_at(from_shell_centre(p));
           t_ground_irradiance = t;
         }
         // the scattered light travels along -dir: its azimuth from the sun's about up
@@ -238,7 +241,8 @@ RaySample march_ray(ivec2 q, vec3 dir) {
         vec3 sun_h = sun - mu_s * up, w_h = -dir - w_up * up;
         float hh = dot(sun_h, sun_h) * dot(w_h, w_h);
         float cos_phi = hh > 1e-12 ? dot(sun_h, w_h) * inversesqrt(hh) : 1.0;
-        vec3 L_diffuse = diffuse_inscatter(L, alt, mu_s, T_atm, coverage, E_sun, ground_sun, ground_sky, w_up, cos_phi);
+        vec3 L_diffuse = diffuse_inscatter(L, alt, mu_s, T_atm, coverage, E_sun, ground_sun, ground_sky, ground_albedo, w_up,
+                                              cos_phi);
         float absorbed = one_minus_exp_neg(sigma * dt);  // albedo 1: scattered fraction
         C += T * absorbed * (L_sun + L_diffuse);
         depth_acc += t * T * absorbed;

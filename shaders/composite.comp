@@ -20,8 +20,9 @@
 #include "phase_function.glsl"
 // (before the #ifdef: the #include expansion inserts each file once, where first named)
 #include "slab_transmittance.glsl"
-#ifdef CLOUDSVC_GROUND_SHADOWS_PER_PIXEL
 #include "weather_map_sampling.glsl"
+#include "ground_albedo.glsl"
+#ifdef CLOUDSVC_GROUND_SHADOWS_PER_PIXEL
 #include "cloud_density.glsl"
 #include "cloud_lighting.glsl"
 #endif
@@ -134,12 +135,13 @@ vec3 ground_radiance(vec3 dir, float t_ground) {
     for (int li = 0; li < frame.layer_count; ++li)
       tau += textureLod(ground_shadow, vec3(shadow_map_uv((shadow.to_anchor[li] * vec4(p, 1.0)).xyz), float(li)), 0.0).r;
 #endif
-  // sun through the clouds: the delta-Eddington beam transmittance of their vertical
-  // optical depth (direct + forward-scattered + diffuse); sky light: the diffuse one; and
-  // the round trips between the ground and the clouds' base (ground_cloud_gain)
+  // sun through the clouds: the slab's beam transmittance at their vertical optical depth
+  // (direct + forward-scattered + diffuse); sky light: the diffuse one; and the round trips
+  // between the ground and the clouds' base (ground_cloud_gain); the albedo where the
+  // ground point is (ground_albedo_at)
   float tau_v = tau * max(mu_s, 0.0);
   float sun_through = mu_s > 0.0 ? slab_beam_transmittance(tau_v, max(mu_s, 0.05)) : 0.0;
-  vec3 albedo = frame.ground_albedo.rgb;
+  vec3 albedo = ground_albedo_at(from_shell_centre(p));
   vec3 E = E_sun * (T_atm * max(mu_s, 0.0) * sun_through + sky_irradiance(ground_alt, mu_s) * slab_diffuse_transmittance(tau_v)) *
            ground_cloud_gain(albedo, tau_v);
   vec3 L_ground = albedo / PI * E;

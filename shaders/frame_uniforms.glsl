@@ -57,6 +57,12 @@ layout(std140, binding = UBO_FRAME) uniform FrameUniforms {
   vec4 noise_quantiles[4];
   vec4 weather_pole_south;
   vec4 weather_pole_north;
-  vec4 ground_albedo;  // rgb
+  vec4 ground_albedo;        // rgb; w 1: an albedo map (ground_albedo_at)
+  vec4 ground_albedo_poles;  // the albedo map's (R, G) at the south pole, then the north's
   CloudLayerGpu layers[MAX_LAYERS];
 } frame;
+
+// A point p of the local frame as seen from the shell centre, in ECEF axes (m).
+vec3 from_shell_centre(vec3 p) {
+  return mat3(frame.enu_to_ecef) * (p + vec3(0.0, 0.0, frame.shell_radius_m + frame.camera_altitude_m));
+}

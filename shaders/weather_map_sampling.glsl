@@ -11,20 +11,30 @@ layout(binding = TEX_WEATHER_MAP_NEXT) uniform sampler2D weather_map_next;  // t
 // there in float).
 vec2 map_lat_lon(vec3 q) { return vec2(atan(q.z, length(q.xy)), atan(q.y, q.x)); }
 
-// The map in the direction q (ECEF axes, any length) for a map of map_height rows, the next
-// keyframe at weight blend, and the pole values (the rows' means) to blend to.
-vec4 weather_map_at(vec3 q, float map_height, float blend, vec4 pole_south, vec4 pole_north) {
+// Texture coordinates of the direction q (ECEF axes, any length) in an equirectangular map.
+vec2 map_uv(vec3 q) {
   vec2 ll = map_lat_lon(q);
-  vec2 uv = vec2(ll.y * (0.5 / PI) + 0.5, ll.x / PI + 0.5);
+  return vec2(ll.y * (0.5 / PI) + 0.5, ll.x / PI + 0.5);
+}
+
+// Within half a texel row of a pole a map's value blends to the pole's (as WeatherMap::sample
+// does): every longitude meets at the same value, no pinwheel at the pole. The weights of
+// the south pole's value (x) and the north's (y) at texture row v of a map of map_height
+// rows; both 0 away from the poles.
+vec2 map_pole_weights(float v, float map_height) {
+  float y = v * map_height - 0.5;
+  return vec2(y < 0.0 ? min(1.0, -2.0 * y) : 0.0, y > map_height - 1.0 ? min(1.0, 2.0 * (y - map_height + 1.0)) : 0.0);
+}
+
+// The map in the direction q for a map of map_height rows, the next keyframe at weight
+// blend, and the pole values (the rows' means) to blend to.
+vec4 weather_map_at(vec3 q, float map_height, float blend, vec4 pole_south, vec4 pole_north) {
+  vec2 uv = map_uv(q);
   // the next keyframe only while one is fading in (a uniform branch: no divergence)
   vec4 w = textureLod(weather_map, uv, 0.0);
   if (blend > 0.0) w = mix(w, textureLod(weather_map_next, uv, 0.0), blend);
-  // Within half a texel row of a pole, blend to the pole's value (as WeatherMap::sample
-  // does): every longitude meets at the same value, no pinwheel at the pole.
-  float y = uv.y * map_height - 0.5;
-  if (y < 0.0) w = mix(w, pole_south, min(1.0, -2.0 * y));
-  else if (y > map_height - 1.0) w = mix(w, pole_north, min(1.0, 2.0 * (y - map_height + 1.0)));
-  return w;
+  vec2 pw = map_pole_weights(uv.y, map_height);
+  return mix(mix(w, pole_south, pw.x), pole_north, pw.y);
 }
 
 // A layer's coverage c modulated by the map's coverage channel m (weather::local_coverage).

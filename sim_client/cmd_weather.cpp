@@ -166,8 +166,8 @@ Command add_weather_command(CLI::App& app) {
       ->type_name("UTC");
   cmd->add_option("--channels", args->channels,
                   "With --map: comma-separated map channels of the image's channels in order: coverage, development "
-                  "(vertical development), density, precipitation (0.5 = the layer's own value; precipitation 0 = "
-                  "none); default coverage")
+                  "(vertical development), density, precipitation, albedo (0.5 = the layer's own value; precipitation "
+                  "0 = none; albedo: the ground's grey albedo 0..1, applied from the next frame); default coverage")
       ->type_name("LIST");
   cmd->add_option("--quiet-ms", args->quiet_ms,
                   "After the service has taken every message, listen this long for late errors, milliseconds, "

@@ -36,6 +36,7 @@ constexpr ChannelName kChannels[] = {
     {"vertical-development", protocol::tile_channel::kVerticalDevelopment},
     {"density", protocol::tile_channel::kDensity},
     {"precipitation", protocol::tile_channel::kPrecipitation},
+    {"albedo", protocol::tile_channel::kGroundAlbedo},
 };
 
 }  // namespace
@@ -70,7 +71,7 @@ std::vector<std::uint8_t> parse_flag_channels(std::string_view flag, const std::
     if (!bit)
       cli::fail(flag, text,
                 "unknown channel '" + std::string(name) +
-                    "' (expected a comma-separated list of coverage, development, density, precipitation)");
+                    "' (expected a comma-separated list of coverage, development, density, precipitation, albedo)");
     for (std::uint8_t b : bits)
       if (b == *bit) cli::fail(flag, text, "channel " + channel_name(*bit) + " listed twice");
     bits.push_back(*bit);

@@ -20,7 +20,7 @@ GeoBounds parse_flag_bounds(std::string_view flag, const std::string& text);
 
 // Weather-map channel names in the order given ("coverage,density") -> protocol
 // tile_channel bits, one per name. Names: coverage, development (or
-// vertical-development), density, precipitation; each at most once.
+// vertical-development), density, precipitation, albedo (the ground's); each at most once.
 std::vector<std::uint8_t> parse_flag_channels(std::string_view flag, const std::string& text);
 // The name of one tile_channel bit ("coverage", ...).
 std::string channel_name(std::uint8_t bit);

@@ -28,8 +28,8 @@ double edge(int c, int size, double lo, double hi) {
 std::vector<protocol::WeatherMapTile> split_into_tiles(const MapRaster& raster, const GeoBounds& bounds,
                                                        double valid_at_utc_s, std::uint32_t max_side) {
   const std::size_t nc = raster.channel_bits.size();
-  if (raster.width < 1 || raster.height < 1 || nc < 1 || nc > 4)
-    throw std::invalid_argument("weather map: need at least 1x1 texels and 1..4 channels");
+  if (raster.width < 1 || raster.height < 1 || nc < 1 || nc > 5)
+    throw std::invalid_argument("weather map: need at least 1x1 texels and 1..5 channels");
   if (raster.values.size() != static_cast<std::size_t>(raster.width) * raster.height * nc)
     throw std::invalid_argument("weather map: value count does not match width x height x channels");
   if (max_side < 1) throw std::invalid_argument("weather map: tile side must be at least 1 texel");

@@ -72,7 +72,8 @@ Offsets expected_frame_uniforms() {
       MEMBER(FrameUniforms, coverage_pyramid), MEMBER(FrameUniforms, layer_count), MEMBER(FrameUniforms, frame_index),
       MEMBER(FrameUniforms, count_density_evaluations), MEMBER(FrameUniforms, footprint_jitter),
       ARRAY_MEMBER(FrameUniforms, noise_quantiles), MEMBER(FrameUniforms, weather_pole_south),
-      MEMBER(FrameUniforms, weather_pole_north), MEMBER(FrameUniforms, ground_albedo)};
+      MEMBER(FrameUniforms, weather_pole_north), MEMBER(FrameUniforms, ground_albedo),
+      MEMBER(FrameUniforms, ground_albedo_poles)};
   const Offsets layer = {
       MEMBER(CloudLayerGpu, base_m), MEMBER(CloudLayerGpu, top_m), MEMBER(CloudLayerGpu, coverage),
       MEMBER(CloudLayerGpu, density_scale), MEMBER(CloudLayerGpu, extinction_max), MEMBER(CloudLayerGpu, g_hg),

@@ -508,10 +508,10 @@ TEST(ProtocolValidate, TileRanges) {
   expect_invalid({"one value extra", tile([](WeatherMapTile& t) { t.data.push_back(0.5f); }),
                   "WeatherMapTile.data has 31 values, expected 30"});
   expect_invalid({"channels mismatch",
-                  tile([](WeatherMapTile& t) { t.channels = tile_channel::kAll; }), "expected 60"});
+                  tile([](WeatherMapTile& t) { t.channels = tile_channel::kAll; }), "expected 75"});
   expect_invalid(
       {"no channels", tile([](WeatherMapTile& t) { t.channels = 0; }), "WeatherMapTile.channels"});
-  expect_invalid({"unknown channel", tile([](WeatherMapTile& t) { t.channels = 0x11; }),
+  expect_invalid({"unknown channel", tile([](WeatherMapTile& t) { t.channels = 0x21; }),
                   "WeatherMapTile.channels"});
   expect_invalid({"width 0", tile([](WeatherMapTile& t) { t.width = 0, t.data.clear(); }),
                   "WeatherMapTile.width"});
@@ -547,9 +547,9 @@ TEST(ProtocolValidate, TileRanges) {
                  t.lat_min_deg = -90, t.lat_max_deg = 90, t.lon_min_deg = -180, t.lon_max_deg = 180;
                }));
   expect_valid("360 degrees starting at 170", tile([](WeatherMapTile& t) { t.lon_max_deg = 530; }));
-  expect_valid("1024 x 1024 x 4", tile([](WeatherMapTile& t) {
+  expect_valid("1024 x 1024 x 5", tile([](WeatherMapTile& t) {
                  t.width = t.height = 1024, t.channels = tile_channel::kAll;
-                 t.data.assign(1024u * 1024u * 4u, 0.5f);
+                 t.data.assign(1024u * 1024u * 5u, 0.5f);
                }));
 }
 
@@ -586,7 +586,7 @@ TEST(ProtocolValidate, TilesFollowTheWeatherModulesRules) {
   EXPECT_EQ(validate(tile([](WeatherMapTile& t) { t.width = 1025; })), "WeatherMapTile.width 1025 out of range [1, 1024]");
   EXPECT_EQ(validate(tile([](WeatherMapTile& t) { t.height = 0xffffffffu; })),
             "WeatherMapTile.height 4294967295 out of range [1, 1024]");
-  EXPECT_EQ(validate(tile([](WeatherMapTile& t) { t.channels = 0x11; })), "WeatherMapTile.channels has unknown bits 0x10");
+  EXPECT_EQ(validate(tile([](WeatherMapTile& t) { t.channels = 0x21; })), "WeatherMapTile.channels has unknown bits 0x20");
   EXPECT_EQ(validate(tile([](WeatherMapTile& t) { t.channels = 0; })), "WeatherMapTile.channels is empty");
   EXPECT_EQ(validate(tile([](WeatherMapTile& t) { t.lon_min_deg = -180.5; })),
             "WeatherMapTile.lon_min_deg -180.5 out of range [-180, 180)");

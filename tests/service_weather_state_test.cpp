@@ -167,5 +167,34 @@ TEST(ServiceWeatherState, RejectedTileOrLayersLeaveTheFrameAsBeforeAndAnAccepted
   EXPECT_EQ(svc.stop(), 0);
 }
 
+// A ground-albedo tile (snow, 0.8) over the view brightens the ground from the next frame,
+// whatever its valid-at time (docs/PROTOCOL.md); a bad one is rejected and changes nothing.
+// Clear sky, 600 m over Zurich looking 60 deg down.
+TEST(ServiceWeatherState, GroundAlbedoTileAppliesFromTheNextFrame) {
+  ServiceProcess svc("albedo_tile");
+  ASSERT_TRUE(svc.running());
+  ServiceConnection c(svc.address(), "albedo-tile");
+  expect_accepted(c, protocol::WeatherLayers{});
+  protocol::Pose down = pose_at(kT);
+  down.pitch_deg = -60.0;
+  const FrameStats land = stats_of(render(c, svc, down));
+  ASSERT_EQ(land.nonfinite, 0u);
+  protocol::WeatherMapTile snow = coverage_tile(0.8f);
+  snow.channels = protocol::tile_channel::kGroundAlbedo;
+  snow.valid_at_utc_s = kT + 86400.0;  // tomorrow: the albedo does not wait for it
+  snow.data[5] = 1.5f;
+  EXPECT_EQ(expect_rejected(c, snow).code, protocol::ErrorCode::InvalidField);
+  expect_as_before(stats_of(render(c, svc, down)), land, "after the rejected albedo tile");
+  snow.data[5] = 0.8f;
+  expect_accepted(c, snow);
+  const FrameStats white = stats_of(render(c, svc, down));
+  RecordProperty("mean_luminance_land", std::to_string(land.mean_luminance));
+  RecordProperty("mean_luminance_snow", std::to_string(white.mean_luminance));
+  EXPECT_EQ(white.nonfinite, 0u);
+  // the land default's green albedo is 0.12: snow is ~6 times as bright, less the air's light
+  EXPECT_GT(white.mean_luminance, 3.0 * land.mean_luminance);
+  EXPECT_EQ(svc.stop(), 0);
+}
+
 }  // namespace
 }  // namespace cloudsvc::test

@@ -66,8 +66,8 @@ TEST(WeatherTiles, ProblemsAreNamed) {
   t = coverage_tile(40, 0, 50, 20, 0.5f);
   t.channels = 0;
   EXPECT_EQ(t.problem(), "MapTile.channels is empty");
-  t.channels = 0x11;
-  EXPECT_EQ(t.problem(), "MapTile.channels has unknown bits 0x10");
+  t.channels = 0x21;
+  EXPECT_EQ(t.problem(), "MapTile.channels has unknown bits 0x20");
   t = coverage_tile(40, 0, 50, 20, 0.5f);
   t.valid_at_utc_s = std::numeric_limits<double>::infinity();
   EXPECT_EQ(t.problem(), "MapTile.valid_at_utc_s is inf (must be finite)");

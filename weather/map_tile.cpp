@@ -62,8 +62,10 @@ std::string_view channel_name(int bit) {
       return "vertical_development";  // the protocol's name of the map's cloud-type channel
     case 2:
       return "density";
-    default:
+    case 3:
       return "precipitation";
+    default:
+      return "ground_albedo";
   }
 }
 

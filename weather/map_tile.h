@@ -13,15 +13,18 @@
 
 namespace cloudsvc::weather {
 
-// Largest tile width or height, texels. 1024 x 1024 x 4 channels x 4 bytes is 16 MiB;
+// Largest tile width or height, texels. 1024 x 1024 x 5 channels x 4 bytes is 20 MiB;
 // larger areas are sent as several tiles. The protocol's limit (protocol::kMaxTileSize,
 // announced in Welcome) is this constant.
 inline constexpr int kMaxTileTexels = 1024;
 
 // Channel bits of a tile: bit 0 coverage (R), 1 cloud type (G; "vertical development" in
-// the protocol), 2 density (B), 3 precipitation (A). Values are interleaved per texel in
-// ascending bit order.
-inline constexpr std::uint8_t kAllTileChannels = 0x0f;
+// the protocol), 2 density (B), 3 precipitation (A) of the weather map; bit 4 the ground's
+// albedo (weather/ground_albedo_map.h, not part of the weather map). Values are
+// interleaved per texel in ascending bit order.
+inline constexpr std::uint8_t kWeatherMapTileChannels = 0x0f;
+inline constexpr std::uint8_t kGroundAlbedoTileChannel = 0x10;
+inline constexpr std::uint8_t kAllTileChannels = kWeatherMapTileChannels | kGroundAlbedoTileChannel;
 
 // A tile's fields but its values, as the rules read them; the sizes are 64-bit so that a
 // message's (unsigned 32-bit) sizes are judged as they were sent.

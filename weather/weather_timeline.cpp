@@ -8,10 +8,14 @@
 namespace cloudsvc::weather {
 
 void apply_tile(WeatherMap& map, const MapTile& t) {
+  int source[4];  // map channel k <- the tile's channel bit k (the first four bits)
+  for (int k = 0, i = 0; k < 4; ++k) source[k] = (t.channels >> k) & 1u ? i++ : kResampleKeep;
+  resample_tile(map, t, source);
+}
+
+void resample_tile(WeatherMap& map, const MapTile& t, const int (&slot)[4]) {
   if (map.width <= 0 || map.height <= 0) return;
   const int nch = std::popcount(t.channels);
-  int slot[4];  // map channel -> index within the tile's texel, or -1
-  for (int k = 0, i = 0; k < 4; ++k) slot[k] = (t.channels >> k) & 1u ? i++ : -1;
   const double dlat = (t.lat_max_deg - t.lat_min_deg) / t.height;
   const double dlon = (t.lon_max_deg - t.lon_min_deg) / t.width;
   auto tile_value = [&](int col, int row, int s) {
@@ -34,6 +38,7 @@ void apply_tile(WeatherMap& map, const MapTile& t) {
       const double fx = x - c0;
       float* px = &map.rgba[(static_cast<std::size_t>(j) * map.width + i) * 4];
       for (int k = 0; k < 4; ++k) {
+        if (slot[k] == kResampleOne) px[k] = 1.0f;
         if (slot[k] < 0) continue;
         const double a = tile_value(c0, r0, slot[k]) * (1 - fx) + tile_value(c0 + 1, r0, slot[k]) * fx;
         const double b = tile_value(c0, r0 + 1, slot[k]) * (1 - fx) + tile_value(c0 + 1, r0 + 1, slot[k]) * fx;

@@ -21,9 +21,18 @@
 
 namespace cloudsvc::weather {
 
-// Writes the tile's channels into `map` at every map texel whose centre lies inside the
-// tile (bilinear resampling of the tile; seamless across the antimeridian).
+// Writes the tile's weather-map channels (kWeatherMapTileChannels) into `map` at every map
+// texel whose centre lies inside the tile (bilinear resampling of the tile; seamless across
+// the antimeridian).
 void apply_tile(WeatherMap& map, const MapTile& tile);
+
+// The resampling of apply_tile with the destination chosen per map channel k:
+// source[k] >= 0 writes the tile's value at texel slot source[k] (its index among the
+// tile's channels, ascending bit order), kResampleKeep leaves the channel as it is and
+// kResampleOne writes 1 (e.g. a weight: "a tile covers this texel").
+inline constexpr int kResampleKeep = -1;
+inline constexpr int kResampleOne = -2;
+void resample_tile(WeatherMap& map, const MapTile& tile, const int (&source)[4]);
 
 class WeatherTimeline {
  public:

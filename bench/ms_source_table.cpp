@@ -45,10 +45,8 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
 
   const auto t0 = std::chrono::steady_clock::now();
-  MsSourceTableShape shape;
-  if (diffuse) shape.n_sun = 1;
   const MsSourceTableBuild build =
-      build_ms_source_table(shape, jdd_params(kMsTableDropletUm), scale, seed, threads, diffuse);
+      build_ms_source_table(MsSourceTableShape{}, jdd_params(kMsTableDropletUm), scale, seed, threads, diffuse);
   std::printf("| tau | sun zenith | photons | collisions/photon | s | median rel. se | 90th pct rel. se |\n");
   std::printf("|---:|---:|---:|---:|---:|---:|---:|\n");
   std::vector<double> all;

@@ -1,7 +1,5 @@
 #include "renderer/ground_albedo_texture.h"
 
-#include <vector>
-
 #include "renderer/gpu_interface.h"
 
 namespace cloudsvc {
@@ -25,12 +23,8 @@ void GroundAlbedoTexture::update(const weather::GroundAlbedoMap& map) {
     height_ = m.height;
     bytes_ = static_cast<std::size_t>(width_) * height_ * 8;
   }
-  std::vector<float> rg(static_cast<std::size_t>(width_) * height_ * 2);
-  for (std::size_t i = 0; i < rg.size() / 2; ++i) {
-    rg[2 * i] = m.rgba[4 * i];
-    rg[2 * i + 1] = m.rgba[4 * i + 1];
-  }
-  glTextureSubImage2D(texture_.id(), 0, 0, 0, width_, height_, GL_RG, GL_FLOAT, rg.data());
+  // RGBA texels into the RG texture: GL keeps R and G and drops B and A (both 0)
+  glTextureSubImage2D(texture_.id(), 0, 0, 0, width_, height_, GL_RGBA, GL_FLOAT, m.rgba.data());
   float south[4], north[4];
   m.pole_value(false, south);
   m.pole_value(true, north);

@@ -68,8 +68,8 @@ float layer_beam_transmittance(CloudLayerGpu L, float mu0) {
 //   flux F_sun = E_sun T_atm mu_s, optical depths scaled to the table's droplets by
 //   (1 - g) / (1 - g_table) (similarity; L.ms_similarity). With the peak beam of the sun term
 //   (peak_beam_phase) it makes the slab radiances of Monte Carlo (docs/ACCURACY.md).
-// * The sky's and the ground's: the Monte Carlo source of diffuse light (ms_diffuse_incidence_source)
-//   entering through the layer's top (the sky's irradiance E_sky at the point's altitude)
+// * The sky's and the ground's: the Monte Carlo source of diffuse light
+//   (ms_diffuse_incidence_source) entering through the layer's top (the sky's irradiance E_sky at the point's altitude)
 //   and through its base (the table turned upside down), with E_up = a E_g the light a
 //   ground of albedo a sends up: its irradiance E_g under the layer, as independent
 //   columns (a fraction 1 - c of the ground in the clear, c under the layer's full optical

@@ -205,9 +205,10 @@ const MsSourceTable& ms_source_table() {
   return table;
 }
 
-MsSourceTableBuild build_ms_source_table(const MsSourceTableShape& shape, const JdDParams& phase,
+MsSourceTableBuild build_ms_source_table(MsSourceTableShape shape, const JdDParams& phase,
                                          double photons_scale, std::uint64_t seed, int threads,
                                          bool diffuse_incidence) {
+  if (diffuse_incidence) shape.n_sun = 1;  // no sun: one column per optical depth
   MsSourceTableBuild out;
   std::vector<float> values;
   values.reserve(shape.size());
@@ -233,7 +234,7 @@ MsSourceTableBuild build_ms_source_table(const MsSourceTableShape& shape, const 
 
 MsSourceColumn compute_ms_source_column(double tau, double mu_s, const JdDParams& phase,
                                         const MsSourceOptions& options) {
-  if (options.diffuse_incidence) mu_s = 1.0;  // unused
+  if (options.diffuse_incidence) mu_s = 1.0;  // no sun: any valid value passes the check below
   if (!(tau > 0.0) || !(mu_s > 0.0 && mu_s <= 1.0) || options.depth_bins < 2 || options.chunks < 2 ||
       options.directions.n_mu < 2 || options.directions.n_phi < 2)
     throw std::invalid_argument("ms source column: needs tau > 0, 0 < mu_s <= 1, >= 2 bins, chunks and directions");

@@ -172,8 +172,8 @@ struct MsSourceTableBuild {
   std::vector<MsSourceColumn> columns;  // [tau][sun], with their standard errors
 };
 // diffuse_incidence: the table of diffuse light entering through the top
-// (MsSourceOptions::diffuse_incidence), one "sun" column per optical depth (shape.n_sun 1).
-MsSourceTableBuild build_ms_source_table(const MsSourceTableShape& shape, const JdDParams& phase,
+// (MsSourceOptions::diffuse_incidence), one column per optical depth (shape.n_sun is 1).
+MsSourceTableBuild build_ms_source_table(MsSourceTableShape shape, const JdDParams& phase,
                                          double photons_scale, std::uint64_t seed, int threads,
                                          bool diffuse_incidence = false);
 

@@ -46,6 +46,7 @@ inline int run(int argc, char** argv) {
   RendererConfig config;
   app.add_option("--size", size, "frame size WxH");
   app.add_option("--cumulus-domes", config.cumulus_domes, "draw cumulus layers as individual domes (RendererConfig::cumulus_domes)");
+  app.add_option("--noise-tiling", config.noise_tiling, "read the noise through its stochastic tiling (RendererConfig::noise_tiling)");
   app.add_option("--frames", frames, "timed frames after the first (median)")->check(CLI::Range(1, 1000));
   app.add_option("--presets", presets_text, "comma-separated quality presets; ratios are to the first");
   CLI11_PARSE(app, argc, argv);

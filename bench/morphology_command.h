@@ -141,6 +141,9 @@ inline int run(int argc, char** argv) {
                  "also render the Zurich view with the CPU reference and the GPU at this square size and compare "
                  "their metrics (0: not)")
       ->check(CLI::Range(0, 256));
+  bool noise_tiling = false;
+  app.add_option("--noise-tiling", noise_tiling,
+                 "read the noise through its stochastic tiling (RendererConfig::noise_tiling), GPU and reference");
   app.add_option("--out", out, "output directory");
   CLI11_PARSE(app, argc, argv);
   const auto q = quality_preset(quality);
@@ -165,7 +168,11 @@ inline int run(int argc, char** argv) {
   const int n_places = static_cast<int>(std::size(kPlaces));
 
   gl::EglContext context;
-  CloudRenderer renderer;
+  RendererConfig config;
+  config.noise_tiling = noise_tiling;
+  CloudRenderer renderer(config);
+  reference::ReferenceSettings reference_settings;
+  reference_settings.noise_tiling = noise_tiling;
   FrameImage sheet;
   sheet.width = size * (n_places + 1);
   sheet.height = size * static_cast<int>(presets.size());
@@ -208,7 +215,7 @@ inline int run(int argc, char** argv) {
       const auto inputs = has_cb ? reference::reference_inputs(reference::InputConfig{}, w.map_seed) : nullptr;
       for (std::size_t li = 0; li < w.layers.size() && has_cb; ++li) {
         if (w.layers[li].type != weather::CloudType::Cumulonimbus) continue;
-        const reference::CloudField field(scene, *inputs);
+        const reference::CloudField field(scene, *inputs, true, false, noise_tiling);
         const reference::ReferenceLayer& L = scene.layers[li];
         const reference::AnvilRatio a = reference::anvil_ratio(scene, field, static_cast<int>(li), kAnvilHalfWidthM,
                                                                kAnvilSpacingM, 0.05 * L.density_scale * L.sigma_max_per_m);
@@ -241,7 +248,7 @@ inline int run(int argc, char** argv) {
 
   std::ostringstream md;
   md << "Command: `cloudbench --morphology --size " << size << " --altitude " << altitude_m << " --quality " << quality
-     << "`; nadir views at " << n_places << " places, the last of " << kFrames << " frames.\n\n"
+     << (noise_tiling ? " --noise-tiling on" : "") << "`; nadir views at " << n_places << " places, the last of " << kFrames << " frames.\n\n"
      << "| weather preset | cloud px % (opacity > 0.5) | clouds (>= 10 px, inside) | perimeter-area D (obs. 1.35) | "
         "fit r² | size exponent b | periodic autocorrelation peak (<= 0.1) | spectrum slope 0.5-8 km (obs. -5/3) | "
         "Cb anvil ratio (>= 2) |\n"
@@ -277,7 +284,7 @@ inline int run(int argc, char** argv) {
       v.width = v.height = reference_size;
       v.fov_deg = kFov;
       const FrameMorphology g = frame_morphology(still_view(renderer, w, v, *q));
-      const FrameMorphology r = frame_morphology(reference::render_reference(v, w, reference::ReferenceSettings{}));
+      const FrameMorphology r = frame_morphology(reference::render_reference(v, w, reference_settings));
       md << "| " << name << " | " << fmt("%.1f", 100.0 * r.cloud_fraction) << " / " << fmt("%.1f", 100.0 * g.cloud_fraction)
          << " | " << r.clouds << " / " << g.clouds << " | " << fmt("%.3f", r.dimension) << " / " << fmt("%.3f", g.dimension)
          << " | " << fmt("%.3f", r.autocorrelation_peak) << " / " << fmt("%.3f", g.autocorrelation_peak) << " |\n";

@@ -40,14 +40,14 @@ gl::Texture upload_max_pyramid(const weather::NoiseMaxPyramid& p) {
 CloudFieldTextures::CloudFieldTextures(const RendererConfig& config) : config_(config) {
   const weather::NoiseVolume base = weather::make_base_shape_noise(config.base_noise_size, config.noise_seed);
   summary_.base_quantiles = noise_quantiles(base);
+  summary_.base_mean = static_cast<float>(weather::noise_mean(base));
+  summary_.noise_seed = config.noise_seed;
   base_noise_ = upload_noise(base);
   const weather::NoiseMaxPyramid base_max(base);
   base_noise_max_ = upload_max_pyramid(base_max);
   for (int l = 0; l < base_max.level_count(); ++l) noise_bytes_ += base_max.level(l).size();
   const weather::NoiseVolume detail = weather::make_detail_noise(config.detail_noise_size, config.noise_seed + 1);
-  double sum = 0.0;
-  for (std::uint8_t v : detail.data) sum += v;
-  summary_.detail_mean = static_cast<float>(sum / (255.0 * static_cast<double>(detail.data.size())));
+  summary_.detail_mean = static_cast<float>(weather::noise_mean(detail));
   detail_noise_ = upload_noise(detail);
   noise_bytes_ += base.data.size() + detail.data.size();
 }

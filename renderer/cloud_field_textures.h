@@ -29,6 +29,10 @@ struct RendererConfig {
   // their shader path is cheap enough on llvmpipe and the default preset's accuracy on them
   // is at its floors (docs/MORPHOLOGY.md, "Domes in the renderer and the reference").
   bool cumulus_domes = false;
+  // Both noise volumes read through their stochastic tiling (weather/noise_tiling.h), so
+  // the cloud field does not repeat with the noise's period. Off by default until it is
+  // cheap enough on llvmpipe: the march costs 1.6-2x (docs/MORPHOLOGY.md, "Noise tiling").
+  bool noise_tiling = false;
   // The layers' phase function: the Jendersie & d'Eon fit (grey) or the droplets'
   // tabulated Mie phase function per wavelength, with the glory and the fogbow
   // (renderer/model/mie_phase_table.h, renderer/cloud_phase_texture.h).
@@ -53,6 +57,7 @@ class CloudFieldTextures {
   void bind() const;
 
   const GpuResourceSummary& summary() const { return summary_; }
+  bool noise_tiling() const { return config_.noise_tiling; }
   std::size_t gpu_bytes() const;  // noise volumes, keyframes, pyramid
 
  private:

@@ -34,7 +34,9 @@ struct CloudPassInputs {
   const CloudPhaseTexture* phase = nullptr;
 
   // Binds the density program variant for this frame (before bind()).
-  void use(const DensityPrograms& programs) const { programs.use(domes != nullptr, density_loops); }
+  void use(const DensityPrograms& programs) const {
+    programs.use(domes != nullptr, density_loops, field.noise_tiling());
+  }
 
   void bind() const {
     frame.bind();

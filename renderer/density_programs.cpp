@@ -16,13 +16,14 @@ bool density_loops_fit(const RenderQuality& q) {
 DensityPrograms::DensityPrograms(std::string file, std::vector<std::string> defines)
     : file_(std::move(file)), defines_(std::move(defines)) {}
 
-void DensityPrograms::use(bool domes, bool loops) const {
-  const int v = domes ? (loops ? 2 : 1) : 0;
-  std::optional<gl::ShaderProgram>& p = variant_[v];
+void DensityPrograms::use(bool domes, bool loops, bool tiling) const {
+  const int dome_variant = domes ? (loops ? 2 : 1) : 0;
+  std::optional<gl::ShaderProgram>& p = variant_[dome_variant + (tiling ? 3 : 0)];
   if (!p) {
     std::vector<std::string> d = defines_;
     if (domes) d.push_back("CLOUDSVC_CUMULUS_DOMES");
-    if (v == 2) d.push_back("CLOUDSVC_DENSITY_LOOPS");
+    if (dome_variant == 2) d.push_back("CLOUDSVC_DENSITY_LOOPS");
+    if (tiling) d.push_back("CLOUDSVC_NOISE_TILING");
     p.emplace(gl::ShaderProgram::compute(file_, d));
   }
   p->use();

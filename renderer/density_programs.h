@@ -7,6 +7,8 @@
 // - with the dome sub-grid summed in a loop over the levels a point needs
 //   (CLOUDSVC_DENSITY_LOOPS, shaders/cumulus_domes.glsl), where the quality's marches leave
 //   llvmpipe's loop budget for it (density_loops_fit); written out otherwise.
+// - without or with the noise volumes' stochastic tiling (CLOUDSVC_NOISE_TILING,
+//   RendererConfig::noise_tiling).
 // Each variant is compiled the first time a frame asks for it. Needs a current GL 4.5
 // context.
 #pragma once
@@ -33,16 +35,16 @@ class DensityPrograms {
  public:
   // file: the compute shader; defines: those of every variant.
   explicit DensityPrograms(std::string file, std::vector<std::string> defines = {});
-  // Binds the variant with or without the dome path (with loops where `loops`; compiled on
-  // first use).
-  void use(bool domes, bool loops) const;
+  // Binds the variant with or without the dome path (with loops where `loops`), with or
+  // without the noise tiling (compiled on first use).
+  void use(bool domes, bool loops, bool tiling) const;
 
  private:
   std::string file_;
   std::vector<std::string> defines_;
   // [0]: no domes, [1]: domes written out, [2]: domes with loops (the loops only matter
-  // to the dome path: without it the variants are the same program)
-  mutable std::optional<gl::ShaderProgram> variant_[3];
+  // to the dome path: without it the variants are the same program); + 3 with the tiling
+  mutable std::optional<gl::ShaderProgram> variant_[6];
 };
 
 }  // namespace cloudsvc

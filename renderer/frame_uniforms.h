@@ -36,6 +36,12 @@ struct CloudLayerGpu {
   // (model::ms_similarity_scale of the layer's phase function)
   float ms_similarity;
   float pad0 = 0.0f, pad1 = 0.0f, pad2 = 0.0f;  // std140 aligns the next member to a vec4
+  // the noises' stochastic tiling (weather/noise_tiling.h, noise_tiling.glsl): floor(camera's
+  // field position / period) per axis, and the four lattices' hash seeds
+  alignas(16) glm::ivec3 base_noise_cell;
+  alignas(16) glm::ivec3 detail_noise_cell;
+  alignas(16) glm::uvec4 base_tiling_seeds;
+  glm::uvec4 detail_tiling_seeds;
   // transmittance of the layer's full nominal optical depth extinction_max * density_scale
   // * thickness (model::slab_flux_table): element j < 11 for the sun's beam at the table's
   // zenith cosine mu_j (kSlabFluxMuMin + j kSlabFluxMuStep), element 11 for diffuse light
@@ -71,12 +77,14 @@ struct FrameUniforms {
   float light_march_cutoff_tau;  // light marches stop past this optical depth (1e30 = never)
   float long_step_factor;        // probe steps in empty air are this many times longer (1 = off)
   float detail_noise_mean;       // mean value of the detail noise (level of detail)
+  float base_noise_mean;         // mean value of the base noise (the tiling's blend)
   int level_of_detail;           // 1: detail noise and light steps follow the pixel footprint
   int coverage_pyramid;          // 1: the coverage max-pyramid is bound and queried
   int layer_count;
   int frame_index;                // mod 65536: jitter sequences
   int count_density_evaluations;  // 1: add them to the frame counters
   int footprint_jitter;           // 1: rays through a per-frame point of the pixel
+  float pad0 = 0.0f, pad1 = 0.0f, pad2 = 0.0f;  // std140 aligns the next member to a vec4
   glm::vec4 noise_quantiles[4];   // base-noise value below which a fraction i/15 lies, i = 0..15
   glm::vec4 weather_pole_south;   // weather map value at the south pole (row mean)
   glm::vec4 weather_pole_north;   // ... at the north pole
@@ -86,7 +94,7 @@ struct FrameUniforms {
   CloudLayerGpu layers[gpu::kMaxLayers];
 };
 
-static_assert(sizeof(CloudLayerGpu) == 15 * 16, "std140 layout");
-static_assert(sizeof(FrameUniforms) == 64 + 20 * 16 + gpu::kMaxLayers * 15 * 16, "std140 layout");
+static_assert(sizeof(CloudLayerGpu) == 19 * 16, "std140 layout");
+static_assert(sizeof(FrameUniforms) == 64 + 21 * 16 + gpu::kMaxLayers * 19 * 16, "std140 layout");
 
 }  // namespace cloudsvc

@@ -7,6 +7,7 @@
 #include "renderer/model/ms_source_table.h"
 #include "renderer/model/phase_function.h"
 #include "renderer/model/slab_flux_table.h"
+#include "weather/noise_tiling.h"
 
 namespace cloudsvc {
 
@@ -79,6 +80,7 @@ FrameUniforms pack_frame_uniforms(const FrameContext& c, const RenderQuality& qu
   u.long_step_factor = static_cast<float>(std::max(1, quality.long_step_factor));
   u.level_of_detail = quality.level_of_detail ? 1 : 0;
   u.detail_noise_mean = resources.detail_mean;
+  u.base_noise_mean = resources.base_mean;
   // Light marches stop once the sun's beam is spent: past the cut-off for the peak beam,
   // which decays as e^(-w_D tau) (peak_beam_phase, shaders/phase_function.glsl).
   const double light_cut =
@@ -119,6 +121,14 @@ FrameUniforms pack_frame_uniforms(const FrameContext& c, const RenderQuality& qu
     g.noise_vertical_scale = static_cast<float>(tr.noise_vertical_scale);
     // the camera's field position wrapped per period in double; the GPU adds rot * p
     g.base_noise_offset = wrapped_offset(lf.camera_field_m, lf.base_period_m);
+    g.base_noise_cell = glm::ivec3(glm::floor(lf.camera_field_m / lf.base_period_m));
+    g.detail_noise_cell = glm::ivec3(glm::floor(lf.camera_field_m / lf.detail_period_m));
+    const std::uint32_t base_seed = weather::base_tiling_seed(resources.noise_seed, l.type);
+    const std::uint32_t detail_seed = weather::detail_tiling_seed(resources.noise_seed, l.type);
+    for (int k = 0; k < weather::kTilingLattices; ++k) {
+      g.base_tiling_seeds[k] = weather::tiling_lattice_seed(base_seed, k);
+      g.detail_tiling_seeds[k] = weather::tiling_lattice_seed(detail_seed, k);
+    }
     g.stratiform = tr.stratiform ? 1 : 0;
     g.detail_noise_offset = wrapped_offset(lf.camera_field_m, lf.detail_period_m);
     g.dome = lf.domes ? 1 : 0;

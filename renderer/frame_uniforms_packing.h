@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 
 #include "renderer/api/render_quality.h"
 #include "renderer/frame_context.h"
@@ -21,7 +22,9 @@ NoiseQuantiles noise_quantiles(const weather::NoiseVolume& v);
 // What the frame uniforms say about the GPU resources bound with them.
 struct GpuResourceSummary {
   NoiseQuantiles base_quantiles{};      // of the base shape noise
+  float base_mean = 0.5f;               // mean value of the base shape noise volume
   float detail_mean = 0.5f;             // mean value of the detail noise volume
+  std::uint32_t noise_seed = 1;         // the volumes' seed (RendererConfig::noise_seed): tiling seeds
   std::array<float, 4> weather_pole_south{0.5f, 0.5f, 0.5f, 0.0f};
   std::array<float, 4> weather_pole_north{0.5f, 0.5f, 0.5f, 0.0f};
   int weather_map_height = 1;

@@ -72,6 +72,7 @@ int run_render(const RenderOptions& opt) {
     settings.seed = opt.seed;
     if (opt.max_order > 0) settings.tracer.max_order = opt.max_order;
     settings.cloud_phase = opt.cloud_phase;
+    settings.noise_tiling = opt.noise_tiling;
     const truth::TruthImage t = truth::render_truth(view, opt.weather, settings);
     img = t.image;
     frame_ms.push_back(img.stats.render_ms);
@@ -91,6 +92,7 @@ int run_render(const RenderOptions& opt) {
     }
     reference::ReferenceSettings settings;
     settings.cumulus_domes = opt.cumulus_domes;
+    settings.noise_tiling = opt.noise_tiling;
     settings.cloud_phase = opt.cloud_phase;
     for (int f = 0; f < opt.frames; ++f) {
       view.frame_index = static_cast<std::uint32_t>(f);

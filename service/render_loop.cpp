@@ -55,6 +55,7 @@ struct FrameAddress {
 RendererConfig renderer_config(const ServeOptions& o) {
   RendererConfig c;
   c.cumulus_domes = o.cumulus_domes;
+  c.noise_tiling = o.noise_tiling;
   c.cloud_phase = o.cloud_phase;
   c.wait_for_phase_tables = false;  // a new droplet size's Mie table must not stall the frames
   return c;

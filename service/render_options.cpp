@@ -88,6 +88,7 @@ struct RenderArgs {
   std::string cloud_phase;                        // --cloud-phase
   bool window = false;
   bool cumulus_domes = false;
+  bool noise_tiling = false;
 };
 
 // Raw text of each `demo` flag.
@@ -187,6 +188,10 @@ void add_quality_flags(CLI::App& cmd, RenderArgs& args, const RenderOptions& def
                "Draw cumulus layers as individual clouds (domes over a placement with a power-law spread of "
                "sizes, docs/MORPHOLOGY.md) instead of the thresholded noise field; GPU presets and --quality "
                "reference, not truth; slower on llvmpipe (docs/MORPHOLOGY.md); default off");
+  cmd.add_flag("--noise-tiling", args.noise_tiling,
+               "Read the cloud noise through its stochastic tiling, so the clouds do not repeat with the "
+               "noise's period (8-50 km by type, docs/MORPHOLOGY.md); every quality; the march costs "
+               "1.6-2x on llvmpipe; default off");
   cmd.add_option("--cloud-phase", args.cloud_phase,
                  cloud_phase_help(defaults.cloud_phase, "the render waits for it (every quality, reference and truth too)"))
       ->type_name("MODEL");
@@ -289,6 +294,7 @@ void apply_quality(const RenderArgs& a, RenderOptions& opt) {
     if (truth) fail("--quality", opt.quality, "not valid with --cumulus-domes (the path tracer draws the noise field)");
     opt.cumulus_domes = true;
   }
+  opt.noise_tiling = a.noise_tiling;
   if (given(cmd, "--cloud-phase")) {
     const std::optional<model::CloudPhaseModel> m = model::cloud_phase_model_from_name(a.cloud_phase);
     if (!m) fail("--cloud-phase", a.cloud_phase, "expected fit or mie");

@@ -41,6 +41,8 @@ struct RenderOptions {
   bool cumulus_domes = false;                    // --cumulus-domes: cumulus layers as individual
                                                  // domes (RendererConfig::cumulus_domes; GPU
                                                  // presets and reference, not truth)
+  bool noise_tiling = false;                     // --noise-tiling: RendererConfig::noise_tiling
+                                                 // (every quality, truth included)
   model::CloudPhaseModel cloud_phase = model::CloudPhaseModel::kFit;  // --cloud-phase fit|mie
 };
 

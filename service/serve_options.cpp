@@ -147,6 +147,7 @@ struct ServeCommandLine::Args {
   std::string socket_mode, shm_mode, idle_timeout, max_view_size, tile_budget, ready_file;
   bool window = false;
   bool cumulus_domes = false;
+  bool noise_tiling = false;
   std::string cloud_phase;
 };
 
@@ -228,6 +229,9 @@ void add_scene_flags(CLI::App& cmd, ServeCommandLine::Args& args, const ServeOpt
                "Draw cumulus layers as individual clouds (domes over a placement with a power-law spread of "
                "sizes, docs/MORPHOLOGY.md) instead of the thresholded noise field; slower on llvmpipe; "
                "default off");
+  cmd.add_flag("--noise-tiling", args.noise_tiling,
+               "Read the cloud noise through its stochastic tiling, so the clouds do not repeat with the "
+               "noise's period (docs/MORPHOLOGY.md); the march costs 1.6-2x on llvmpipe; default off");
   cmd.add_option("--cloud-phase", args.cloud_phase,
                  cloud_phase_help(defaults.cloud_phase, "on a thread of its own, while the frames go on with the fit"))
       ->type_name("MODEL");
@@ -320,6 +324,7 @@ void apply_sinks(const ServeCommandLine::Args& a, ServeOptions& opt) {
   }
   opt.window = a.window;
   opt.cumulus_domes = a.cumulus_domes;
+  opt.noise_tiling = a.noise_tiling;
   if (given(cmd, "--cloud-phase")) {
     const std::optional<model::CloudPhaseModel> m = model::cloud_phase_model_from_name(a.cloud_phase);
     if (!m) fail("--cloud-phase", a.cloud_phase, "expected fit or mie");

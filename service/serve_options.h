@@ -31,6 +31,7 @@ struct ServeOptions {
   std::string out_dir;                // --out-dir DIR: write every frame there (PNG); empty = no file sink
   std::string weather_arg = "broken-cumulus";  // --weather PRESET|FILE.json: weather at start
   bool cumulus_domes = false;                  // --cumulus-domes: cumulus layers as individual domes
+  bool noise_tiling = false;                   // --noise-tiling: RendererConfig::noise_tiling
   model::CloudPhaseModel cloud_phase = model::CloudPhaseModel::kFit;  // --cloud-phase fit|mie
   weather::Weather weather;                    // resolved
   std::string time_text;              // --time UTC ISO 8601 used until a client sends time; default: now

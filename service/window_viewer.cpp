@@ -56,6 +56,7 @@ void key_callback(GLFWwindow* w, int key, int, int action, int mods) {
 RendererConfig renderer_config(const RenderOptions& opt) {
   RendererConfig config;
   config.cumulus_domes = opt.cumulus_domes;
+  config.noise_tiling = opt.noise_tiling;
   config.cloud_phase = opt.cloud_phase;
   return config;
 }

@@ -4,7 +4,9 @@
 // Needs frame_uniforms.glsl, common.glsl and weather_map_sampling.glsl.
 // Cumulus layers drawn as individual domes (CloudLayerGpu.dome, weather/cumulus_domes.h)
 // read their tops through cumulus_domes.glsl; programs compiled without
-// CLOUDSVC_CUMULUS_DOMES (renderer::cloud_density_defines) hold none of that code.
+// CLOUDSVC_CUMULUS_DOMES (renderer/density_programs.h) hold none of that code. With
+// CLOUDSVC_NOISE_TILING (RendererConfig::noise_tiling) both noise volumes are read through
+// their stochastic tiling (noise_tiling.glsl), so the field does not repeat with their period.
 #ifdef CLOUDSVC_CUMULUS_DOMES
 #include "gradient_noise.glsl"
 #include "cumulus_domes.glsl"
@@ -124,6 +126,37 @@ float base_noise_max_over(vec3 u_lo, vec3 u_hi) {
   return best;
 }
 
+#ifdef CLOUDSVC_NOISE_TILING
+#include "noise_tiling.glsl"
+#endif
+
+// The base-shape noise of layer L at s (base-noise periods, camera-relative as
+// CloudLayerGpu.base_noise_offset), and an upper bound of it over the box [s_lo, s_hi].
+float base_shape_at(CloudLayerGpu L, vec3 s) {
+#ifdef CLOUDSVC_NOISE_TILING
+  return tiled_noise(base_noise, s, L.base_noise_cell, L.base_tiling_seeds, frame.base_noise_mean);
+#else
+  return textureLod(base_noise, s, 0.0).r;
+#endif
+}
+
+float base_shape_max_over(CloudLayerGpu L, vec3 s_lo, vec3 s_hi) {
+#ifdef CLOUDSVC_NOISE_TILING
+  return tiled_base_noise_max_over(L, s_lo, s_hi);
+#else
+  return base_noise_max_over(s_lo, s_hi);
+#endif
+}
+
+// The detail noise of layer L at s (detail-noise periods, camera-relative).
+float detail_shape_at(CloudLayerGpu L, vec3 s) {
+#ifdef CLOUDSVC_NOISE_TILING
+  return tiled_noise(detail_noise, s, L.detail_noise_cell, L.detail_tiling_seeds, frame.detail_noise_mean);
+#else
+  return textureLod(detail_noise, s, 0.0).r;
+#endif
+}
+
 // Whether layer li can have cloud anywhere on the segment a..b (local frame, m; a few
 // hundred m at most) with the weather w read at one end: false only where the density is
 // 0 on all of it (the long-step probes of the march skip such a segment). Bounds: the
@@ -155,7 +188,7 @@ bool cloud_may_be_on_segment(int li, vec3 a, vec3 b, vec4 w) {
   vec3 ua = field_point(L, a, alt_a) * L.base_noise_frequency + L.base_noise_offset;
   vec3 ub = field_point(L, b, alt_b) * L.base_noise_frequency + L.base_noise_offset;
   float pad = 0.05 / float(textureSize(base_noise_max, 0).x);  // the stretch's curvature between the ends
-  float shape_bound = base_noise_max_over(min(ua, ub) - pad, max(ua, ub) + pad);
+  float shape_bound = base_shape_max_over(L, min(ua, ub) - pad, max(ua, ub) + pad);
   return shape_bound * profile_bound > noise_quantile(1.0 - coverage);
 }
 
@@ -197,7 +230,7 @@ float cloud_extinction_in(int li, vec3 p, float alt, int detail, vec4 w, out flo
 #endif
   if (profile <= 0.0 && !dome) return 0.0;
   vec3 p_field = field_point(L, p, alt);
-  float shape = textureLod(base_noise, p_field * L.base_noise_frequency + L.base_noise_offset, 0.0).r;
+  float shape = base_shape_at(L, p_field * L.base_noise_frequency + L.base_noise_offset);
   float d;
   float anvil_factor = 1.0;
 #ifdef CLOUDSVC_CUMULUS_DOMES
@@ -221,7 +254,7 @@ float cloud_extinction_in(int li, vec3 p, float alt, int detail, vec4 w, out flo
   }
   if (d <= 0.0) return 0.0;
   if (detail != DETAIL_NONE && d < 1.0) {
-    float dn = detail == DETAIL_SAMPLED ? textureLod(detail_noise, p_field * L.detail_noise_frequency + L.detail_noise_offset, 0.0).r
+    float dn = detail == DETAIL_SAMPLED ? detail_shape_at(L, p_field * L.detail_noise_frequency + L.detail_noise_offset)
                                         : frame.detail_noise_mean;
     d = saturate(remap(d, dn * L.detail_erosion, 1.0, 0.0, 1.0));
   }

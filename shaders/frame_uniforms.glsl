@@ -16,6 +16,12 @@ struct CloudLayerGpu {
   vec4 anvil;  // weather::Anvil: spread (0: none), base, top, density_ratio
   mat4 noise_rotation;
   float ms_similarity;  // model::ms_similarity_scale: optical depths onto the source table's droplets
+  // the noises' stochastic tiling (noise_tiling.glsl): floor(camera's field position /
+  // period) and the four lattices' hash seeds (weather::tiling_lattice_seed)
+  ivec3 base_noise_cell;
+  ivec3 detail_noise_cell;
+  uvec4 base_tiling_seeds;
+  uvec4 detail_tiling_seeds;
   // the slab transmittance of the layer's full nominal optical depth: [j / 4][j % 4] for the
   // sun's beam at the table's zenith cosine j (< SLAB_FLUX_MU_NODES), [2].w for diffuse light
   vec4 ground_transmittance[3];
@@ -48,6 +54,7 @@ layout(std140, binding = UBO_FRAME) uniform FrameUniforms {
   float light_march_cutoff_tau;
   float long_step_factor;
   float detail_noise_mean;
+  float base_noise_mean;  // noise_tiling.glsl's blend
   int level_of_detail;
   int coverage_pyramid;
   int layer_count;

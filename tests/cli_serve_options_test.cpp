@@ -133,6 +133,8 @@ TEST_F(CliServeOptionsTest, Defaults) {
   EXPECT_FALSE(o.window);
   EXPECT_FALSE(o.cumulus_domes);
   EXPECT_TRUE(serve_with({"--cumulus-domes"}).cumulus_domes);
+  EXPECT_FALSE(o.noise_tiling);
+  EXPECT_TRUE(serve_with({"--noise-tiling"}).noise_tiling);
   EXPECT_EQ(o.cloud_phase, model::CloudPhaseModel::kFit);
   EXPECT_EQ(serve_with({"--cloud-phase", "mie"}).cloud_phase, model::CloudPhaseModel::kMie);
   expect_serve_rejected({"--cloud-phase", "rayleigh"}, "--cloud-phase", "rayleigh");
@@ -164,7 +166,7 @@ TEST_F(CliServeOptionsTest, HelpDocumentsEveryFlagWithUnitsRangesDefaultsAndExam
   EXPECT_EQ(r.cmd.exit_code, 0);
   EXPECT_TRUE(r.err.empty()) << r.err;
   for (const char* text :
-       {"--listen", "--shm", "--shm-max-size", "--window", "--out-dir", "--weather", "--cumulus-domes", "--cloud-phase", "--time",
+       {"--listen", "--shm", "--shm-max-size", "--window", "--out-dir", "--weather", "--cumulus-domes", "--noise-tiling", "--cloud-phase", "--time",
         "--size", "--fov", "--max-clients", "--exit-after-frames", "tcp://HOST:PORT",
         "unix:PATH", "[0, 65535]", "107 bytes", "--socket-mode", "--shm-mode", "0600", "--idle-timeout",
         "--max-view-size", "default 3840x2160", "--tile-budget", "Overloaded", "--ready-file", "localhost", "[::1]", "not resolved",

@@ -68,7 +68,7 @@ Offsets expected_frame_uniforms() {
       MEMBER(FrameUniforms, primary_steps), MEMBER(FrameUniforms, light_steps),
       MEMBER(FrameUniforms, ground_shadow_steps),
       MEMBER(FrameUniforms, light_march_cutoff_tau), MEMBER(FrameUniforms, long_step_factor),
-      MEMBER(FrameUniforms, detail_noise_mean), MEMBER(FrameUniforms, level_of_detail),
+      MEMBER(FrameUniforms, detail_noise_mean), MEMBER(FrameUniforms, base_noise_mean), MEMBER(FrameUniforms, level_of_detail),
       MEMBER(FrameUniforms, coverage_pyramid), MEMBER(FrameUniforms, layer_count), MEMBER(FrameUniforms, frame_index),
       MEMBER(FrameUniforms, count_density_evaluations), MEMBER(FrameUniforms, footprint_jitter),
       ARRAY_MEMBER(FrameUniforms, noise_quantiles), MEMBER(FrameUniforms, weather_pole_south),
@@ -84,6 +84,8 @@ Offsets expected_frame_uniforms() {
       MEMBER(CloudLayerGpu, base_noise_offset), MEMBER(CloudLayerGpu, stratiform),
       MEMBER(CloudLayerGpu, detail_noise_offset), MEMBER(CloudLayerGpu, dome),
       MEMBER(CloudLayerGpu, anvil), MEMBER(CloudLayerGpu, noise_rotation), MEMBER(CloudLayerGpu, ms_similarity),
+      MEMBER(CloudLayerGpu, base_noise_cell), MEMBER(CloudLayerGpu, detail_noise_cell),
+      MEMBER(CloudLayerGpu, base_tiling_seeds), MEMBER(CloudLayerGpu, detail_tiling_seeds),
       ARRAY_MEMBER(CloudLayerGpu, ground_transmittance)};
   for (int i = 0; i < gpu::kMaxLayers; ++i)
     for (const auto& [name, offset] : layer)

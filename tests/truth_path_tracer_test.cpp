@@ -119,11 +119,13 @@ TEST(TruthBandWalker, GrazingRayReentersTheBandItLeft) {
 
 // The scene's majorants bound the density field: the band majorant at random points in
 // every layer of every preset, and the local majorant along random 250 m stretches, at a
-// mid latitude, next to the north pole and on the antimeridian.
+// mid latitude, next to the north pole and on the antimeridian; with the noise volumes read
+// directly and through their stochastic tiling (weather/noise_tiling.h).
 TEST(TruthMajorant, BoundsTheDensityFieldOfEveryPreset) {
   struct Place {
     double lat, lon;
   };
+  for (const bool tiling : {false, true})
   for (const Place& place : {Place{47.45, 8.56}, Place{89.95, 30.0}, Place{-12.0, 179.999}}) {
     ViewRequest v;
     v.position = {place.lat, place.lon, 2500.0};
@@ -136,9 +138,9 @@ TEST(TruthMajorant, BoundsTheDensityFieldOfEveryPreset) {
       if (wx.layers.empty()) continue;
       const auto inputs = reference::reference_inputs({}, wx.map_seed);
       const reference::ReferenceScene scene = reference::make_reference_scene(v, wx);
-      const reference::CloudField field(scene, *inputs);
+      const reference::CloudField field(scene, *inputs, true, false, tiling);
       const SceneMedium medium(scene, field);
-      const SceneLocalMajorant local(scene, *inputs, true, scene_band_edges(scene));
+      const SceneLocalMajorant local(scene, *inputs, true, scene_band_edges(scene), tiling);
       const TruthWorld world = make_scene_world(scene, *inputs, true, medium, &local);
       model::Pcg32 rng(7, 1);
       double band_ratio = 0.0, local_ratio = 0.0;
@@ -166,7 +168,7 @@ TEST(TruthMajorant, BoundsTheDensityFieldOfEveryPreset) {
           medium.at(x, h, m);
           ASSERT_LE(m.cloud_total(), band_cloud) << name << " at altitude " << h;
           ASSERT_LE(m.cloud_total(), local_cloud) << name << " at altitude " << h << ", place " << place.lat << " "
-                                                  << place.lon;
+                                                  << place.lon << (tiling ? ", tiled" : "");
           const glm::dvec3 ext = m.extinction();
           ASSERT_LE(std::max({ext.r, ext.g, ext.b}), world.band_majorant[static_cast<std::size_t>(band)]);
           if (m.cloud_total() > 0.0) {
@@ -176,8 +178,8 @@ TEST(TruthMajorant, BoundsTheDensityFieldOfEveryPreset) {
           }
         }
       }
-      std::printf("%7.2f %8.3f %-20s cloud extinction / majorant in cloud: band %.3f, local %.3f (%d points)\n",
-                  place.lat, place.lon, name.c_str(), inside ? band_ratio / inside : 0.0,
+      std::printf("%7.2f %8.3f %-20s %s cloud extinction / majorant in cloud: band %.3f, local %.3f (%d points)\n",
+                  place.lat, place.lon, name.c_str(), tiling ? "tiled" : "     ", inside ? band_ratio / inside : 0.0,
                   inside ? local_ratio / inside : 0.0, inside);
     }
   }

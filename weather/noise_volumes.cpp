@@ -158,4 +158,10 @@ NoiseVolume make_detail_noise(int size, std::uint32_t seed) {
   return vol;
 }
 
+double noise_mean(const NoiseVolume& v) {
+  double sum = 0.0;
+  for (std::uint8_t x : v.data) sum += x;
+  return v.data.empty() ? 0.0 : sum / (255.0 * static_cast<double>(v.data.size()));
+}
+
 }  // namespace cloudsvc::weather

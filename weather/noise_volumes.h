@@ -22,4 +22,7 @@ NoiseVolume make_base_shape_noise(int size = 128, std::uint32_t seed = 1);
 // (common/parallel_for.h); the volumes do not depend on the thread count.
 NoiseVolume make_detail_noise(int size = 32, std::uint32_t seed = 2);
 
+// Mean value of a volume, in [0, 1].
+double noise_mean(const NoiseVolume& v);
+
 }  // namespace cloudsvc::weather

@@ -3,9 +3,11 @@
 
 #include "weather/cumulus_domes.h"
 #include "weather/dome_rings.h"
+#include "weather/noise_tiling.h"
 #include "weather/weather_map.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "renderer/reference/texture_sampling.h"
@@ -44,8 +46,8 @@ struct CloudField::Domes {
 };
 
 CloudField::CloudField(const ReferenceScene& scene, const ReferenceInputs& inputs, bool honour_stratiform,
-                       bool cumulus_domes)
-    : scene_(scene), inputs_(inputs), honour_stratiform_(honour_stratiform),
+                       bool cumulus_domes, bool noise_tiling)
+    : scene_(scene), inputs_(inputs), honour_stratiform_(honour_stratiform), noise_tiling_(noise_tiling),
       centre_to_camera_ecef_(scene.shell.enu_to_ecef[2] * (scene.shell.radius_m + scene.shell.camera_alt_m)) {
   domes_.resize(scene.layers.size());
   if (!cumulus_domes) return;
@@ -110,6 +112,20 @@ double CloudField::anvil_coverage(const ReferenceLayer& l, double c, double w) {
   return 1.0 - std::pow(1.0 - c, 1.0 + static_cast<double>(l.anvil.spread) * w);
 }
 
+double CloudField::base_shape(const ReferenceLayer& L, const glm::dvec3& field) const {
+  if (!noise_tiling_) return sample_r8_trilinear_repeat(inputs_.base_noise, field / L.base_period_m);
+  const auto sample = [&](const glm::dvec3& u) { return sample_r8_trilinear_repeat(inputs_.base_noise, u); };
+  return weather::tiled_noise(sample, field / L.base_period_m, weather::base_tiling_seed(inputs_.noise_seed, L.type),
+                              inputs_.base_mean);
+}
+
+double CloudField::detail_shape(const ReferenceLayer& L, const glm::dvec3& field) const {
+  if (!noise_tiling_) return sample_r8_trilinear_repeat(inputs_.detail_noise, field / L.detail_period_m);
+  const auto sample = [&](const glm::dvec3& u) { return sample_r8_trilinear_repeat(inputs_.detail_noise, u); };
+  return weather::tiled_noise(sample, field / L.detail_period_m, weather::detail_tiling_seed(inputs_.noise_seed, L.type),
+                              inputs_.detail_mean);
+}
+
 CloudSample CloudField::sample(int li, const glm::dvec3& p, double alt, bool detail, std::uint64_t& evals) const {
   CloudSample out;
   const ReferenceLayer& L = scene_.layers[static_cast<std::size_t>(li)];
@@ -129,7 +145,7 @@ CloudSample CloudField::sample(int li, const glm::dvec3& p, double alt, bool det
   // steps 5 and 6 of the header for the cloud fraction d > 0
   const auto extinction = [&](double d, double anvil_factor, const glm::dvec3& field) {
     if (detail && d < 1.0) {
-      const double dn = sample_r8_trilinear_repeat(inputs_.detail_noise, field / L.detail_period_m);
+      const double dn = detail_shape(L, field);
       const double floor_value = dn * L.erosion;
       d = saturate((d - floor_value) / (1.0 - floor_value));
     }
@@ -138,7 +154,7 @@ CloudSample CloudField::sample(int li, const glm::dvec3& p, double alt, bool det
   };
   if (domes_[static_cast<std::size_t>(li)]) {  // the cumulus domes (weather::dome_fraction)
     const glm::dvec3 field = field_point();
-    const double shape = sample_r8_trilinear_repeat(inputs_.base_noise, field / L.base_period_m);
+    const double shape = base_shape(L, field);
     const double d = dome_fraction(li, p, alt, out.coverage, depth_fraction * (L.top_m - L.base_m), shape);
     if (d > 0.0) out.sigma_t = extinction(d, 1.0, field);
     return out;
@@ -147,7 +163,7 @@ CloudSample CloudField::sample(int li, const glm::dvec3& p, double alt, bool det
   const double profile = height_profile(L, f / depth_fraction);
   if (profile <= 0.0) return out;
   const glm::dvec3 field = field_point();
-  const double shape = sample_r8_trilinear_repeat(inputs_.base_noise, field / L.base_period_m);
+  const double shape = base_shape(L, field);
   const double threshold = interpolate_quantile(inputs_.base_quantiles, 1.0 - out.coverage);
   double d = saturate((shape * profile - threshold) / kCoverageEdge);
   double anvil_factor = 1.0;  // step 4 of the header

@@ -9,7 +9,8 @@
 //      (weather::type_depth_fraction; see honour_stratiform below),
 //      profile P = H(f / f_v) [f <= f_v], H(x) = smoothstep(0, r_b, x)
 //      (1 - smoothstep(1 - r_t, 1, x)) mix(1, x, top_weight), ramps floored at 1e-3;
-//   3. base shape S = trilinear base noise at (field position) / base period, where the
+//   3. base shape S = trilinear base noise at (field position) / base period (with
+//      noise_tiling: through its stochastic tiling, weather/noise_tiling.h), where the
 //      field position is the wind-rotated ECEF position with the altitude scaled by the
 //      type's noise vertical scale k: R (X + (k - 1) a n), n the shell's up at the point
 //      (k < 1 stretches features upwards: convective towers);
@@ -18,7 +19,7 @@
 //      shield's d_s = saturate((S P - Q(1 - c_w)) / 0.12), c_w = 1 - (1 - c)^(1 + spread w);
 //      factor a = 1 - w (1 - density_ratio)(1 - d), then d = max(d, d_s) (a = 1 elsewhere);
 //   5. where 0 < d < 1 and detail is wanted: D = trilinear detail noise at
-//      (field position) / detail period, d = saturate((d - D e) / (1 - D e)), e = erosion;
+//      (field position) / detail period (tiled as in 3 with noise_tiling), d = saturate((d - D e) / (1 - D e)), e = erosion;
 //   6. sigma_t = d * a * density_scale * 2^(2 (w.b - 0.5)) * sigma_max (1/m).
 #pragma once
 
@@ -49,8 +50,10 @@ class CloudField {
   // cumulus_domes: cumulus layers as individual domes (weather/cumulus_domes.h), read through
   // the rings the GPU would place for this camera (weather::DomeTopSampler), as the renderer
   // does with RendererConfig::cumulus_domes.
+  // noise_tiling: both noise volumes read through their stochastic tiling
+  // (weather/noise_tiling.h), as the renderer does with RendererConfig::noise_tiling.
   CloudField(const ReferenceScene& scene, const ReferenceInputs& inputs, bool honour_stratiform = true,
-             bool cumulus_domes = false);
+             bool cumulus_domes = false, bool noise_tiling = false);
   ~CloudField();
 
   // Extinction of layer li at local point p with altitude alt (above the shell sphere).
@@ -73,11 +76,17 @@ class CloudField {
   double coverage_at_field_point(int li, const glm::dvec3& x) const;
 
  private:
+  // The base shape S of step 3 and the detail noise D of step 5 at a field position (m),
+  // through the stochastic tiling where noise_tiling (weather/noise_tiling.h; the layer
+  // type's tiling seeds).
+  double base_shape(const ReferenceLayer& L, const glm::dvec3& field) const;
+  double detail_shape(const ReferenceLayer& L, const glm::dvec3& field) const;
   struct Domes;
   double dome_fraction(int li, const glm::dvec3& p, double alt, double coverage, double ceiling_m, double shape) const;
   const ReferenceScene& scene_;
   const ReferenceInputs& inputs_;
   bool honour_stratiform_;
+  bool noise_tiling_;
   glm::dvec3 centre_to_camera_ecef_;  // shell centre -> camera, ECEF axes, m
   std::vector<std::unique_ptr<Domes>> domes_;  // per layer; null where not drawn as domes
 };

@@ -52,6 +52,9 @@ std::shared_ptr<const ReferenceInputs> reference_inputs(const InputConfig& confi
   in->detail_noise = *c.detail[detail_key];
   in->weather_map = *c.maps[map_key];
   in->base_quantiles = value_quantiles(in->base_noise);
+  in->base_mean = weather::noise_mean(in->base_noise);
+  in->detail_mean = weather::noise_mean(in->detail_noise);
+  in->noise_seed = config.noise_seed;
   in->pole_south = weather_map_pole_value(in->weather_map, false);
   in->pole_north = weather_map_pole_value(in->weather_map, true);
   c.inputs[key] = in;

@@ -33,6 +33,9 @@ struct ReferenceInputs {
   weather::NoiseVolume detail_noise;
   weather::WeatherMap weather_map;
   Quantiles16 base_quantiles{};         // of base_noise (value_quantiles)
+  double base_mean = 0.5;               // of base_noise (weather::noise_mean): the tiling's blend
+  double detail_mean = 0.5;             // of detail_noise
+  std::uint32_t noise_seed = 1;         // InputConfig::noise_seed: the layers' tiling seeds
   glm::dvec4 pole_south{0.5}, pole_north{0.5};  // weather map at the poles (row means)
 };
 

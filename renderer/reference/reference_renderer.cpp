@@ -32,7 +32,7 @@ FrameImage render_reference(const ViewRequest& view, const weather::Weather& wea
       weather.layers.empty() ? no_inputs : reference_inputs(settings.inputs, weather.map_seed);
 
   const ReferenceScene scene = make_reference_scene(view, weather, wind_anchor, settings.cloud_phase);
-  const CloudField field(scene, *inputs, settings.honour_stratiform, settings.cumulus_domes);
+  const CloudField field(scene, *inputs, settings.honour_stratiform, settings.cumulus_domes, settings.noise_tiling);
   const PixelIntegrator integrator(field, *tables, settings);
 
   FrameImage img;

@@ -59,6 +59,8 @@ struct ReferenceSettings {
   bool honour_stratiform = true;
   // Cumulus layers as individual domes (RendererConfig::cumulus_domes; cloud_field.h)
   bool cumulus_domes = false;
+  // The noise volumes' stochastic tiling (RendererConfig::noise_tiling; cloud_field.h)
+  bool noise_tiling = false;
   // The layers' phase function (RendererConfig::cloud_phase; model/mie_phase_table.h)
   model::CloudPhaseModel cloud_phase = model::CloudPhaseModel::kFit;
   // Rays per pixel along each axis (stratified: the centres of n x n sub-pixels), averaged:

@@ -8,6 +8,7 @@
 #include "renderer/model/scene_constants.h"
 #include "renderer/reference/atmosphere_monte_carlo.h"  // the air's majorant band edges
 #include "renderer/reference/reference_atmosphere.h"
+#include "weather/noise_tiling.h"
 #include "weather/weather_map.h"
 
 namespace cloudsvc::truth {
@@ -43,8 +44,7 @@ FieldMaxima field_maxima(const reference::ReferenceInputs& in) {
     m.map_density = std::max(m.map_density, static_cast<double>(t[i + 2]));
   }
   if (t.empty()) m.map_coverage = m.map_density = 1.0;  // no map: any value
-  if (!in.base_noise.data.empty())
-    m.base_noise = *std::max_element(in.base_noise.data.begin(), in.base_noise.data.end()) / 255.0;
+  m.base_noise = 1.0;  // the volume's largest texel is 1 (stretched), and the tiled noise may reach 1
   m.base_quantiles = in.base_quantiles;
   return m;
 }
@@ -96,8 +96,8 @@ std::vector<double> scene_band_edges(const reference::ReferenceScene& scene) {
 
 SceneLocalMajorant::SceneLocalMajorant(const reference::ReferenceScene& scene,
                                        const reference::ReferenceInputs& inputs, bool honour_stratiform,
-                                       const std::vector<double>& band_edges)
-    : scene_(scene), inputs_(inputs), edges_(band_edges) {
+                                       const std::vector<double>& band_edges, bool noise_tiling)
+    : scene_(scene), inputs_(inputs), edges_(band_edges), noise_tiling_(noise_tiling) {
   for (std::size_t i = 0; i + 1 < edges_.size(); ++i) {
     std::vector<double> row, anvil_row;
     for (const reference::ReferenceLayer& L : scene.layers) {
@@ -178,7 +178,10 @@ double SceneLocalMajorant::cloud_bound(int band, const glm::dvec3& a, const glm:
     const double widen = std::abs(L.noise_vertical_scale - 1.0) * (band_height + band_top * length / R + 1.0);
     const glm::dvec3 lo = (glm::min(f[0], f[1]) - widen) / L.base_period_m;
     const glm::dvec3 hi = (glm::max(f[0], f[1]) + widen) / L.base_period_m;
-    const double noise = base_.max_over(lo, hi);
+    const double noise = noise_tiling_ ? weather::tiled_max_over(base_, lo, hi,
+                                                                 weather::base_tiling_seed(inputs_.noise_seed, L.type),
+                                                                 inputs_.base_mean)
+                                       : base_.max_over(lo, hi);
     const double c_bound = reference::CloudField::anvil_coverage(L, c_max, anvil_[static_cast<std::size_t>(band)][li]);
     const double threshold = reference::interpolate_quantile(inputs_.base_quantiles, 1.0 - c_bound);
     const double d = std::clamp((noise * prof[li] - threshold) / reference::kCoverageEdge, 0.0, 1.0);

@@ -43,7 +43,7 @@ class SceneMedium final : public TruthMedium {
 // The inputs' largest values the bound uses.
 struct FieldMaxima {
   double map_coverage = 1.0, map_density = 1.0;  // weather map R and B, over texels and poles
-  double base_noise = 1.0;                       // largest base-noise texel, [0, 1]
+  double base_noise = 1.0;                       // largest tiled base-noise value, [0, 1]
   reference::Quantiles16 base_quantiles{};
 };
 FieldMaxima field_maxima(const reference::ReferenceInputs& inputs);
@@ -53,11 +53,12 @@ FieldMaxima field_maxima(const reference::ReferenceInputs& inputs);
 // texels around the stretch (the rows next to a pole and the pole's value near a pole)
 // and the base noise at its largest over the texels a trilinear sample anywhere on the
 // stretch can read (NoiseMaxPyramid; the stretch's noise-space bounding box, widened by
-// |k - 1| (band height + altitude x stretch / R + 1 m) for the vertical noise scale k).
+// |k - 1| (band height + altitude x stretch / R + 1 m) for the vertical noise scale k;
+// through the noise's stochastic tiling where the field has it, weather::tiled_max_over).
 class SceneLocalMajorant final : public LocalCloudMajorant {
  public:
   SceneLocalMajorant(const reference::ReferenceScene& scene, const reference::ReferenceInputs& inputs,
-                     bool honour_stratiform, const std::vector<double>& band_edges);
+                     bool honour_stratiform, const std::vector<double>& band_edges, bool noise_tiling = false);
   double cloud_bound(int band, const glm::dvec3& a, const glm::dvec3& b) const override;
   // Largest R and B of the weather map that a bilinear sample on the segment (centred
   // frame) can read.
@@ -70,6 +71,7 @@ class SceneLocalMajorant final : public LocalCloudMajorant {
   std::vector<std::vector<double>> profile_;  // [band][layer]: height-profile bound
   std::vector<std::vector<double>> anvil_;    // [band][layer]: largest anvil weight (CloudField::anvil_weight_max)
   weather::NoiseMaxPyramid base_;
+  bool noise_tiling_ = false;
   glm::dvec2 polar_[2];  // largest R, B of the 4 rows next to the south / north pole and the pole
 };
 

@@ -25,9 +25,10 @@ TruthImage render_truth(const ViewRequest& view, const weather::Weather& weather
   const std::shared_ptr<const reference::ReferenceInputs> inputs =
       weather.layers.empty() ? no_inputs : reference::reference_inputs(settings.inputs, weather.map_seed);
   const reference::ReferenceScene scene = reference::make_reference_scene(view, weather, wind_anchor, settings.cloud_phase);
-  const reference::CloudField field(scene, *inputs, settings.honour_stratiform);
+  const reference::CloudField field(scene, *inputs, settings.honour_stratiform, false, settings.noise_tiling);
   const SceneMedium medium(scene, field);
-  const SceneLocalMajorant local(scene, *inputs, settings.honour_stratiform, scene_band_edges(scene));
+  const SceneLocalMajorant local(scene, *inputs, settings.honour_stratiform, scene_band_edges(scene),
+                                 settings.noise_tiling);
   const TruthWorld world = make_scene_world(scene, *inputs, settings.honour_stratiform, medium,
                                             scene.layers.empty() ? nullptr : &local);
   const glm::dvec3 camera(0.0, 0.0, scene.shell.radius_m + scene.shell.camera_alt_m);  // centred frame

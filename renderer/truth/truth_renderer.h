@@ -30,6 +30,7 @@ struct TruthSettings {
   TracerSettings tracer;
   reference::InputConfig inputs;  // the shared noise volumes and weather map (as the reference)
   bool honour_stratiform = true;  // the model's definition (reference::CloudField)
+  bool noise_tiling = false;      // the noise volumes' stochastic tiling (RendererConfig::noise_tiling)
   // The layers' phase function (RendererConfig::cloud_phase; model/mie_phase_table.h)
   model::CloudPhaseModel cloud_phase = model::CloudPhaseModel::kFit;
 };

@@ -31,7 +31,7 @@ struct RendererConfig {
   bool cumulus_domes = false;
   // Both noise volumes read through their stochastic tiling (weather/noise_tiling.h), so
   // the cloud field does not repeat with the noise's period. Off by default until it is
-  // cheap enough on llvmpipe: the march costs 1.6-2x (docs/MORPHOLOGY.md, "Noise tiling").
+  // cheap enough on llvmpipe: the march costs 1.4-1.7x (docs/MORPHOLOGY.md, "Noise tiling").
   bool noise_tiling = false;
   // The layers' phase function: the Jendersie & d'Eon fit (grey) or the droplets'
   // tabulated Mie phase function per wavelength, with the glory and the fogbow

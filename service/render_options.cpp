@@ -190,8 +190,8 @@ void add_quality_flags(CLI::App& cmd, RenderArgs& args, const RenderOptions& def
                "reference, not truth; slower on llvmpipe (docs/MORPHOLOGY.md); default off");
   cmd.add_flag("--noise-tiling", args.noise_tiling,
                "Read the cloud noise through its stochastic tiling, so the clouds do not repeat with the "
-               "noise's period (8-50 km by type, docs/MORPHOLOGY.md); every quality; the march costs "
-               "1.6-2x on llvmpipe; default off");
+               "noise's period (4-50 km by cloud type, docs/MORPHOLOGY.md); every quality; the march costs "
+               "1.4-1.7x on llvmpipe; default off");
   cmd.add_option("--cloud-phase", args.cloud_phase,
                  cloud_phase_help(defaults.cloud_phase, "the render waits for it (every quality, reference and truth too)"))
       ->type_name("MODEL");

@@ -231,7 +231,7 @@ void add_scene_flags(CLI::App& cmd, ServeCommandLine::Args& args, const ServeOpt
                "default off");
   cmd.add_flag("--noise-tiling", args.noise_tiling,
                "Read the cloud noise through its stochastic tiling, so the clouds do not repeat with the "
-               "noise's period (docs/MORPHOLOGY.md); the march costs 1.6-2x on llvmpipe; default off");
+               "noise's period (docs/MORPHOLOGY.md); the march costs 1.4-1.7x on llvmpipe; default off");
   cmd.add_option("--cloud-phase", args.cloud_phase,
                  cloud_phase_help(defaults.cloud_phase, "on a thread of its own, while the frames go on with the fit"))
       ->type_name("MODEL");

@@ -130,30 +130,22 @@ float base_noise_max_over(vec3 u_lo, vec3 u_hi) {
 #include "noise_tiling.glsl"
 #endif
 
-// The base-shape noise of layer L at s (base-noise periods, camera-relative as
-// CloudLayerGpu.base_noise_offset), and an upper bound of it over the box [s_lo, s_hi].
-float base_shape_at(CloudLayerGpu L, vec3 s) {
+// A noise volume at s (periods, camera-relative as CloudLayerGpu.*_noise_offset), through
+// its tiling where compiled with it (the camera's cell, the lattices' seeds, the mean).
+float noise_at(sampler3D volume, vec3 s, ivec3 camera_cell, uvec4 seeds, float mean) {
 #ifdef CLOUDSVC_NOISE_TILING
-  return tiled_noise(base_noise, s, L.base_noise_cell, L.base_tiling_seeds, frame.base_noise_mean);
+  return tiled_noise(volume, s, camera_cell, seeds, mean);
 #else
-  return textureLod(base_noise, s, 0.0).r;
+  return textureLod(volume, s, 0.0).r;
 #endif
 }
 
+// An upper bound of layer L's base-shape noise over the box [s_lo, s_hi].
 float base_shape_max_over(CloudLayerGpu L, vec3 s_lo, vec3 s_hi) {
 #ifdef CLOUDSVC_NOISE_TILING
   return tiled_base_noise_max_over(L, s_lo, s_hi);
 #else
   return base_noise_max_over(s_lo, s_hi);
-#endif
-}
-
-// The detail noise of layer L at s (detail-noise periods, camera-relative).
-float detail_shape_at(CloudLayerGpu L, vec3 s) {
-#ifdef CLOUDSVC_NOISE_TILING
-  return tiled_noise(detail_noise, s, L.detail_noise_cell, L.detail_tiling_seeds, frame.detail_noise_mean);
-#else
-  return textureLod(detail_noise, s, 0.0).r;
 #endif
 }
 
@@ -230,7 +222,8 @@ float cloud_extinction_in(int li, vec3 p, float alt, int detail, vec4 w, out flo
 #endif
   if (profile <= 0.0 && !dome) return 0.0;
   vec3 p_field = field_point(L, p, alt);
-  float shape = base_shape_at(L, p_field * L.base_noise_frequency + L.base_noise_offset);
+  float shape = noise_at(base_noise, p_field * L.base_noise_frequency + L.base_noise_offset, L.base_noise_cell,
+                         L.base_tiling_seeds, frame.base_noise_mean);
   float d;
   float anvil_factor = 1.0;
 #ifdef CLOUDSVC_CUMULUS_DOMES
@@ -254,7 +247,8 @@ float cloud_extinction_in(int li, vec3 p, float alt, int detail, vec4 w, out flo
   }
   if (d <= 0.0) return 0.0;
   if (detail != DETAIL_NONE && d < 1.0) {
-    float dn = detail == DETAIL_SAMPLED ? detail_shape_at(L, p_field * L.detail_noise_frequency + L.detail_noise_offset)
+    float dn = detail == DETAIL_SAMPLED ? noise_at(detail_noise, p_field * L.detail_noise_frequency + L.detail_noise_offset,
+                                                   L.detail_noise_cell, L.detail_tiling_seeds, frame.detail_noise_mean)
                                         : frame.detail_noise_mean;
     d = saturate(remap(d, dn * L.detail_erosion, 1.0, 0.0, 1.0));
   }

@@ -12,6 +12,7 @@ PACKAGES=(
   libgtest-dev libgmock-dev
   libcli11-dev nlohmann-json3-dev libspdlog-dev libfmt-dev
   libflatbuffers-dev flatbuffers-compiler libasio-dev
+  libeccodes-dev
   xvfb xauth
 )
 

@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
       case cloudsvc::ParsedCommand::Kind::Render: return cloudsvc::run_render(cmd.render);
       case cloudsvc::ParsedCommand::Kind::Demo: return cloudsvc::run_demo(cmd.demo);
       case cloudsvc::ParsedCommand::Kind::Serve: return cloudsvc::run_serve(cmd.serve);
+      case cloudsvc::ParsedCommand::Kind::WeatherInfo: return cloudsvc::run_weather_info(cmd.weather_info);
       case cloudsvc::ParsedCommand::Kind::None: break;
     }
   } catch (const std::exception& e) {

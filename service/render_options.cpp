@@ -45,6 +45,7 @@ using cli::parse_time;
 using cli::Range;
 using cli::resolve_weather;
 using cli::ServeCommandLine;
+using cli::WeatherInfoCommandLine;
 using cli::size_help;
 using cli::weather_help;
 
@@ -237,7 +238,8 @@ void configure_app(CLI::App& app, RenderArgs& render, DemoArgs& demo) {
       "Angles are degrees, altitudes metres above the WGS84 ellipsoid, times UTC.");
   app.require_subcommand(0, 1);
   app.footer(
-      "Run `cloudsvc render --help`, `cloudsvc demo --help` or `cloudsvc serve --help` for "
+      "Run `cloudsvc render --help`, `cloudsvc demo --help`, `cloudsvc serve --help` or "
+      "`cloudsvc weather-info --help` for "
       "the flags of a sub-command.\nExit codes: 0 ok (serve: clean shutdown on SIGINT or "
       "SIGTERM), 1 runtime failure (e.g. no GL context), 2 bad input.");
   add_render_command(app, render);
@@ -356,7 +358,7 @@ DemoOptions validate_demo(const DemoArgs& args) {
 std::string command_prefix(int argc, const char* const* argv) {
   if (argc > 1 && argv[1] != nullptr) {
     const std::string_view first = argv[1];
-    if (first == "render" || first == "demo" || first == "serve") {
+    if (first == "render" || first == "demo" || first == "serve" || first == "weather-info") {
       return std::string(kProgram) + " " + argv[1];
     }
   }
@@ -381,7 +383,7 @@ std::vector<std::string> unmatched_arguments(const CLI::App& app) {
 std::string unmatched_argument_text(const CLI::App& app, const std::string& argument) {
   if (argument.rfind("-", 0) == 0) return argument + ": unknown flag";
   if (app.get_subcommands().empty()) {
-    return argument + ": unknown sub-command (expected render, demo or serve)";
+    return argument + ": unknown sub-command (expected render, demo, serve or weather-info)";
   }
   return argument + ": unexpected argument (flags take the form --name VALUE)";
 }
@@ -421,7 +423,7 @@ ParsedCommand report_help(ParsedCommand result, const CLI::App& app) {
 // No sub-command: the overview on stderr, then the error line.
 ParsedCommand report_missing_command(ParsedCommand result, const CLI::App& app) {
   result.exit_code = kExitBadInput;
-  result.error = std::string(kProgram) + ": missing sub-command (expected render, demo or serve)";
+  result.error = std::string(kProgram) + ": missing sub-command (expected render, demo, serve or weather-info)";
   std::cerr << app.help() << result.error << '\n' << std::flush;
   return result;
 }
@@ -436,6 +438,7 @@ ParsedCommand parse_command_line(int argc, const char* const* argv) {
   DemoArgs demo_args;
   configure_app(app, render_args, demo_args);
   const ServeCommandLine serve_args(app);
+  const WeatherInfoCommandLine weather_info_args(app);
   try {
     if (argc > 0) app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {
@@ -455,6 +458,9 @@ ParsedCommand parse_command_line(int argc, const char* const* argv) {
     } else if (serve_args.parsed()) {
       result.kind = ParsedCommand::Kind::Serve;
       result.serve = serve_args.validate();
+    } else if (weather_info_args.parsed()) {
+      result.kind = ParsedCommand::Kind::WeatherInfo;
+      result.weather_info = weather_info_args.validate();
     } else {
       return report_missing_command(std::move(result), app);
     }

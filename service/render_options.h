@@ -10,6 +10,7 @@
 #include "geodesy/geodetic.h"
 #include "renderer/model/mie_phase_table.h"
 #include "service/serve_options.h"
+#include "service/weather_info_options.h"
 #include "weather/cloud_layer.h"
 
 namespace cloudsvc {
@@ -55,15 +56,16 @@ struct DemoOptions {
 // Result of parsing a command line. exit_code >= 0 means: stop and return it (help was
 // printed: 0; an error was printed to stderr: 2).
 struct ParsedCommand {
-  enum class Kind { None, Render, Demo, Serve } kind = Kind::None;
+  enum class Kind { None, Render, Demo, Serve, WeatherInfo } kind = Kind::None;
   RenderOptions render;
   DemoOptions demo;
   ServeOptions serve;
+  WeatherInfoOptions weather_info;
   int exit_code = -1;
   std::string error;  // the one-line message printed, if exit_code == 2
 };
 
-// argv[0] is the program name; argv[1] the sub-command ("render", "demo", "serve").
+// argv[0] is the program name; argv[1] the sub-command ("render", "demo", "serve", "weather-info").
 ParsedCommand parse_command_line(int argc, const char* const* argv);
 
 }  // namespace cloudsvc

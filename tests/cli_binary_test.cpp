@@ -16,39 +16,15 @@
 #include <string>
 #include <vector>
 
+#include "cloudsvc_run.h"
 #include "service/demo_scenes.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-struct RunResult {
-  int exit_code = -1;
-  std::string out, err;
-};
-
-std::string quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += (c == '\'') ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-RunResult run_cloudsvc(const std::vector<std::string>& args, const fs::path& dir) {
-  std::string cmd = quote(std::string(CLOUDSVC_BIN_DIR) + "/cloudsvc");
-  for (const auto& a : args) cmd += " " + quote(a);
-  const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
-  cmd += " >" + quote(out.string()) + " 2>" + quote(err.string());
-  const int status = std::system(cmd.c_str());
-  RunResult r;
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  auto slurp = [](const fs::path& p) {
-    std::ifstream f(p);
-    return std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
-  };
-  r.out = slurp(out);
-  r.err = slurp(err);
-  return r;
-}
+using cloudsvc::test::run_cloudsvc;
+using cloudsvc::test::RunResult;
 
 class CliBinary : public ::testing::Test {
  protected:
@@ -260,9 +236,9 @@ TEST_F(CliBinary, HelpDocumentsUnits) {
 // --window under a virtual X server, when xvfb-run is installed (scripts/install-deps.sh does).
 TEST_F(CliBinary, WindowModeRendersUnderXvfb) {
   if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run not installed";
-  const std::string cmd = "xvfb-run -a " + quote(std::string(CLOUDSVC_BIN_DIR) + "/cloudsvc") +
+  const std::string cmd = "xvfb-run -a " + cloudsvc::test::shell_quote(std::string(CLOUDSVC_BIN_DIR) + "/cloudsvc") +
                           " render --window --window-frames 2 --size 64x36 --weather scattered-cumulus >" +
-                          quote((dir_ / "w.txt").string()) + " 2>&1";
+                          cloudsvc::test::shell_quote((dir_ / "w.txt").string()) + " 2>&1";
   const int status = std::system(cmd.c_str());
   std::ifstream f(dir_ / "w.txt");
   const std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());

@@ -188,10 +188,10 @@ TEST_F(CliServeOptionsTest, TopLevelHelpAndMessagesListServe) {
   EXPECT_NE(help.out.find("cloudsvc serve --help"), std::string::npos) << help.out;
 
   EXPECT_EQ(run({"bogus"}).cmd.error,
-            "cloudsvc: bogus: unknown sub-command (expected render, demo or serve)");
+            "cloudsvc: bogus: unknown sub-command (expected render, demo, serve or weather-info)");
   const Outcome none = run({});
   EXPECT_EQ(none.cmd.exit_code, 2);
-  EXPECT_EQ(none.cmd.error, "cloudsvc: missing sub-command (expected render, demo or serve)");
+  EXPECT_EQ(none.cmd.error, "cloudsvc: missing sub-command (expected render, demo, serve or weather-info)");
   EXPECT_NE(none.err.find("serve"), std::string::npos);
 }
 

@@ -1,0 +1,147 @@
+// Forecast cloud bands -> renderer layers (cloud_column.h).
+#include "weather/cloud_column.h"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "weather/standard_atmosphere.h"
+
+namespace cloudsvc::weather {
+
+namespace {
+
+bool given(double v) { return std::isfinite(v); }
+
+// A band's layer of type t, or nullopt when the band is clear. Missing altitudes come from
+// the type's defaults, keeping its default thickness next to the altitude that is given.
+std::optional<CloudLayer> band_layer(CloudType t, const BandValues& band) {
+  if (!given(band.cover) || band.cover < kLeastLayerCover) return std::nullopt;
+  CloudLayer layer = default_layer(t);
+  const double thickness = layer.top_m - layer.base_m;
+  layer.coverage = std::clamp(band.cover, 0.0, 1.0);
+  if (given(band.base_m) && given(band.top_m)) {
+    layer.base_m = std::min(band.base_m, band.top_m);
+    layer.top_m = std::max(band.base_m, band.top_m);
+  } else if (given(band.base_m)) {
+    layer.base_m = band.base_m;
+    layer.top_m = band.base_m + thickness;
+  } else if (given(band.top_m)) {
+    layer.top_m = band.top_m;
+    layer.base_m = band.top_m - thickness;
+  }
+  layer.top_m = std::max(layer.top_m, layer.base_m + kLeastBandThickness_m);
+  layer.base_m = std::max(layer.base_m, kMinLayerBase_m);
+  layer.top_m = std::min(layer.top_m, kMaxLayerTop_m);
+  if (layer.top_m - layer.base_m < kMinLayerThickness_m) return std::nullopt;
+  return layer;
+}
+
+// Places `layer` in the largest part of its altitude range that no placed layer occupies;
+// drops it when that part is thinner than kMinLayerThickness_m.
+void place_apart(std::vector<CloudLayer>& placed, CloudLayer layer) {
+  std::vector<std::pair<double, double>> taken;
+  for (const CloudLayer& p : placed) taken.emplace_back(p.base_m, p.top_m);
+  std::sort(taken.begin(), taken.end());
+  double best_base = 0.0, best_top = 0.0, cursor = layer.base_m;
+  const auto consider = [&](double lo, double hi) {
+    if (hi - lo > best_top - best_base) best_base = lo, best_top = hi;
+  };
+  for (const auto& [lo, hi] : taken) {
+    if (hi <= cursor) continue;
+    if (lo >= layer.top_m) break;
+    consider(cursor, std::min(lo, layer.top_m));
+    cursor = std::max(cursor, hi);
+  }
+  if (cursor < layer.top_m) consider(cursor, layer.top_m);
+  if (best_top - best_base < kMinLayerThickness_m) return;
+  layer.base_m = best_base;
+  layer.top_m = best_top;
+  placed.push_back(layer);
+}
+
+}  // namespace
+
+double low_middle_boundary_m() { return standard_pressure_altitude_m(0.8 * kSeaLevelPressure_Pa); }
+double middle_high_boundary_m() { return standard_pressure_altitude_m(0.45 * kSeaLevelPressure_Pa); }
+
+void fill_bands_from_profile(CloudColumn& column, std::vector<ProfileSample> profile) {
+  profile.erase(std::remove_if(profile.begin(), profile.end(),
+                               [](const ProfileSample& s) { return !given(s.altitude_m) || !given(s.cover); }),
+                profile.end());
+  if (profile.empty()) return;
+  std::sort(profile.begin(), profile.end(), [](const ProfileSample& a, const ProfileSample& b) { return a.altitude_m < b.altitude_m; });
+  const double bounds[4] = {-1e9, low_middle_boundary_m(), middle_high_boundary_m(), 1e9};
+  const CloudBand bands[3] = {CloudBand::Low, CloudBand::Middle, CloudBand::High};
+  for (int b = 0; b < 3; ++b) {
+    BandValues& band = column[bands[b]];
+    if (given(band.cover)) continue;  // the forecast's own band cover comes first
+    double cover = 0.0;
+    int lowest = -1, highest = -1;
+    for (int k = 0; k < static_cast<int>(profile.size()); ++k) {
+      const ProfileSample& s = profile[k];
+      if (s.altitude_m < bounds[b] || s.altitude_m >= bounds[b + 1]) continue;
+      cover = std::max(cover, std::clamp(s.cover, 0.0, 1.0));
+      if (s.cover >= kProfileCloudyCover) {
+        if (lowest < 0) lowest = k;
+        highest = k;
+      }
+    }
+    band.cover = cover;
+    if (lowest < 0) continue;
+    const double n = static_cast<double>(profile.size());
+    const double below = lowest > 0 ? 0.5 * (profile[lowest].altitude_m - profile[lowest - 1].altitude_m) : 0.0;
+    const double above = highest + 1 < n ? 0.5 * (profile[highest + 1].altitude_m - profile[highest].altitude_m) : 0.0;
+    band.base_m = profile[lowest].altitude_m - below;
+    band.top_m = profile[highest].altitude_m + above;
+  }
+}
+
+std::vector<CloudLayer> layers_from_column(const CloudColumn& column) {
+  const BandValues& conv = column[CloudBand::Convective];
+  const double conv_cover = given(conv.cover) ? conv.cover : 0.0;
+  const bool convective = conv_cover >= kLeastLayerCover;
+  const bool deep = convective && given(conv.top_m) && conv.top_m >= kDeepConvectionTop_m;
+  const bool shallow = convective && !deep;
+
+  // Low cloud: the low band, else the boundary-layer band, else (when the forecast gives
+  // no middle or high band either) the total cloud.
+  BandValues low = column[CloudBand::Low];
+  if (!given(low.cover)) low = column[CloudBand::BoundaryLayer];
+  const bool banded = given(column[CloudBand::Middle].cover) || given(column[CloudBand::High].cover);
+  if (!given(low.cover) && !banded) low.cover = column[CloudBand::Total].cover;
+  if (!given(low.base_m)) low.base_m = column[CloudBand::Total].base_m;  // e.g. cloud base height
+  // Shallow convection makes the low cloud cumulus when it is at least half of it (else a
+  // deck with embedded cumuli: stratocumulus), and at least as wide as the convective cloud.
+  const bool cumuliform = shallow && conv_cover >= kCumulusShareOfLowCloud * (given(low.cover) ? low.cover : 0.0);
+  if (shallow) {
+    low.cover = std::max(given(low.cover) ? low.cover : 0.0, conv_cover);
+    if (!given(low.base_m)) low.base_m = conv.base_m;
+    if (!given(low.top_m)) low.top_m = conv.top_m;
+  }
+
+  const BandValues& middle = column[CloudBand::Middle];
+  const BandValues& high = column[CloudBand::High];
+  const auto sheet_from = [](const BandValues& b, CloudType cellular, CloudType sheet) {
+    return given(b.cover) && b.cover >= kSheetCover ? sheet : cellular;
+  };
+  std::vector<CloudLayer> candidates;
+  const auto add = [&](std::optional<CloudLayer> layer) {
+    if (layer) candidates.push_back(*layer);
+  };
+  if (deep) add(band_layer(CloudType::Cumulonimbus, conv));
+  add(band_layer(cumuliform ? CloudType::Cumulus : CloudType::Stratocumulus, low));
+  add(band_layer(sheet_from(middle, CloudType::Altocumulus, CloudType::Altostratus), middle));
+  add(band_layer(sheet_from(high, CloudType::Cirrus, CloudType::Cirrostratus), high));
+  // Where layers overlap, the one covering more of the sky keeps its altitudes (ties: the
+  // order above) and the others move into the free part of their range.
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [](const CloudLayer& a, const CloudLayer& b) { return a.coverage > b.coverage; });
+  std::vector<CloudLayer> placed;
+  for (const CloudLayer& layer : candidates)
+    if (static_cast<int>(placed.size()) < kMaxCloudLayers) place_apart(placed, layer);
+  std::sort(placed.begin(), placed.end(), [](const CloudLayer& a, const CloudLayer& b) { return a.base_m < b.base_m; });
+  return placed;
+}
+
+}  // namespace cloudsvc::weather

@@ -18,12 +18,14 @@ WeatherInfoCommandLine::WeatherInfoCommandLine(CLI::App& app) : args_(std::make_
   a.command = app.add_subcommand("weather-info",
                                  "Print the cloud layers the renderer derives from weather files at one point and time");
   a.command->add_option("files", a.files,
-                        "GRIB2 forecast files (.grib2, .grb2, .grib, .grb; docs/WEATHER.md, \"GRIB2 forecasts\")")
+                        "GRIB2 forecasts (.grib2, .grb2, .grib, .grb) or METAR reports (.metar, .txt), all of one "
+                        "kind (docs/WEATHER.md)")
       ->required()
       ->type_name("FILE...");
   a.command->add_option("--at", a.at,
                         "Where and when: LAT,LON in degrees (latitude [-90, 90], longitude [-180, 360]) and optionally "
-                        ",TIME in UTC ISO 8601; without TIME the first forecast step's validity time")
+                        ",TIME in UTC ISO 8601; without TIME the first forecast step or report (METAR reports are dated "
+                        "by TIME, else by the current date)")
       ->required()
       ->type_name("LAT,LON[,TIME]");
   a.command->footer(

@@ -15,10 +15,10 @@ class App;
 namespace cloudsvc {
 
 struct WeatherInfoOptions {
-  std::vector<std::string> files;  // GRIB2 files (docs/WEATHER.md, "GRIB2 forecasts")
+  std::vector<std::string> files;  // GRIB2 or METAR files (docs/WEATHER.md)
   double lat_deg = 0.0;            // --at LAT,LON[,TIME]
   double lon_deg = 0.0;
-  std::optional<double> utc_s;     // absent: the first forecast step's validity time
+  std::optional<double> utc_s;     // absent: the first step or report; METAR dates: now
 };
 
 namespace cli {

@@ -73,6 +73,22 @@ TEST(WeatherInfo, ReadsTheRealGfsForecast) {
   EXPECT_EQ(j["layers"][1]["type"], "cirrostratus");
 }
 
+TEST(WeatherInfo, ReadsMetarReports) {
+  GribTempDir dir;
+  const fs::path file = dir.file("reports.txt");
+  // As published (EFJY Jyvaskyla, 139 m): scattered cloud at 600 ft, overcast cumulonimbus at 2800 ft.
+  std::ofstream(file) << "2026/11/09 21:20\nEFJY 092120Z AUTO 05003KT 9999 -SHRA VCSH SCT006 OVC028CB 13/13 Q1014\n";
+  const RunResult r = run_cloudsvc({"weather-info", file.string(), "--at", "62.3995,25.6783"}, dir.file(""));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["time"], "2026-11-09T21:20:00Z");
+  ASSERT_EQ(j["layers"].size(), 2u) << r.out;
+  EXPECT_EQ(j["layers"][0]["type"], "stratus");  // 183 m above the field
+  EXPECT_NEAR(j["layers"][0]["coverage"].get<double>(), 3.5 / 8, 1e-9);
+  EXPECT_EQ(j["layers"][1]["type"], "cumulonimbus");
+  EXPECT_NEAR(j["layers"][1]["coverage"].get<double>(), 1.0, 1e-9);
+}
+
 TEST(WeatherInfo, BadInputGivesOneLineAndExitTwo) {
   GribTempDir dir;
   const fs::path text = dir.file("report.grib2");
@@ -81,6 +97,8 @@ TEST(WeatherInfo, BadInputGivesOneLineAndExitTwo) {
   std::ofstream(json) << "{}\n";
   const fs::path good = dir.file("good.grib2");
   append_field(good, 6, 1, 214, 30.0, 6);
+  const fs::path metar = dir.file("reports.metar");
+  std::ofstream(metar) << "METAR LSZH 051150Z 24008KT 9999 BKN030 05/01 Q1021=\n";
   struct Case {
     std::vector<std::string> args;
     std::string expected;  // the whole stderr line
@@ -90,7 +108,11 @@ TEST(WeatherInfo, BadInputGivesOneLineAndExitTwo) {
             "cloudsvc weather-info: " + text.string() + ": not a GRIB file (no GRIB message found)"},
            {{"weather-info", json.string(), "--at", "1,2"},
             "cloudsvc weather-info: " + json.string() +
-                ": not a weather file this command reads (expected .grib2, .grb2, .grib or .grb)"},
+                ": not a forecast file (expected .grib2, .grb2, .grib or .grb for GRIB2, .metar or .txt for METAR "
+                "reports)"},
+           {{"weather-info", good.string(), metar.string(), "--at", "1,2"},
+            "cloudsvc weather-info: " + metar.string() + ": GRIB2 and METAR files cannot be mixed (" + good.string() +
+                " is GRIB2)"},
            {{"weather-info", dir.file("none.grib2").string(), "--at", "1,2"},
             "cloudsvc weather-info: " + dir.file("none.grib2").string() + ": cannot open: No such file or directory"},
            {{"weather-info", good.string(), "--at", "95,2"},

@@ -130,7 +130,9 @@ std::vector<CloudLayer> layers_from_column(const CloudColumn& column) {
     if (layer) candidates.push_back(*layer);
   };
   if (deep) add(band_layer(CloudType::Cumulonimbus, conv));
-  add(band_layer(cumuliform ? CloudType::Cumulus : CloudType::Stratocumulus, low));
+  const bool near_ground = given(column.ground_m) && given(low.base_m) &&
+                           low.base_m - column.ground_m < kStratusBaseAboveGround_m;
+  add(band_layer(cumuliform ? CloudType::Cumulus : near_ground ? CloudType::Stratus : CloudType::Stratocumulus, low));
   add(band_layer(sheet_from(middle, CloudType::Altocumulus, CloudType::Altostratus), middle));
   add(band_layer(sheet_from(high, CloudType::Cirrus, CloudType::Cirrostratus), high));
   // Where layers overlap, the one covering more of the sky keeps its altitudes (ties: the

@@ -1,7 +1,9 @@
 // A forecast's clouds over one point at one time, and the cloud layers the renderer draws
 // for them. The rules are in docs/WEATHER.md, "GRIB2 forecasts"; in short:
 //   - low band -> stratocumulus, or cumulus where shallow convection (convective cloud
-//     whose top is below kDeepConvectionTop_m) makes up at least kCumulusShareOfLowCloud of it;
+//     whose top is below kDeepConvectionTop_m) makes up at least kCumulusShareOfLowCloud of it,
+//     or stratus when its base is within kStratusBaseAboveGround_m of the ground (when the
+//     ground's height is known);
 //   - convective cloud reaching kDeepConvectionTop_m or higher -> cumulonimbus;
 //   - middle band -> altocumulus, or altostratus from cover kSheetCover (broken and
 //     overcast middle cloud is a sheet);
@@ -40,6 +42,7 @@ struct ProfileSample {
 inline constexpr int kColumnBands = 6;
 struct CloudColumn {
   std::array<BandValues, kColumnBands> bands;
+  double ground_m = std::numeric_limits<double>::quiet_NaN();  // the ground's height there, when known
   BandValues& operator[](CloudBand b) { return bands[static_cast<int>(b)]; }
   const BandValues& operator[](CloudBand b) const { return bands[static_cast<int>(b)]; }
 };
@@ -66,6 +69,10 @@ inline constexpr double kDeepConvectionTop_m = 6000.0;
 inline constexpr double kCumulusShareOfLowCloud = 0.5;
 // Middle and high cloud from this cover on is a sheet (altostratus, cirrostratus).
 inline constexpr double kSheetCover = 0.5;
+// Low cloud without convection whose base is this close to the ground is stratus: stratus
+// bases lie between the surface and about 600 m, mostly under 300 m (WMO International Cloud
+// Atlas, 2017, "Stratus"); stratocumulus bases are higher.
+inline constexpr double kStratusBaseAboveGround_m = 300.0;
 // A band below this cover is clear (no layer).
 inline constexpr double kLeastLayerCover = 0.01;
 // Thinnest layer made from a band: a band whose top is less than this above its base (one

@@ -72,6 +72,7 @@ std::vector<double> GriddedWeather::valid_times() const {
 CloudColumn GriddedWeather::column_in_step(const Step& step, double lat, double lon) const {
   CloudColumn column;
   const double ground_m = orography_ ? orography_->field.at(lat, lon) : std::nan("");
+  column.ground_m = ground_m;
   const auto above_sea = [&](const GribCloudMessage& m, double v) {
     return m.above_ground && given(ground_m) ? v + ground_m : v;
   };
@@ -116,6 +117,7 @@ CloudColumn GriddedWeather::column_at(double lat, double lon, double utc_s) cons
   const double w = (utc_s - a.valid_utc_s) / (b.valid_utc_s - a.valid_utc_s);
   const CloudColumn ca = column_in_step(a, lat, lon), cb = column_in_step(b, lat, lon);
   CloudColumn out;
+  out.ground_m = ca.ground_m;
   for (int i = 0; i < kColumnBands; ++i) {
     out.bands[i].cover = mix_given(ca.bands[i].cover, cb.bands[i].cover, w);
     out.bands[i].base_m = mix_given(ca.bands[i].base_m, cb.bands[i].base_m, w);

@@ -8,12 +8,12 @@
 #include <string>
 #include <vector>
 
-#include "weather/cloud_column.h"
+#include "weather/forecast_weather.h"
 #include "weather/grib_reader.h"
 
 namespace cloudsvc::weather {
 
-class GriddedWeather {
+class GriddedWeather : public ForecastWeather {
  public:
   // Reads GRIB2 files (WeatherFileError naming the file on any problem).
   static GriddedWeather load_grib(const std::vector<std::string>& paths);
@@ -21,15 +21,10 @@ class GriddedWeather {
   static GriddedWeather from_messages(std::vector<GribCloudMessage> messages, std::string name);
 
   // The bands over a point at a time (UTC seconds), blended between the steps around it.
-  CloudColumn column_at(double lat_deg, double lon_deg, double utc_s) const;
-  // The renderer's layers there (layers_from_column).
-  std::vector<CloudLayer> layers_at(double lat_deg, double lon_deg, double utc_s) const {
-    return layers_from_column(column_at(lat_deg, lon_deg, utc_s));
-  }
-
-  // Validity times of the steps, ascending (UTC seconds); never empty.
-  std::vector<double> valid_times() const;
-  const std::string& name() const { return name_; }
+  CloudColumn column_at(double lat_deg, double lon_deg, double utc_s) const override;
+  // Validity times of the steps, ascending (UTC seconds).
+  std::vector<double> valid_times() const override;
+  const std::string& name() const override { return name_; }
 
  private:
   struct Step {

@@ -1,0 +1,209 @@
+// METAR / SPECI reports (weather/metar.h), their aerodromes (aerodrome_table.h) and the
+// cloud bands and layers they give (station_weather.h). Reports marked "as published" are
+// reports of real aerodromes collected in the test suites of the npm packages
+// metar-taf-parser 9.1.3 and aewx-metar-parser 3.0.2; the mountain aerodromes' reports are
+// composed in the published format (no archive of real ones is reachable offline).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+
+#include "geodesy/utc_time.h"
+#include "grib_test_support.h"
+#include "weather/forecast_weather.h"
+#include "weather/station_weather.h"
+#include "weather/weather_json.h"
+
+namespace {
+
+using namespace cloudsvc::weather;
+using cloudsvc::test::GribTempDir;
+
+constexpr double kFt = 0.3048;
+double utc(const char* iso) { return cloudsvc::geo::parse_utc_iso8601(iso).value(); }
+const double kReference = utc("2026-12-05T12:00:00Z");
+
+TEST(AerodromeTable, HoldsSeaLevelAndMountainAerodromes) {
+  EXPECT_GT(aerodrome_count(), 4000u);
+  const Aerodrome* lszh = find_aerodrome("LSZH");
+  ASSERT_NE(lszh, nullptr);
+  EXPECT_NEAR(lszh->lat_deg, 47.458, 1e-3);
+  EXPECT_NEAR(lszh->lon_deg, 8.548, 1e-3);
+  EXPECT_NEAR(lszh->elevation_m, 1417 * kFt, 1e-6);
+  const Aerodrome* sllp = find_aerodrome("SLLP");  // La Paz / El Alto, 4061 m
+  ASSERT_NE(sllp, nullptr);
+  EXPECT_NEAR(sllp->elevation_m, 13355 * kFt, 1e-6);
+  const Aerodrome* eham = find_aerodrome("EHAM");  // Schiphol, below sea level
+  ASSERT_NE(eham, nullptr);
+  EXPECT_LT(eham->elevation_m, 0.0);
+  EXPECT_EQ(find_aerodrome("ZZZZ"), nullptr);
+  EXPECT_EQ(find_aerodrome("lszh"), nullptr);
+}
+
+TEST(Metar, ReadsTheSkyGroupsOfPublishedReports) {
+  // As published: KSFO, three layers in rain.
+  MetarReport r = parse_metar("KSFO 070121Z 19023KT 1 1/2SM R28R/6000VP6000FT -RA BKN004 BKN013 OVC035 15/12 A2970 RMK AO2 T01500122 PNO $", kReference);
+  EXPECT_EQ(r.station, "KSFO");
+  // Day 7 lies more than a day after the reference (December 5th): the 7th of November.
+  EXPECT_EQ(cloudsvc::geo::format_utc_iso8601(r.utc_s), "2026-11-07T01:21:00Z");
+  ASSERT_EQ(r.sky.size(), 3u);
+  EXPECT_EQ(r.sky[0].amount, SkyGroup::Amount::Broken);
+  EXPECT_DOUBLE_EQ(r.sky[0].height_ft, 400.0);
+  EXPECT_EQ(r.sky[2].amount, SkyGroup::Amount::Overcast);
+  EXPECT_DOUBLE_EQ(r.sky[2].height_ft, 3500.0);
+
+  // As published: cumulonimbus and towering cumulus, trend groups not read.
+  r = parse_metar("ULLI 172030Z 23004MPS 9999 -SHRA SCT022CB BKN043 OVC066 13/10 Q1010 NOSIG", kReference);
+  ASSERT_EQ(r.sky.size(), 3u);
+  EXPECT_EQ(r.sky[0].cloud, SkyGroup::Cloud::Cumulonimbus);
+  EXPECT_EQ(cloudsvc::geo::format_utc_iso8601(r.utc_s), "2026-11-17T20:30:00Z");  // day 17: last month
+  EXPECT_EQ(cloudsvc::geo::format_utc_iso8601(parse_metar("EHAM 060125Z CAVOK", kReference).utc_s), "2026-12-06T01:25:00Z");  // within a day: this month
+  r = parse_metar("EDDS 081620Z 29010KT 9999 FEW040TCU 09/M03 Q1012 NOSIG", kReference);
+  ASSERT_EQ(r.sky.size(), 1u);
+  EXPECT_EQ(r.sky[0].cloud, SkyGroup::Cloud::ToweringCumulus);
+  r = parse_metar("EDDH 041050Z 29013KT 6000 SCT006 BKN009 04/03 Q1028 TEMPO BKN012", kReference);
+  EXPECT_EQ(r.sky.size(), 2u);  // TEMPO BKN012 is a forecast
+
+  // As published: CAVOK, NSC, SKC, CLR; vertical visibility; METAR / SPECI prefixes and "=".
+  for (const char* clear : {"EHAM 100125Z 33004KT CAVOK M00/M01 Q1026 NOSIG", "EFKA 181750Z AUTO 30007KT //// NSC 16/04 Q1015",
+                            "EFKI 172020Z AUTO 00000KT 2600 BR SKC 09/09 Q1006", "KEYW 041053Z AUTO 13005KT 10SM CLR 24/22 A3000 RMK AO2 SLP159 T02440222"}) {
+    r = parse_metar(clear, kReference);
+    EXPECT_TRUE(r.clear) << clear;
+    EXPECT_TRUE(r.sky.empty()) << clear;
+  }
+  r = parse_metar("EFVR 171950Z AUTO 27006KT 220V310 9999 VV060 13/12 Q1006", kReference);
+  ASSERT_EQ(r.sky.size(), 1u);
+  EXPECT_EQ(r.sky[0].amount, SkyGroup::Amount::Obscured);
+  EXPECT_DOUBLE_EQ(r.sky[0].height_ft, 6000.0);
+  r = parse_metar("SPECI EFJY 171750Z AUTO 29007KT CAVOK 15/12 Q1006", kReference);
+  EXPECT_TRUE(r.speci);
+  r = parse_metar("METAR KTTN 051853Z 04011KT 1/2SM VCTS SN FZFG BKN003 OVC010 M02/M02 A3006 RMK AO2 TSB40 SLP176 P0002 T10171017=", kReference);
+  EXPECT_EQ(r.sky.size(), 2u);
+  r = parse_metar("EFJY 092120Z AUTO 05003KT 9999 -SHRA VCSH SCT006 OVC028CB 13/13 Q1014", kReference);
+  EXPECT_EQ(r.sky[1].cloud, SkyGroup::Cloud::Cumulonimbus);
+  r = parse_metar("LSZH 051150Z NIL=", kReference);
+  EXPECT_TRUE(r.nil);
+}
+
+TEST(Metar, MalformedGroupsAreQuoted) {
+  const auto error = [](const char* report) {
+    try {
+      parse_metar(report, utc("2026-12-05T12:00:00Z"));
+    } catch (const MetarError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_EQ(error("LSZH 051150Z 24008KT 9999 BKN25 05/01 Q1021"),
+            "malformed sky group 'BKN25' (expected FEW, SCT, BKN or OVC with a 3-digit height in hundreds of feet "
+            "and optionally CB or TCU, e.g. BKN025 or SCT040CB)");
+  EXPECT_EQ(error("LSZH 051150Z 24008KT 9999 SCT030XX 05/01 Q1021").substr(0, 30), "malformed sky group 'SCT030XX'");
+  EXPECT_EQ(error("LSZH 051150Z VV1"), "malformed vertical visibility group 'VV1' (expected VV and a 3-digit height in hundreds of feet, e.g. VV002)");
+  EXPECT_EQ(error("LSZH 0511Z 24008KT"), "malformed time group '0511Z' (expected DDHHMMZ, e.g. 051150Z)");
+  EXPECT_EQ(error("LSZH 052450Z 24008KT"), "time group '052450Z' out of range (day 01-31, hour 00-23, minute 00-59)");
+  EXPECT_EQ(error("lszh 051150Z"), "malformed station code 'lszh' (expected 4 letters, e.g. LSZH)");
+  EXPECT_EQ(error("METAR"), "empty report");
+}
+
+TEST(Metar, LayersAboveTheAerodromeAtSeaLevelAndInTheMountains) {
+  // Sea level (EHAM, -3 m): BKN at 1200 ft -> a low deck 366 m above the field.
+  const Aerodrome& eham = *find_aerodrome("EHAM");
+  std::vector<CloudLayer> l = layers_from_column(column_of_report(parse_metar("EHAM 051155Z 22012KT 9999 BKN012 08/06 Q1011", kReference), eham));
+  ASSERT_EQ(l.size(), 1u);
+  EXPECT_EQ(l[0].type, CloudType::Stratocumulus);
+  EXPECT_NEAR(l[0].base_m, eham.elevation_m + 1200 * kFt, 1e-6);
+  EXPECT_NEAR(l[0].top_m, l[0].base_m + kDeckDepth_m[0], 1e-6);
+  EXPECT_DOUBLE_EQ(l[0].coverage, 0.75);
+
+  // Mountains (SLLP, 4071 m), composed: a scattered cumulonimbus at 3000 ft and a broken
+  // middle deck at 10000 ft above the field.
+  const Aerodrome& sllp = *find_aerodrome("SLLP");
+  const CloudColumn c = column_of_report(parse_metar("SLLP 051200Z 09010KT 9999 SCT030CB BKN100 12/M02 Q1028", kReference), sllp);
+  EXPECT_NEAR(c[CloudBand::Convective].base_m, sllp.elevation_m + 3000 * kFt, 1e-6);
+  EXPECT_DOUBLE_EQ(c[CloudBand::Convective].cover, 3.5 / 8);
+  EXPECT_NEAR(c[CloudBand::Middle].base_m, sllp.elevation_m + 10000 * kFt, 1e-6);
+  EXPECT_DOUBLE_EQ(c[CloudBand::Low].cover, 0.0);  // reported clear
+  l = layers_from_column(c);
+  ASSERT_EQ(l.size(), 2u);
+  EXPECT_EQ(l[0].type, CloudType::Altostratus);
+  EXPECT_EQ(l[1].type, CloudType::Cumulonimbus);
+  EXPECT_GT(l[0].base_m, 7000.0);  // above the field at 4 km, not above sea level
+
+  // Fog in the Alps (LSGS Sion, 482 m), composed: sky obscured, vertical visibility 100 ft.
+  const Aerodrome& lsgs = *find_aerodrome("LSGS");
+  l = layers_from_column(column_of_report(parse_metar("LSGS 050950Z VRB02KT 0300 FG VV001 01/01 Q1024", kReference), lsgs));
+  ASSERT_EQ(l.size(), 1u);
+  EXPECT_EQ(l[0].type, CloudType::Stratus);
+  EXPECT_DOUBLE_EQ(l[0].coverage, 1.0);
+  EXPECT_NEAR(l[0].base_m, lsgs.elevation_m, 1e-6);
+
+  // Towering cumulus (as published, EDDS): shallow convection -> cumulus.
+  l = layers_from_column(column_of_report(parse_metar("EDDS 081620Z 29010KT 9999 FEW040TCU 09/M03 Q1012 NOSIG", kReference), *find_aerodrome("EDDS")));
+  ASSERT_EQ(l.size(), 1u);
+  EXPECT_EQ(l[0].type, CloudType::Cumulus);
+  EXPECT_DOUBLE_EQ(l[0].coverage, 1.5 / 8);
+
+  // CAVOK: clear; NIL: nothing known.
+  const CloudColumn cavok = column_of_report(parse_metar("EHAM 100125Z 33004KT CAVOK M00/M01 Q1026 NOSIG", kReference), eham);
+  EXPECT_DOUBLE_EQ(cavok[CloudBand::Low].cover, 0.0);
+  EXPECT_TRUE(layers_from_column(cavok).empty());
+  EXPECT_TRUE(std::isnan(column_of_report(parse_metar("EHAM 100125Z NIL", kReference), eham)[CloudBand::Low].cover));
+}
+
+TEST(Metar, SeveralReportsBlendSmoothlyBetweenAerodromes) {
+  GribTempDir dir;
+  const auto file = dir.file("reports.metar");
+  std::ofstream(file) << "# two reports an hour apart at Zurich, one at Bern\n"
+                         "2026/12/05 12:00\n"
+                         "METAR LSZH 051050Z 24008KT 9999 SCT030 05/01 Q1021=\n"
+                         "METAR LSZH 051150Z 24008KT 9999 OVC030 05/01 Q1021=\n"
+                         "METAR LSZB 051150Z 24004KT 9999 CAVOK 04/00 Q1022=\n";
+  const std::unique_ptr<ForecastWeather> w = load_forecast_weather({file.string()}, utc("2030-01-01T00:00:00Z"));
+  const std::vector<double> t = w->valid_times();
+  ASSERT_EQ(t.size(), 2u);
+  EXPECT_EQ(cloudsvc::geo::format_utc_iso8601(t[1]), "2026-12-05T11:50:00Z");  // dated by the file's date line
+  const Aerodrome& zh = *find_aerodrome("LSZH");
+  const Aerodrome& be = *find_aerodrome("LSZB");
+  // At the aerodromes their own reports (in time: halfway between SCT and OVC at Zurich).
+  EXPECT_NEAR(w->column_at(zh.lat_deg, zh.lon_deg, t[1])[CloudBand::Low].cover, 1.0, 1e-3);
+  EXPECT_NEAR(w->column_at(zh.lat_deg, zh.lon_deg, 0.5 * (t[0] + t[1]))[CloudBand::Low].cover, 0.5 * (3.5 / 8 + 1.0), 1e-3);
+  EXPECT_NEAR(w->column_at(be.lat_deg, be.lon_deg, t[1])[CloudBand::Low].cover, 0.0, 1e-3);
+  // Between them the cover falls steadily from Zurich to Bern, without jumps.
+  double previous = 2.0, largest_step = 0.0;
+  for (int i = 0; i <= 200; ++i) {
+    const double f = i / 200.0;
+    const double cover = w->column_at(zh.lat_deg + f * (be.lat_deg - zh.lat_deg), zh.lon_deg + f * (be.lon_deg - zh.lon_deg), t[1])[CloudBand::Low].cover;
+    if (i > 0) largest_step = std::max(largest_step, std::abs(cover - previous));
+    EXPECT_LE(cover, previous + 1e-9) << f;
+    previous = cover;
+  }
+  EXPECT_LT(largest_step, 0.05);
+  // Base: from the field elevation plus 3000 ft where there is cloud.
+  EXPECT_NEAR(w->column_at(47.2, 8.0, t[1])[CloudBand::Low].base_m, zh.elevation_m + 3000 * kFt, 1e-6);
+  // Far from every aerodrome: no weather.
+  EXPECT_TRUE(w->layers_at(0.0, -30.0, t[1]).empty());
+  EXPECT_TRUE(std::isnan(w->column_at(0.0, -30.0, t[1])[CloudBand::Low].cover));
+}
+
+TEST(Metar, BadFilesNameTheFileAndLine) {
+  GribTempDir dir;
+  const auto read = [&](const std::string& name, const std::string& text) {
+    const auto file = dir.file(name);
+    std::ofstream(file) << text;
+    try {
+      load_forecast_weather({file.string()}, utc("2026-12-05T12:00:00Z"));
+    } catch (const WeatherFileError& e) {
+      return std::string(e.what()).substr(file.string().size());
+    }
+    return std::string("(read)");
+  };
+  EXPECT_EQ(read("a.metar", "METAR LSZH 051150Z 24008KT BKN030=\nMETAR XQZW 051150Z 24008KT BKN030=\n"),
+            ": line 2: station 'XQZW' is not in the aerodrome table (4782 medium and large aerodromes of OurAirports, docs/WEATHER.md)");
+  EXPECT_EQ(read("b.txt", "\nMETAR LSZH 051150Z 24008KT 9999 FEW03 05/01 Q1021=\n").substr(0, 39), ": line 2: malformed sky group 'FEW03' (");
+  EXPECT_EQ(read("c.metar", "# nothing\n\n"), ": no METAR reports");
+  EXPECT_EQ(read("d.metar", "2026/13/05 12:00\nLSZH 051150Z CAVOK\n"), ": line 1: invalid date '2026/13/05 12:00'");
+  EXPECT_EQ(read("e.json", "{}"),
+            ": not a forecast file (expected .grib2, .grb2, .grib or .grb for GRIB2, .metar or .txt for METAR reports)");
+}
+
+}  // namespace

@@ -1,0 +1,194 @@
+// METAR reports -> cloud bands over aerodromes, blended in space and time (station_weather.h).
+#include "weather/station_weather.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "weather/weather_json.h"
+
+namespace cloudsvc::weather {
+
+namespace {
+
+constexpr double kFoot_m = 0.3048;
+constexpr double kDeg = 3.14159265358979323846 / 180.0;
+constexpr double kEarthRadius_m = 6371008.8;  // mean radius (IUGG), for distances between aerodromes
+constexpr double kLowTop_m = 2000.0, kMiddleTop_m = 6000.0;  // etage limits above the ground
+
+bool given(double v) { return std::isfinite(v); }
+double mix_given(double a, double b, double t) {
+  if (!given(a)) return b;
+  if (!given(b)) return a;
+  return a + (b - a) * t;
+}
+
+void unit_vector(double lat_deg, double lon_deg, double v[3]) {
+  v[0] = std::cos(lat_deg * kDeg) * std::cos(lon_deg * kDeg);
+  v[1] = std::cos(lat_deg * kDeg) * std::sin(lon_deg * kDeg);
+  v[2] = std::sin(lat_deg * kDeg);
+}
+
+// Widens a band with one group: cover the largest, base the lowest, top the highest.
+void widen(BandValues& b, double cover, double base_m, double top_m) {
+  b.cover = given(b.cover) ? std::max(b.cover, cover) : cover;
+  b.base_m = given(b.base_m) ? std::min(b.base_m, base_m) : base_m;
+  b.top_m = given(b.top_m) ? std::max(b.top_m, top_m) : top_m;
+}
+
+}  // namespace
+
+CloudColumn column_of_report(const MetarReport& report, const Aerodrome& aerodrome) {
+  CloudColumn c;
+  c.ground_m = aerodrome.elevation_m;
+  if (report.nil) return c;
+  const double e = aerodrome.elevation_m;
+  bool said = report.clear;
+  for (const SkyGroup& g : report.sky) {
+    const double cover = sky_cover(g.amount);
+    if (g.amount == SkyGroup::Amount::Obscured) {  // fog: from the ground to the vertical visibility
+      const double vv = given(g.height_ft) ? g.height_ft * kFoot_m : 100.0 * kFoot_m;
+      widen(c[CloudBand::Low], cover, e, e + vv);
+      said = true;
+      continue;
+    }
+    if (!given(g.height_ft)) continue;  // "///": height unknown
+    said = true;
+    const double h = g.height_ft * kFoot_m, base = e + h;
+    switch (g.cloud) {
+      case SkyGroup::Cloud::Cumulonimbus:
+        widen(c[CloudBand::Convective], cover, base,
+              std::max(base + kToweringCumulusDepth_m, cloud_type_traits(CloudType::Cumulonimbus).default_top_m));
+        continue;
+      case SkyGroup::Cloud::ToweringCumulus:
+        widen(c[CloudBand::Convective], cover, base,
+              std::max(base + kLeastBandThickness_m, std::min(base + kToweringCumulusDepth_m, kDeepConvectionTop_m - 1.0)));
+        continue;
+      case SkyGroup::Cloud::Any: break;
+    }
+    const int band = h < kLowTop_m ? 0 : h < kMiddleTop_m ? 1 : 2;
+    const CloudBand bands[3] = {CloudBand::Low, CloudBand::Middle, CloudBand::High};
+    widen(c[bands[band]], cover, base, base + kDeckDepth_m[band]);
+  }
+  if (!said) return c;  // no sky information
+  for (CloudBand b : {CloudBand::Low, CloudBand::Middle, CloudBand::High, CloudBand::Convective})
+    if (!given(c[b].cover)) c[b].cover = 0.0;
+  return c;
+}
+
+StationWeather StationWeather::from_reports(const std::vector<MetarReport>& reports, const std::string& path) {
+  StationWeather w;
+  w.name_ = path;
+  std::map<std::string, Station> by_code;
+  for (const MetarReport& r : reports) {
+    const Aerodrome* a = find_aerodrome(r.station);
+    if (!a)
+      throw WeatherFileError(path + ": line " + std::to_string(r.line) + ": station '" + r.station +
+                             "' is not in the aerodrome table (" + std::to_string(aerodrome_count()) +
+                             " medium and large aerodromes of OurAirports, docs/WEATHER.md)");
+    Station& s = by_code[r.station];
+    s.aerodrome = *a;
+    unit_vector(a->lat_deg, a->lon_deg, s.unit);
+    s.observations.push_back({r.utc_s, column_of_report(r, *a)});
+  }
+  for (auto& [code, s] : by_code) {
+    // Ascending time; of two reports at one time (a SPECI correcting a METAR) the later in the file.
+    std::stable_sort(s.observations.begin(), s.observations.end(),
+                     [](const Observation& a, const Observation& b) { return a.utc_s < b.utc_s; });
+    std::vector<Observation> unique;
+    for (const Observation& o : s.observations) {
+      if (!unique.empty() && unique.back().utc_s == o.utc_s) unique.back() = o;
+      else unique.push_back(o);
+    }
+    s.observations = std::move(unique);
+    w.stations_.push_back(std::move(s));
+  }
+  return w;
+}
+
+void StationWeather::merge(const StationWeather& other) {
+  for (const Station& o : other.stations_) {
+    auto it = std::find_if(stations_.begin(), stations_.end(), [&](const Station& s) { return s.aerodrome.icao == o.aerodrome.icao; });
+    if (it == stations_.end()) {
+      stations_.push_back(o);
+      continue;
+    }
+    for (const Observation& ob : o.observations) {
+      auto at = std::lower_bound(it->observations.begin(), it->observations.end(), ob.utc_s,
+                                 [](const Observation& a, double t) { return a.utc_s < t; });
+      if (at != it->observations.end() && at->utc_s == ob.utc_s) *at = ob;
+      else it->observations.insert(at, ob);
+    }
+  }
+  name_ += ", " + other.name_;
+}
+
+std::vector<double> StationWeather::valid_times() const {
+  std::vector<double> t;
+  for (const Station& s : stations_)
+    for (const Observation& o : s.observations) t.push_back(o.utc_s);
+  std::sort(t.begin(), t.end());
+  t.erase(std::unique(t.begin(), t.end()), t.end());
+  return t;
+}
+
+CloudColumn StationWeather::station_column(const Station& s, double utc_s) const {
+  const std::vector<Observation>& o = s.observations;
+  if (!given(utc_s) || utc_s <= o.front().utc_s) return o.front().column;
+  if (utc_s >= o.back().utc_s) return o.back().column;
+  const auto after = std::upper_bound(o.begin(), o.end(), utc_s, [](double t, const Observation& x) { return t < x.utc_s; });
+  const Observation& a = *(after - 1);
+  const Observation& b = *after;
+  const double w = (utc_s - a.utc_s) / (b.utc_s - a.utc_s);
+  CloudColumn c;
+  c.ground_m = a.column.ground_m;
+  for (int i = 0; i < kColumnBands; ++i) {
+    c.bands[i].cover = mix_given(a.column.bands[i].cover, b.column.bands[i].cover, w);
+    c.bands[i].base_m = mix_given(a.column.bands[i].base_m, b.column.bands[i].base_m, w);
+    c.bands[i].top_m = mix_given(a.column.bands[i].top_m, b.column.bands[i].top_m, w);
+  }
+  return c;
+}
+
+CloudColumn StationWeather::column_at(double lat_deg, double lon_deg, double utc_s) const {
+  double p[3];
+  unit_vector(lat_deg, lon_deg, p);
+  struct Sum {
+    double w = 0, wc = 0, wcz_base = 0, wcz_top = 0, wc_base = 0, wc_top = 0;
+  };
+  Sum sums[kColumnBands];
+  double w_ground = 0.0, ground = 0.0;
+  for (const Station& s : stations_) {
+    const double chord = std::sqrt((p[0] - s.unit[0]) * (p[0] - s.unit[0]) + (p[1] - s.unit[1]) * (p[1] - s.unit[1]) +
+                                   (p[2] - s.unit[2]) * (p[2] - s.unit[2]));
+    const double d = std::max(2.0 * kEarthRadius_m * std::asin(std::min(1.0, chord / 2.0)), 1.0);
+    if (d >= kStationReach_m) continue;
+    const double r = (kStationReach_m - d) / (kStationReach_m * d);
+    const double w = r * r;
+    const CloudColumn c = station_column(s, utc_s);
+    w_ground += w;
+    ground += w * s.aerodrome.elevation_m;
+    for (int b = 0; b < kColumnBands; ++b) {
+      const BandValues& v = c.bands[b];
+      if (!given(v.cover)) continue;
+      Sum& sum = sums[b];
+      sum.w += w;
+      sum.wc += w * v.cover;
+      if (v.cover < kLeastLayerCover) continue;
+      if (given(v.base_m)) sum.wcz_base += w * v.cover * v.base_m, sum.wc_base += w * v.cover;
+      if (given(v.top_m)) sum.wcz_top += w * v.cover * v.top_m, sum.wc_top += w * v.cover;
+    }
+  }
+  CloudColumn out;
+  if (w_ground > 0.0) out.ground_m = ground / w_ground;
+  for (int b = 0; b < kColumnBands; ++b) {
+    const Sum& sum = sums[b];
+    if (sum.w <= 0.0) continue;
+    out.bands[b].cover = sum.wc / sum.w;
+    if (sum.wc_base > 0.0) out.bands[b].base_m = sum.wcz_base / sum.wc_base;
+    if (sum.wc_top > 0.0) out.bands[b].top_m = sum.wcz_top / sum.wc_top;
+  }
+  return out;
+}
+
+}  // namespace cloudsvc::weather

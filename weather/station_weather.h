@@ -1,0 +1,70 @@
+// Weather from METAR / SPECI reports (metar.h) at their aerodromes (aerodrome_table.h):
+// each report's sky groups become cloud bands over its aerodrome, and the bands are blended
+// between aerodromes and between each aerodrome's reports in time.
+//
+// Bands of a report, with h a group's height above the aerodrome and e the aerodrome's
+// elevation (base = e + h):
+//   - CB -> convective, top at least the cumulonimbus type's default top (deep convection);
+//     TCU -> convective, top kToweringCumulusDepth_m above its base (below 6 km: cumulus);
+//   - other groups by h: low below 2000 m, middle below 6000 m, high above (the WMO cloud
+//     etages of the mid-latitudes); a band's cover is the largest amount among its groups
+//     (the amount of a group includes the layers below it: the summation principle of
+//     WMO-No. 306, FM 15), its base the lowest group's, its top kDeckDepth_m above the
+//     highest group's base;
+//   - VVhhh (sky obscured: fog) -> low, cover 1, from the ground to hhh;
+//   - a band no group reaches has cover 0 (the report says it is clear); a report without
+//     sky groups or with heights "///" only says nothing, and neither does "NIL".
+// Between aerodromes the bands are blended with the modified Shepard weights of Franke &
+// Nielson (1980), w = ((R - d)+ / (R d))^2 with R = kStationReach_m: cover over the
+// aerodromes that report the band, altitudes weighted by cover too. Farther than R from
+// every aerodrome there is no cloud.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "weather/aerodrome_table.h"
+#include "weather/forecast_weather.h"
+#include "weather/metar.h"
+
+namespace cloudsvc::weather {
+
+inline constexpr double kStationReach_m = 250000.0;
+inline constexpr double kToweringCumulusDepth_m = 3000.0;
+// Depth of a deck above its highest reported base, by band (low, middle, high): typical
+// stratocumulus 200-900 m, altocumulus / altostratus about 1 km, cirrus 1-2 km (Sassen &
+// Campbell 2001: mean cirrus depth 1.8 km).
+inline constexpr double kDeckDepth_m[3] = {600.0, 1000.0, 1500.0};
+
+// The bands a report gives over its aerodrome (NaN covers when it says nothing).
+CloudColumn column_of_report(const MetarReport& report, const Aerodrome& aerodrome);
+
+class StationWeather : public ForecastWeather {
+ public:
+  // From reports read from `path` (for messages). Throws WeatherFileError "<path>: line N:
+  // station 'XXXX' is not in the aerodrome table" for an unknown station.
+  static StationWeather from_reports(const std::vector<MetarReport>& reports, const std::string& path);
+  // Merges another file's stations and reports into this one.
+  void merge(const StationWeather& other);
+
+  CloudColumn column_at(double lat_deg, double lon_deg, double utc_s) const override;
+  std::vector<double> valid_times() const override;
+  const std::string& name() const override { return name_; }
+
+ private:
+  struct Observation {
+    double utc_s = 0.0;
+    CloudColumn column;
+  };
+  struct Station {
+    Aerodrome aerodrome;
+    std::vector<Observation> observations;  // ascending time
+    double unit[3] = {0, 0, 0};            // direction from the Earth's centre
+  };
+  CloudColumn station_column(const Station& s, double utc_s) const;
+
+  std::vector<Station> stations_;
+  std::string name_;
+};
+
+}  // namespace cloudsvc::weather

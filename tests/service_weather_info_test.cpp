@@ -14,29 +14,21 @@
 namespace {
 
 namespace fs = std::filesystem;
+using cloudsvc::test::append_cloud_field;
 using cloudsvc::test::append_grib_message;
 using cloudsvc::test::GribTempDir;
 using cloudsvc::test::run_cloudsvc;
 using cloudsvc::test::RunResult;
 
-// A field given by GRIB2 numbers on the regular_ll sample (0-30E, 0-60N), valid on
-// 2026-06-01 at `hour` UTC.
-void append_field(const fs::path& file, long category, long number, long level_type, double value, long hour) {
-  append_grib_message(file, "regular_ll_sfc_grib2",
-                      {{"discipline", 0L}, {"parameterCategory", category}, {"parameterNumber", number},
-                       {"typeOfFirstFixedSurface", level_type}, {"dataDate", 20260601L}, {"dataTime", 0L},
-                       {"stepRange", std::to_string(hour)}},
-                      [value](double, double) { return value; });
-}
 
 TEST(WeatherInfo, PrintsTheLayersAtAPointAndTime) {
   GribTempDir dir;
   const fs::path file = dir.file("f.grib2");
-  append_field(file, 6, 1, 214, 30.0, 6);     // low cloud cover 30 % at 06 UTC
-  append_field(file, 3, 0, 212, 90000.0, 6);  // its bottom, Pa
-  append_field(file, 3, 0, 213, 85000.0, 6);  // its top, Pa
-  append_field(file, 6, 1, 214, 70.0, 12);    // 70 % at 12 UTC
-  append_field(file, 6, 1, 234, 20.0, 12);    // high cloud cover 20 % at 12 UTC (no altitudes)
+  append_cloud_field(file, 6, 1, 214, 30.0, 6);     // low cloud cover 30 % at 06 UTC
+  append_cloud_field(file, 3, 0, 212, 90000.0, 6);  // its bottom, Pa
+  append_cloud_field(file, 3, 0, 213, 85000.0, 6);  // its top, Pa
+  append_cloud_field(file, 6, 1, 214, 70.0, 12);    // 70 % at 12 UTC
+  append_cloud_field(file, 6, 1, 234, 20.0, 12);    // high cloud cover 20 % at 12 UTC (no altitudes)
   const RunResult r = run_cloudsvc({"weather-info", file.string(), "--at", "30,10,2026-06-01T09:00:00Z"}, dir.file(""));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);
@@ -96,7 +88,7 @@ TEST(WeatherInfo, BadInputGivesOneLineAndExitTwo) {
   const fs::path json = dir.file("w.json");
   std::ofstream(json) << "{}\n";
   const fs::path good = dir.file("good.grib2");
-  append_field(good, 6, 1, 214, 30.0, 6);
+  append_cloud_field(good, 6, 1, 214, 30.0, 6);
   const fs::path metar = dir.file("reports.metar");
   std::ofstream(metar) << "METAR LSZH 051150Z 24008KT 9999 BKN030 05/01 Q1021=\n";
   struct Case {

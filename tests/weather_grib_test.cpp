@@ -16,6 +16,7 @@
 namespace {
 
 using namespace cloudsvc::weather;
+using cloudsvc::test::append_cloud_field;
 using cloudsvc::test::append_grib_message;
 using cloudsvc::test::GribKey;
 using cloudsvc::test::GribTempDir;
@@ -268,26 +269,17 @@ TEST(GribFields, MissingValuesOfABitmapAreLeftOut) {
   EXPECT_TRUE(std::isnan(m.field.at(50.0, 10.0)));
 }
 
-// Writes one field of `band` quantities to a file: `keys` identify it by GRIB2 numbers.
-void append_field(const std::filesystem::path& file, long category, long number, long level_type, double value,
-                  long hour = 12) {
-  append_grib_message(file, "regular_ll_sfc_grib2",
-                      {{"discipline", 0L}, {"parameterCategory", category}, {"parameterNumber", number},
-                       {"typeOfFirstFixedSurface", level_type}, {"dataDate", 20260601L}, {"dataTime", 0L},
-                       {"stepRange", std::to_string(hour)}},
-                      [value](double, double) { return value; });
-}
 
 TEST(GribFields, BasesAndTopsInPressureGeopotentialAndHeightBecomeAltitudes) {
   GribTempDir dir;
   const auto file = dir.file("bands.grib2");
-  append_field(file, 6, 1, 214, 40.0);               // low cloud cover, %
-  append_field(file, 3, 0, 212, 90000.0);            // low cloud bottom, Pa
-  append_field(file, 3, 5, 213, 1500.0);             // low cloud top, gpm
-  append_field(file, 6, 1, 224, 30.0);               // middle cloud cover
-  append_field(file, 3, 4, 222, 3000.0 * kStandardGravity_mps2);  // middle cloud bottom, m2/s2
-  append_field(file, 3, 6, 223, 4200.0);             // middle cloud top, geometric m
-  append_field(file, 0, 0, 213, 270.0);              // temperature at the low cloud top: ignored
+  append_cloud_field(file, 6, 1, 214, 40.0, 12);               // low cloud cover, %
+  append_cloud_field(file, 3, 0, 212, 90000.0, 12);            // low cloud bottom, Pa
+  append_cloud_field(file, 3, 5, 213, 1500.0, 12);             // low cloud top, gpm
+  append_cloud_field(file, 6, 1, 224, 30.0, 12);               // middle cloud cover
+  append_cloud_field(file, 3, 4, 222, 3000.0 * kStandardGravity_mps2, 12);  // middle cloud bottom, m2/s2
+  append_cloud_field(file, 3, 6, 223, 4200.0, 12);             // middle cloud top, geometric m
+  append_cloud_field(file, 0, 0, 213, 270.0, 12);              // temperature at the low cloud top: ignored
   const GribReadResult r = read_grib_cloud_fields(file.string());
   EXPECT_EQ(r.messages, 7);
   EXPECT_EQ(r.clouds.size(), 6u);
@@ -307,8 +299,8 @@ TEST(GribFields, BasesAndTopsInPressureGeopotentialAndHeightBecomeAltitudes) {
 TEST(GribFields, ForecastStepsBlendLinearlyInTime) {
   GribTempDir dir;
   const auto file = dir.file("steps.grib2");
-  append_field(file, 6, 1, 214, 20.0, 6);   // valid 06 UTC
-  append_field(file, 6, 1, 214, 60.0, 12);  // valid 12 UTC
+  append_cloud_field(file, 6, 1, 214, 20.0, 6);   // valid 06 UTC
+  append_cloud_field(file, 6, 1, 214, 60.0, 12);  // valid 12 UTC
   const GriddedWeather w = GriddedWeather::load_grib({file.string()});
   const std::vector<double> t = w.valid_times();
   ASSERT_EQ(t.size(), 2u);

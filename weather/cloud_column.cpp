@@ -62,6 +62,18 @@ void place_apart(std::vector<CloudLayer>& placed, CloudLayer layer) {
 
 }  // namespace
 
+CloudColumn blend_columns(const CloudColumn& a, const CloudColumn& b, double w) {
+  const auto mix = [w](double x, double y) { return !given(x) ? y : !given(y) ? x : x + (y - x) * w; };
+  CloudColumn out;
+  out.ground_m = given(a.ground_m) ? a.ground_m : b.ground_m;
+  for (int i = 0; i < kColumnBands; ++i) {
+    out.bands[i].cover = mix(a.bands[i].cover, b.bands[i].cover);
+    out.bands[i].base_m = mix(a.bands[i].base_m, b.bands[i].base_m);
+    out.bands[i].top_m = mix(a.bands[i].top_m, b.bands[i].top_m);
+  }
+  return out;
+}
+
 double low_middle_boundary_m() { return standard_pressure_altitude_m(0.8 * kSeaLevelPressure_Pa); }
 double middle_high_boundary_m() { return standard_pressure_altitude_m(0.45 * kSeaLevelPressure_Pa); }
 

@@ -47,6 +47,11 @@ struct CloudColumn {
   const BandValues& operator[](CloudBand b) const { return bands[static_cast<int>(b)]; }
 };
 
+// Linear blend of two columns (weight w of b), field by field; a field given in only one of
+// them holds (NaN = not given). The ground's height is a's, else b's. Forecast steps and
+// reports in time blend this way.
+CloudColumn blend_columns(const CloudColumn& a, const CloudColumn& b, double w);
+
 // Heights separating the low, middle and high bands of a cloud-cover profile: the
 // standard-atmosphere altitudes of sigma = p / p_surface = 0.8 and 0.45 with p_surface =
 // 101325 Pa, the bands of ECMWF's low, medium and high cloud cover (IFS Documentation

@@ -13,11 +13,6 @@ namespace cloudsvc::weather {
 namespace {
 
 bool given(double v) { return std::isfinite(v); }
-double mix_given(double a, double b, double t) {
-  if (!given(a)) return b;
-  if (!given(b)) return a;
-  return a + (b - a) * t;
-}
 
 // Full-level pressure of hybrid level k (1-based) from the vertical coordinate parameters
 // pv = [a_0 .. a_N, b_0 .. b_N] of the half levels (Pa, dimensionless): the mean of the
@@ -115,15 +110,7 @@ CloudColumn GriddedWeather::column_at(double lat, double lon, double utc_s) cons
   const Step& b = *after;
   const Step& a = *(after - 1);
   const double w = (utc_s - a.valid_utc_s) / (b.valid_utc_s - a.valid_utc_s);
-  const CloudColumn ca = column_in_step(a, lat, lon), cb = column_in_step(b, lat, lon);
-  CloudColumn out;
-  out.ground_m = ca.ground_m;
-  for (int i = 0; i < kColumnBands; ++i) {
-    out.bands[i].cover = mix_given(ca.bands[i].cover, cb.bands[i].cover, w);
-    out.bands[i].base_m = mix_given(ca.bands[i].base_m, cb.bands[i].base_m, w);
-    out.bands[i].top_m = mix_given(ca.bands[i].top_m, cb.bands[i].top_m, w);
-  }
-  return out;
+  return blend_columns(column_in_step(a, lat, lon), column_in_step(b, lat, lon), w);
 }
 
 }  // namespace cloudsvc::weather

@@ -17,11 +17,6 @@ constexpr double kEarthRadius_m = 6371008.8;  // mean radius (IUGG), for distanc
 constexpr double kLowTop_m = 2000.0, kMiddleTop_m = 6000.0;  // etage limits above the ground
 
 bool given(double v) { return std::isfinite(v); }
-double mix_given(double a, double b, double t) {
-  if (!given(a)) return b;
-  if (!given(b)) return a;
-  return a + (b - a) * t;
-}
 
 void unit_vector(double lat_deg, double lon_deg, double v[3]) {
   v[0] = std::cos(lat_deg * kDeg) * std::cos(lon_deg * kDeg);
@@ -139,15 +134,7 @@ CloudColumn StationWeather::station_column(const Station& s, double utc_s) const
   const auto after = std::upper_bound(o.begin(), o.end(), utc_s, [](double t, const Observation& x) { return t < x.utc_s; });
   const Observation& a = *(after - 1);
   const Observation& b = *after;
-  const double w = (utc_s - a.utc_s) / (b.utc_s - a.utc_s);
-  CloudColumn c;
-  c.ground_m = a.column.ground_m;
-  for (int i = 0; i < kColumnBands; ++i) {
-    c.bands[i].cover = mix_given(a.column.bands[i].cover, b.column.bands[i].cover, w);
-    c.bands[i].base_m = mix_given(a.column.bands[i].base_m, b.column.bands[i].base_m, w);
-    c.bands[i].top_m = mix_given(a.column.bands[i].top_m, b.column.bands[i].top_m, w);
-  }
-  return c;
+  return blend_columns(a.column, b.column, (utc_s - a.utc_s) / (b.utc_s - a.utc_s));
 }
 
 CloudColumn StationWeather::column_at(double lat_deg, double lon_deg, double utc_s) const {

@@ -53,8 +53,11 @@ CloudFieldTextures::CloudFieldTextures(const RendererConfig& config) : config_(c
 }
 
 std::size_t CloudFieldTextures::gpu_bytes() const {
+  std::size_t layer_bytes = 0;
+  for (int k = 0; k < 2; ++k)
+    layer_bytes += layer_maps_full_[k] ? static_cast<std::size_t>(config_.weather_map_width) * config_.weather_map_height * 16 : 16;
   return noise_bytes_ + 2 * static_cast<std::size_t>(config_.weather_map_width) * config_.weather_map_height * 16 +
-         coverage_pyramid_bytes_;
+         layer_bytes + coverage_pyramid_bytes_;
 }
 
 bool CloudFieldTextures::update(const weather::WeatherTimeline::Blend& b) {
@@ -67,6 +70,13 @@ bool CloudFieldTextures::update(const weather::WeatherTimeline::Blend& b) {
     const weather::WeatherMap& m = *maps[k];
     if (!weather_maps_[k]) weather_maps_[k] = gl::make_texture_2d(GL_RGBA32F, m.width, m.height, GL_REPEAT, GL_CLAMP_TO_EDGE);
     glTextureSubImage2D(weather_maps_[k].id(), 0, 0, 0, m.width, m.height, GL_RGBA, GL_FLOAT, m.rgba.data());
+    const bool full = m.has_layer_coverage();
+    if (!layer_maps_[k] || layer_maps_full_[k] != full)
+      layer_maps_[k] = gl::make_texture_2d(GL_RGBA32F, full ? m.width : 1, full ? m.height : 1, GL_REPEAT, GL_CLAMP_TO_EDGE);
+    const float zeros[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    glTextureSubImage2D(layer_maps_[k].id(), 0, 0, 0, full ? m.width : 1, full ? m.height : 1, GL_RGBA, GL_FLOAT,
+                        full ? m.layer_coverage.data() : zeros);
+    layer_maps_full_[k] = full;
     uploaded_version_[k] = versions[k];
     changed = true;
     pyramid_stale = true;
@@ -82,9 +92,18 @@ bool CloudFieldTextures::update(const weather::WeatherTimeline::Blend& b) {
     maps[k]->pole_value(false, south[k]);
     maps[k]->pole_value(true, north[k]);
   }
+  float layer_south[2][4], layer_north[2][4];
+  for (int k = 0; k < 2; ++k) {
+    maps[k]->layer_coverage_pole_value(false, layer_south[k]);
+    maps[k]->layer_coverage_pole_value(true, layer_north[k]);
+  }
+  const auto mix = [&](const float (&v)[2][4], int i) { return v[0][i] + b.weight * (v[1][i] - v[0][i]); };
   for (int i = 0; i < 4; ++i) {
-    summary_.weather_pole_south[static_cast<size_t>(i)] = south[0][i] + b.weight * (south[1][i] - south[0][i]);
-    summary_.weather_pole_north[static_cast<size_t>(i)] = north[0][i] + b.weight * (north[1][i] - north[0][i]);
+    const auto c = static_cast<size_t>(i);
+    summary_.weather_pole_south[c] = mix(south, i);
+    summary_.weather_pole_north[c] = mix(north, i);
+    summary_.layer_coverage_pole_south[c] = mix(layer_south, i);
+    summary_.layer_coverage_pole_north[c] = mix(layer_north, i);
   }
   summary_.weather_map_height = b.from->height;
   summary_.weather_blend = b.weight;
@@ -113,6 +132,8 @@ void CloudFieldTextures::bind() const {
   glBindTextureUnit(gpu::tex::DETAIL_NOISE, detail_noise_.id());
   glBindTextureUnit(gpu::tex::WEATHER_MAP, weather_maps_[0].id());
   glBindTextureUnit(gpu::tex::WEATHER_MAP_NEXT, weather_maps_[1].id());
+  glBindTextureUnit(gpu::tex::LAYER_COVERAGE, layer_maps_[0].id());
+  glBindTextureUnit(gpu::tex::LAYER_COVERAGE_NEXT, layer_maps_[1].id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::ssbo::COVERAGE_PYRAMID, coverage_pyramid_.id());
 }
 

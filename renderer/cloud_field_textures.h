@@ -66,6 +66,10 @@ class CloudFieldTextures {
   RendererConfig config_;
   GpuResourceSummary summary_{};
   gl::Texture base_noise_, base_noise_max_, detail_noise_, weather_maps_[2];
+  // the keyframes' layer-coverage channels (weather::WeatherMap::layer_coverage): the map's
+  // size when it has them, else 1 x 1 of zeros
+  gl::Texture layer_maps_[2];
+  bool layer_maps_full_[2] = {false, false};
   std::uint64_t uploaded_version_[2] = {0, 0};  // keyframe versions in weather_maps_[0], [1]
   float uploaded_blend_ = -1.0f;                // blend weight at the last counted change
   gl::Buffer coverage_pyramid_;

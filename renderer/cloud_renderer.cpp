@@ -56,6 +56,16 @@ void CloudRenderer::set_weather(const weather::Weather& w) {
   }
 }
 
+void CloudRenderer::set_forecast(const weather::Weather& w, weather::WeatherMap map) {
+  if (map.width != config_.weather_map_width || map.height != config_.weather_map_height || !map.has_layer_coverage())
+    throw std::invalid_argument("forecast map: expected " + std::to_string(config_.weather_map_width) + " x " +
+                                std::to_string(config_.weather_map_height) + " texels with layer coverage");
+  set_weather(w);
+  timeline_.reset(std::move(map));
+  map_seed_ = w.map_seed;
+  map_valid_ = true;
+}
+
 // Layers with no cloud anywhere this frame can see (renderer/coverage_cull.h) are marked
 // culled in the frame: coverage 0 in the uniforms, which the march and the shadow map skip
 // (shaders/cloud_intervals.glsl). A change of that set changes the cloud field the shadow
@@ -78,7 +88,8 @@ void CloudRenderer::cull_layers_without_cloud_in_view(FrameContext& frame, const
   for (int i = 0; i < frame.layer_count; ++i) {
     LayerFrame& lf = frame.layers[static_cast<size_t>(i)];
     const bool was = (culled_layers_ >> i) & 1u;
-    lf.culled = weather::local_coverage(static_cast<float>(lf.layer.coverage), was ? m : m_wide) <= 0.0f;
+    lf.culled = weather::layer_local_coverage(lf.layer.coverage_channel, static_cast<float>(lf.layer.coverage),
+                                              was ? m : m_wide) <= 0.0f;
   }
   // A layer that comes back into reach was left out of the shadow map (and light volume)
   // since it was culled: rebuild them. A newly culled layer has no cloud within reach, so

@@ -47,6 +47,15 @@ class CloudRenderer {
   void set_weather(const weather::Weather& w);
   const weather::Weather& weather() const { return weather_; }
 
+  // Sets forecast weather (weather/forecast_frame.h): layers that read the layer-coverage
+  // channels of `map`, which replaces the weather map (its size must be the renderer's:
+  // weather_map_width x weather_map_height of the RendererConfig). Throws
+  // std::invalid_argument for a weather validate() rejects or a map of another size. A
+  // later set_weather with the same map seed keeps the map (its R channel is neutral).
+  void set_forecast(const weather::Weather& w, weather::WeatherMap map);
+  int weather_map_width() const { return config_.weather_map_width; }
+  int weather_map_height() const { return config_.weather_map_height; }
+
   // Streams a weather-map tile in (weather/weather_timeline.h): its weather channels fade
   // in over time instead of popping; its ground-albedo channel, if any, applies from the
   // next frame (weather/ground_albedo_map.h; kept when set_weather changes the weather).

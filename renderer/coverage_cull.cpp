@@ -39,8 +39,7 @@ float max_coverage_in_cap(const weather::WeatherMap& map, double lat_deg, double
   for (int j = j0; j <= j1; ++j)
     for (int i = i0; i <= i1; ++i) {
       const int wi = ((i % map.width) + map.width) % map.width;  // wraps across the antimeridian
-      const float v = map.rgba[(static_cast<size_t>(j) * map.width + wi) * 4];
-      if (!(v <= m)) m = std::isfinite(v) ? v : 1.0f;  // a non-finite texel counts as cloud
+      m = std::max(m, map.coverage_bound(static_cast<size_t>(j) * map.width + wi));  // non-finite: 1
     }
   return m;
 }

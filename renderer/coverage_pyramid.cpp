@@ -40,19 +40,24 @@ CoveragePyramid build_coverage_pyramid(const weather::WeatherMap& map, const wea
   // texel maximum over the keyframes, and the pole values (row means) of each
   std::vector<float> texel(static_cast<size_t>(W) * H);
   for (size_t n = 0; n < texel.size(); ++n) {
-    float v = texel_bound(map.rgba[4 * n]);
-    if (next) v = std::max(v, texel_bound(next->rgba[4 * n]));
+    float v = map.coverage_bound(n);
+    if (next) v = std::max(v, next->coverage_bound(n));
     texel[n] = v;
   }
   float pole[2] = {0.0f, 0.0f};  // south, north
+  // the poles' values bounded as coverage_bound bounds a texel: R and the layer-coverage channels
+  const auto pole_bound = [](const weather::WeatherMap& m, bool north) {
+    float v[4], c[4];
+    m.pole_value(north, v);
+    m.layer_coverage_pole_value(north, c);
+    float b = texel_bound(v[0]);
+    if (m.has_layer_coverage())
+      for (float x : c) b = std::max(b, texel_bound(x));
+    return b;
+  };
   for (int north = 0; north < 2; ++north) {
-    float v[4];
-    map.pole_value(north != 0, v);
-    pole[north] = texel_bound(v[0]);
-    if (next) {
-      next->pole_value(north != 0, v);
-      pole[north] = std::max(pole[north], texel_bound(v[0]));
-    }
+    pole[north] = pole_bound(map, north != 0);
+    if (next) pole[north] = std::max(pole[north], pole_bound(*next, north != 0));
   }
   // level 0: cell (i, r) = texel columns i, i + 1 (mod W) x texel rows r - 1, r (clamped)
   CoveragePyramid::Level l0{W, H + 1, 0};

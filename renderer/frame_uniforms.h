@@ -35,7 +35,8 @@ struct CloudLayerGpu {
   // optical depths scale by this onto the diffuse source table's droplets
   // (model::ms_similarity_scale of the layer's phase function)
   float ms_similarity;
-  float pad0 = 0.0f, pad1 = 0.0f, pad2 = 0.0f;  // std140 aligns the next member to a vec4
+  int coverage_channel = -1;  // weather::CloudLayer::coverage_channel: -1 R-modulated, 0-3 a layer-coverage channel
+  float pad1 = 0.0f, pad2 = 0.0f;  // std140 aligns the next member to a vec4
   // the noises' stochastic tiling (weather/noise_tiling.h, noise_tiling.glsl): floor(camera's
   // field position / period) per axis, and the four lattices' hash seeds
   alignas(16) glm::ivec3 base_noise_cell;
@@ -88,6 +89,8 @@ struct FrameUniforms {
   glm::vec4 noise_quantiles[4];   // base-noise value below which a fraction i/15 lies, i = 0..15
   glm::vec4 weather_pole_south;   // weather map value at the south pole (row mean)
   glm::vec4 weather_pole_north;   // ... at the north pole
+  glm::vec4 layer_coverage_pole_south;  // the map's layer-coverage channels at the south pole (row mean)
+  glm::vec4 layer_coverage_pole_north;  // ... at the north pole
   glm::vec4 ground_albedo;        // rgb: the ground's Lambertian albedo (FrameContext::ground_albedo);
                                   // w: 1 where tiles have set some of it (ground_albedo_at)
   glm::vec4 ground_albedo_poles;  // the albedo map's (R, G) at the south pole, then the north's
@@ -95,6 +98,6 @@ struct FrameUniforms {
 };
 
 static_assert(sizeof(CloudLayerGpu) == 19 * 16, "std140 layout");
-static_assert(sizeof(FrameUniforms) == 64 + 21 * 16 + gpu::kMaxLayers * 19 * 16, "std140 layout");
+static_assert(sizeof(FrameUniforms) == 64 + 23 * 16 + gpu::kMaxLayers * 19 * 16, "std140 layout");
 
 }  // namespace cloudsvc

@@ -92,6 +92,8 @@ FrameUniforms pack_frame_uniforms(const FrameContext& c, const RenderQuality& qu
   u.weather_blend = resources.weather_blend;
   u.weather_pole_south = to_vec4(resources.weather_pole_south);
   u.weather_pole_north = to_vec4(resources.weather_pole_north);
+  u.layer_coverage_pole_south = to_vec4(resources.layer_coverage_pole_south);
+  u.layer_coverage_pole_north = to_vec4(resources.layer_coverage_pole_north);
   u.ground_albedo = glm::vec4(glm::vec3(c.ground_albedo), resources.ground_albedo_map ? 1.0f : 0.0f);
   u.ground_albedo_poles = to_vec4(resources.ground_albedo_poles);
   const NoiseQuantiles& q = resources.base_quantiles;
@@ -135,6 +137,7 @@ FrameUniforms pack_frame_uniforms(const FrameContext& c, const RenderQuality& qu
     g.anvil = glm::vec4(tr.anvil.spread, tr.anvil.base, tr.anvil.top, tr.anvil.density_ratio);
     g.noise_rotation = glm::mat4(glm::mat3(lf.field_rotation * c.enu_to_ecef));
     g.ms_similarity = static_cast<float>(model::ms_similarity_scale(ph));
+    g.coverage_channel = l.coverage_channel;
     // the layer's full nominal optical depth tau_c of diffuse_inscatter (cloud_lighting.glsl)
     const double tau_cloud = static_cast<double>(g.extinction_max) * g.density_scale * (g.top_m - g.base_m);
     static_assert(model::kSlabFluxMuNodes == 11, "ground_transmittance holds 11 beam values and the diffuse one");

@@ -27,6 +27,8 @@ struct GpuResourceSummary {
   std::uint32_t noise_seed = 1;         // the volumes' seed (RendererConfig::noise_seed): tiling seeds
   std::array<float, 4> weather_pole_south{0.5f, 0.5f, 0.5f, 0.0f};
   std::array<float, 4> weather_pole_north{0.5f, 0.5f, 0.5f, 0.0f};
+  std::array<float, 4> layer_coverage_pole_south{};  // the keyframes' layer-coverage channels at the poles
+  std::array<float, 4> layer_coverage_pole_north{};
   int weather_map_height = 1;
   float weather_blend = 0.0f;     // weight of the second weather keyframe (weather_timeline.h)
   bool coverage_pyramid = false;  // the coverage max-pyramid is bound (renderer/coverage_pyramid.h)

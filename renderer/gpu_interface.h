@@ -43,7 +43,9 @@ namespace cloudsvc::gpu {
   X(CLOUD_PHASE, 21)       /* the layers' tabulated Mie phase functions (phase_function.glsl) */ \
   X(MS_SOURCE, 22)         /* the sun's multiple-scattering source table (ms_source_lookup.glsl) */ \
   X(MS_DIFFUSE_INCIDENCE, 23) /* ... diffuse light's (ms_source_lookup.glsl) */ \
-  X(GROUND_ALBEDO, 24)     /* the ground's albedo where tiles set it (ground_albedo.glsl) */
+  X(GROUND_ALBEDO, 24)     /* the ground's albedo where tiles set it (ground_albedo.glsl) */ \
+  X(LAYER_COVERAGE, 25)    /* the weather keyframe's per-layer coverage (forecast weather) */ \
+  X(LAYER_COVERAGE_NEXT, 26) /* ... of the next keyframe */
 
 // Image units: each pass binds the images it writes right before its dispatch, so outputs
 // of different passes share units. GLSL: IMG_<NAME>.

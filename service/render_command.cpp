@@ -103,7 +103,7 @@ int run_render(const RenderOptions& opt) {
     const RenderQuality quality = *quality_preset(opt.quality);  // validated by the parser
     gl::EglContext context;
     CloudRenderer renderer(renderer_config(opt));
-    renderer.set_weather(opt.weather);
+    set_render_weather(renderer, opt);
     for (int f = 0; f < opt.frames; ++f) {
       view.frame_index = static_cast<std::uint32_t>(f);
       img = renderer.render(view, quality);

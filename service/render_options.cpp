@@ -23,6 +23,8 @@
 #include "renderer/quality_presets.h"
 #include "service/cloud_phase_option.h"
 #include "service/serve_command_line.h"
+#include "weather/forecast_frame.h"
+#include "weather/weather_json.h"
 
 namespace cloudsvc {
 namespace {
@@ -136,7 +138,10 @@ void add_view_flags(CLI::App& cmd, RenderArgs& args, const RenderOptions& defaul
       ->type_name("DEG");
   cmd.add_option("--size", args.size, size_help(defaults.width, defaults.height))
       ->type_name("WxH");
-  cmd.add_option("--weather", args.weather, weather_help(defaults.weather_arg))
+  cmd.add_option("--weather", args.weather,
+                 weather_help(defaults.weather_arg) +
+                     ". Also a GRIB2 forecast (.grib2, .grb2, .grib, .grb) or METAR reports (.metar, .txt): their "
+                     "clouds at --lat/--lon and --time (GPU presets only; docs/WEATHER.md)")
       ->type_name("PRESET|FILE.json");
 }
 
@@ -322,7 +327,20 @@ void apply_scene_and_output(const RenderArgs& a, RenderOptions& opt) {
   if (given(cmd, "--time")) opt.time_text = a.time;
   opt.unix_time_s = parse_time("--time", opt.time_text);
   if (given(cmd, "--weather")) opt.weather_arg = a.weather;
-  opt.weather = resolve_weather("--weather", opt.weather_arg);
+  if (weather::is_forecast_path(opt.weather_arg)) {
+    if (opt.quality == "reference" || opt.quality == "truth")
+      fail("--weather", opt.weather_arg, "GRIB2 and METAR weather is drawn by the GPU quality presets only, not --quality " + opt.quality);
+    try {
+      opt.forecast = weather::load_forecast_weather({opt.weather_arg}, opt.unix_time_s);
+    } catch (const weather::WeatherFileError& e) {
+      std::string message = e.what();
+      if (message.rfind(opt.weather_arg + ": ", 0) == 0) message.erase(0, opt.weather_arg.size() + 2);
+      fail("--weather", opt.weather_arg, message);
+    }
+    opt.weather = weather::forecast_weather_at(*opt.forecast, opt.position.lat_deg, opt.position.lon_deg, opt.unix_time_s);
+  } else {
+    opt.weather = resolve_weather("--weather", opt.weather_arg);
+  }
   if (given(cmd, "--out")) {
     opt.out_path = a.out;
   } else if (opt.window) {

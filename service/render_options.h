@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,7 @@
 #include "service/serve_options.h"
 #include "service/weather_info_options.h"
 #include "weather/cloud_layer.h"
+#include "weather/forecast_weather.h"
 
 namespace cloudsvc {
 
@@ -24,7 +26,10 @@ struct RenderOptions {
   int width = 640;                               // --size WxH, 1..8192 each
   int height = 360;
   std::string weather_arg = "broken-cumulus";    // --weather PRESET or FILE.json
-  weather::Weather weather;                      // resolved preset or loaded file
+  weather::Weather weather;                      // resolved preset or loaded file; forecast
+                                                 // weather: the layers of the region at
+                                                 // --lat/--lon and --time (weather/forecast_frame.h)
+  std::shared_ptr<const weather::ForecastWeather> forecast;  // --weather FILE.grib2|.metar|.txt
   std::string out_path = "view.png";             // --out, .exr (linear half) or .png (sRGB);
                                                  // empty with --window and no --out: no file
   bool window = false;                           // --window: interactive GLFW window

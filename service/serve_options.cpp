@@ -18,6 +18,7 @@
 #include "common/option_paths.h"
 #include "common/option_values.h"
 #include "common/option_weather.h"
+#include "weather/forecast_weather.h"
 #include "protocol/shm/shm_name.h"
 #include "service/cloud_phase_option.h"
 #include "service/serve_command_line.h"
@@ -280,6 +281,9 @@ void apply_endpoints(const ServeCommandLine::Args& a, ServeOptions& opt) {
 void apply_scene(const ServeCommandLine::Args& a, ServeOptions& opt) {
   const CLI::App& cmd = *a.command;
   if (given(cmd, "--weather")) opt.weather_arg = a.weather;
+  if (weather::is_forecast_path(opt.weather_arg))
+    fail("--weather", opt.weather_arg,
+         "GRIB2 and METAR weather is not served yet (cloudsvc render and cloudsvc weather-info read it)");
   opt.weather = resolve_weather("--weather", opt.weather_arg);
   if (given(cmd, "--time")) {
     opt.time_text = a.time;

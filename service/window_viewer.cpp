@@ -12,6 +12,7 @@
 #include "geodesy/utc_time.h"
 #include "renderer/cloud_renderer.h"
 #include "service/window_presenter.h"
+#include "weather/forecast_frame.h"
 
 namespace cloudsvc {
 
@@ -61,6 +62,12 @@ RendererConfig renderer_config(const RenderOptions& opt) {
   return config;
 }
 
+void set_render_weather(CloudRenderer& renderer, const RenderOptions& opt) {
+  if (!opt.forecast) return renderer.set_weather(opt.weather);
+  renderer.set_forecast(opt.weather, weather::forecast_map(*opt.forecast, opt.unix_time_s, renderer.weather_map_width(),
+                                                           renderer.weather_map_height()));
+}
+
 int run_window(const RenderOptions& opt) {
   WindowPresenter window(opt.width, opt.height, "cloudsvc");
   int rc = 0;
@@ -75,7 +82,7 @@ int run_window(const RenderOptions& opt) {
   glfwSetKeyCallback(window.window(), key_callback);
 
   CloudRenderer renderer(renderer_config(opt));
-  renderer.set_weather(opt.weather);
+  set_render_weather(renderer, opt);
   int frames = 0;
   std::printf("window: arrows turn/pitch, W/S move, PgUp/PgDn altitude, T/G time +-10 min, shift x10, Esc quits\n");
   while (!window.close_requested()) {

@@ -20,11 +20,21 @@ layout(binding = TEX_BASE_NOISE_MAX) uniform sampler3D base_noise_max;
 
 uint g_density_evals = 0u;  // per-invocation count of density evaluations
 
-// Weather map at a point p (local frame): the map is indexed by latitude/longitude of the
-// point's direction from the shell centre, in ECEF axes.
-vec4 weather_at(vec3 p) {
-  return weather_map_at(from_shell_centre(p), frame.weather_map_height, frame.weather_blend, frame.weather_pole_south,
-                        frame.weather_pole_north);
+// The weather map at p (local frame; indexed by the latitude / longitude of the point's
+// direction from the shell centre, in ECEF axes) as layer li reads it: for a layer with a
+// layer-coverage channel (forecast weather, CloudLayerGpu.coverage_channel >= 0) its R holds
+// that channel's coverage, which local_coverage takes as it is; other layers read the
+// map's coverage modulation.
+vec4 layer_weather_at(int li, vec3 p) {
+  vec3 q = from_shell_centre(p);
+  vec4 w = weather_map_at(q, frame.weather_map_height, frame.weather_blend, frame.weather_pole_south, frame.weather_pole_north);
+  int channel = frame.layers[li].coverage_channel;
+  if (channel >= 0) {
+    vec4 c = layer_coverage_map_at(q, frame.weather_map_height, frame.weather_blend, frame.layer_coverage_pole_south,
+                                   frame.layer_coverage_pole_north);
+    w.r = c[channel];
+  }
+  return w;
 }
 
 // Fraction of the layer's depth the clouds fill at weather w: the cloud-type channel
@@ -60,9 +70,13 @@ float noise_quantile(float p) {
 // Width of the soft edge of the coverage threshold, in base-noise units.
 const float COVERAGE_EDGE = 0.12;
 
-// Local coverage of layer li at p: the layer's coverage modulated by the weather map
-// (weather/weather_map.h, local_coverage()).
-float local_coverage(CloudLayerGpu L, vec4 w) { return modulated_coverage(L.coverage, w.r); }
+// Local coverage of a layer where it reads the weather w (layer_weather_at): the layer's
+// coverage modulated by the map's R, or its coverage channel's value as it is
+// (weather::layer_local_coverage, weather/weather_map.h). With an upper bound of the map's
+// value in w.r, an upper bound.
+float local_coverage(CloudLayerGpu L, vec4 w) {
+  return L.coverage_channel >= 0 ? clamp(w.r, 0.0, 1.0) : modulated_coverage(L.coverage, w.r);
+}
 
 // The anvil of a convective layer (weather::Anvil, weather/cloud_layer.h): its weight at
 // the layer's height fraction f, rising over the lowest fifth of the band [base, top] and
@@ -199,7 +213,7 @@ float dome_cloud_fraction(int li, CloudLayerGpu L, vec3 p, float h, float c, flo
 #endif
 
 // sigma_t (1/m) of layer li at local point p with altitude alt, where the weather map
-// reads w (weather_at; the light march passes its sample's value: the map's texels are
+// reads w (layer_weather_at; the light march passes its sample's value: the map's texels are
 // ~40 km, a light march spans at most LIGHT_MARCH_REACH_M, 4 km); also returns the local
 // coverage (0 outside the layer). The cloud fraction d comes from the layer's model (a dome
 // layer's domes, or the noise threshold below); both read the base-shape noise once, and
@@ -262,7 +276,7 @@ float cloud_extinction(int li, vec3 p, float alt, int detail, out float coverage
   float f = (alt - L.base_m) / (L.top_m - L.base_m);
   coverage = 0.0;
   if (f <= 0.0 || f >= 1.0) return 0.0;
-  return cloud_extinction_in(li, p, alt, detail, weather_at(p), coverage);
+  return cloud_extinction_in(li, p, alt, detail, layer_weather_at(li, p), coverage);
 }
 
 float cloud_extinction(int li, vec3 p, float alt, int detail) {

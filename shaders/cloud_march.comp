@@ -182,7 +182,7 @@ RaySample march_ray(ivec2 q, vec3 dir) {
         float t = march_distance(u0 + (float(st) + jitter) * du, t_ref);
         vec3 p = t * dir;
         float alt = altitude_of(p, R, h);
-        vec4 w = weather_at(p);
+        vec4 w = layer_weather_at(li, p);
         if (probing) {
           // the probe covers the samples st - long_step + 1 .. st (those not yet marched):
           // any cloud on that stretch sends the march back over it at the normal step

@@ -16,6 +16,7 @@ struct CloudLayerGpu {
   vec4 anvil;  // weather::Anvil: spread (0: none), base, top, density_ratio
   mat4 noise_rotation;
   float ms_similarity;  // model::ms_similarity_scale: optical depths onto the source table's droplets
+  int coverage_channel;  // weather::CloudLayer::coverage_channel: -1 R-modulated, 0-3 a layer-coverage channel
   // the noises' stochastic tiling (noise_tiling.glsl): floor(camera's field position /
   // period) and the four lattices' hash seeds (weather::tiling_lattice_seed)
   ivec3 base_noise_cell;
@@ -64,6 +65,8 @@ layout(std140, binding = UBO_FRAME) uniform FrameUniforms {
   vec4 noise_quantiles[4];
   vec4 weather_pole_south;
   vec4 weather_pole_north;
+  vec4 layer_coverage_pole_south;  // the map's layer-coverage channels at the poles (row means)
+  vec4 layer_coverage_pole_north;
   vec4 ground_albedo;        // rgb; w 1: an albedo map (ground_albedo_at)
   vec4 ground_albedo_poles;  // the albedo map's (R, G) at the south pole, then the north's
   CloudLayerGpu layers[MAX_LAYERS];

@@ -34,7 +34,7 @@ void main() {
     float z = ((alt - h) * (2.0 * R + alt + h) - d2) / (sqrt((R + alt) * (R + alt) - d2) + R + h);
     vec3 p = vec3(d, z);
     float mu_s = dot(up_at(p, R, h), frame.sun_direction);
-    tau = light_optical_depth(li, p, alt, frame.sun_direction, mu_s, frame.light_steps, weather_at(p), 1e30);  // no cut-off: the volume is interpolated
+    tau = light_optical_depth(li, p, alt, frame.sun_direction, mu_s, frame.light_steps, layer_weather_at(li, p), 1e30);  // no cut-off: the volume is interpolated
   }
   if (frame.count_density_evaluations != 0) atomicAdd(counters.density_evals, g_density_evals);
   imageStore(volume_out, id, vec4(tau));

@@ -5,6 +5,10 @@
 
 layout(binding = TEX_WEATHER_MAP) uniform sampler2D weather_map;           // REPEAT in lon
 layout(binding = TEX_WEATHER_MAP_NEXT) uniform sampler2D weather_map_next;  // the next keyframe
+// the keyframes' layer-coverage channels (forecast weather; weather::WeatherMap::layer_coverage):
+// the maps' size, or 1 x 1 of zeros for a keyframe without them
+layout(binding = TEX_LAYER_COVERAGE) uniform sampler2D layer_coverage_map;
+layout(binding = TEX_LAYER_COVERAGE_NEXT) uniform sampler2D layer_coverage_map_next;
 
 // Latitude and longitude (rad) of the direction q from the shell centre, as the weather map
 // is indexed. atan2 for latitude keeps full precision near the poles (asin would lose ~km
@@ -35,6 +39,16 @@ vec4 weather_map_at(vec3 q, float map_height, float blend, vec4 pole_south, vec4
   if (blend > 0.0) w = mix(w, textureLod(weather_map_next, uv, 0.0), blend);
   vec2 pw = map_pole_weights(uv.y, map_height);
   return mix(mix(w, pole_south, pw.x), pole_north, pw.y);
+}
+
+// The layer-coverage channels in the direction q, sampled as weather_map_at samples the map
+// (the same texels, keyframe blend and pole blend).
+vec4 layer_coverage_map_at(vec3 q, float map_height, float blend, vec4 pole_south, vec4 pole_north) {
+  vec2 uv = map_uv(q);
+  vec4 c = textureLod(layer_coverage_map, uv, 0.0);
+  if (blend > 0.0) c = mix(c, textureLod(layer_coverage_map_next, uv, 0.0), blend);
+  vec2 pw = map_pole_weights(uv.y, map_height);
+  return mix(mix(c, pole_south, pw.x), pole_north, pw.y);
 }
 
 // A layer's coverage c modulated by the map's coverage channel m (weather::local_coverage).

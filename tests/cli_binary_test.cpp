@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "cloudsvc_run.h"
+#include "grib_test_support.h"
 #include "service/demo_scenes.h"
 
 namespace {
@@ -75,6 +76,40 @@ TEST_F(CliBinary, BadInputGivesOneLineExitTwoAndNoFile) {
       run_cloudsvc({"render", "--size", "32x18", "--out", (dir_ / "no" / "such" / "dir.png").string()}, dir_);
   EXPECT_EQ(unwritable.exit_code, 2);
   EXPECT_NE(unwritable.err.find("--out"), std::string::npos) << unwritable.err;
+}
+
+TEST_F(CliBinary, RenderDrawsAForecastWhereItPutsTheCloud) {
+  // Low cloud cover (GRIB2 0/6/1 on the low cloud layer) 100 % over 0-30 E, 0-60 N, with its
+  // bottom and top as pressures: looking down from 4 km at 30 N 15 E, the deck fills the view.
+  const fs::path grib = dir_ / "low.grib2";
+  cloudsvc::test::append_cloud_field(grib, 6, 1, 214, 100.0, 0);
+  cloudsvc::test::append_cloud_field(grib, 3, 0, 212, 90000.0, 0);
+  cloudsvc::test::append_cloud_field(grib, 3, 0, 213, 85000.0, 0);
+  const std::string out = (dir_ / "forecast.png").string();
+  const std::vector<std::string> view = {"--lat", "30", "--lon", "15", "--alt", "4000", "--pitch", "-90",
+                                         "--time", "2026-06-01T10:00:00Z", "--size", "48x27", "--out", out};
+  std::vector<std::string> args = {"render", "--weather", grib.string()};
+  args.insert(args.end(), view.begin(), view.end());
+  const RunResult r = run_cloudsvc(args, dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("(100.0 %)"), std::string::npos) << r.out;  // pixels with cloud
+  EXPECT_TRUE(fs::exists(out));
+  // Outside the forecast's area there is no cloud.
+  std::vector<std::string> west = args;
+  west[std::find(west.begin(), west.end(), "15") - west.begin()] = "-40";
+  const RunResult clear = run_cloudsvc(west, dir_);
+  ASSERT_EQ(clear.exit_code, 0) << clear.err;
+  EXPECT_NE(clear.out.find(" 0 pixels with cloud"), std::string::npos) << clear.out;
+  // The CPU renderers do not read forecasts; a bad forecast file names the problem.
+  args.insert(args.end(), {"--quality", "reference"});
+  const RunResult reference = run_cloudsvc(args, dir_);
+  EXPECT_EQ(reference.exit_code, 2);
+  EXPECT_NE(reference.err.find("GPU quality presets only"), std::string::npos) << reference.err;
+  const fs::path text = dir_ / "bad.grib2";
+  std::ofstream(text) << "nothing\n";
+  const RunResult bad = run_cloudsvc({"render", "--weather", text.string(), "--out", out}, dir_);
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_EQ(bad.err, "cloudsvc render: --weather " + text.string() + ": not a GRIB file (no GRIB message found)\n");
 }
 
 TEST_F(CliBinary, RenderWritesExrAndPngAndPrintsStats) {

@@ -72,7 +72,8 @@ Offsets expected_frame_uniforms() {
       MEMBER(FrameUniforms, coverage_pyramid), MEMBER(FrameUniforms, layer_count), MEMBER(FrameUniforms, frame_index),
       MEMBER(FrameUniforms, count_density_evaluations), MEMBER(FrameUniforms, footprint_jitter),
       ARRAY_MEMBER(FrameUniforms, noise_quantiles), MEMBER(FrameUniforms, weather_pole_south),
-      MEMBER(FrameUniforms, weather_pole_north), MEMBER(FrameUniforms, ground_albedo),
+      MEMBER(FrameUniforms, weather_pole_north), MEMBER(FrameUniforms, layer_coverage_pole_south),
+      MEMBER(FrameUniforms, layer_coverage_pole_north), MEMBER(FrameUniforms, ground_albedo),
       MEMBER(FrameUniforms, ground_albedo_poles)};
   const Offsets layer = {
       MEMBER(CloudLayerGpu, base_m), MEMBER(CloudLayerGpu, top_m), MEMBER(CloudLayerGpu, coverage),
@@ -83,7 +84,7 @@ Offsets expected_frame_uniforms() {
       MEMBER(CloudLayerGpu, top_weight), MEMBER(CloudLayerGpu, noise_vertical_scale),
       MEMBER(CloudLayerGpu, base_noise_offset), MEMBER(CloudLayerGpu, stratiform),
       MEMBER(CloudLayerGpu, detail_noise_offset), MEMBER(CloudLayerGpu, dome),
-      MEMBER(CloudLayerGpu, anvil), MEMBER(CloudLayerGpu, noise_rotation), MEMBER(CloudLayerGpu, ms_similarity),
+      MEMBER(CloudLayerGpu, anvil), MEMBER(CloudLayerGpu, noise_rotation), MEMBER(CloudLayerGpu, ms_similarity), MEMBER(CloudLayerGpu, coverage_channel),
       MEMBER(CloudLayerGpu, base_noise_cell), MEMBER(CloudLayerGpu, detail_noise_cell),
       MEMBER(CloudLayerGpu, base_tiling_seeds), MEMBER(CloudLayerGpu, detail_tiling_seeds),
       ARRAY_MEMBER(CloudLayerGpu, ground_transmittance)};

@@ -109,7 +109,7 @@ void fill_bands_from_profile(CloudColumn& column, std::vector<ProfileSample> pro
   }
 }
 
-std::vector<CloudLayer> layers_from_column(const CloudColumn& column) {
+std::array<SlotBand, kLayerSlots> slot_bands(const CloudColumn& column) {
   const BandValues& conv = column[CloudBand::Convective];
   const double conv_cover = given(conv.cover) ? conv.cover : 0.0;
   const bool convective = conv_cover >= kLeastLayerCover;
@@ -131,22 +131,30 @@ std::vector<CloudLayer> layers_from_column(const CloudColumn& column) {
     if (!given(low.base_m)) low.base_m = conv.base_m;
     if (!given(low.top_m)) low.top_m = conv.top_m;
   }
+  const bool near_ground = given(column.ground_m) && given(low.base_m) &&
+                           low.base_m - column.ground_m < kStratusBaseAboveGround_m;
 
   const BandValues& middle = column[CloudBand::Middle];
   const BandValues& high = column[CloudBand::High];
   const auto sheet_from = [](const BandValues& b, CloudType cellular, CloudType sheet) {
     return given(b.cover) && b.cover >= kSheetCover ? sheet : cellular;
   };
+  std::array<SlotBand, kLayerSlots> slots;
+  slots[kLowSlot] = {cumuliform ? CloudType::Cumulus : near_ground ? CloudType::Stratus : CloudType::Stratocumulus, low};
+  slots[kMiddleSlot] = {sheet_from(middle, CloudType::Altocumulus, CloudType::Altostratus), middle};
+  slots[kHighSlot] = {sheet_from(high, CloudType::Cirrus, CloudType::Cirrostratus), high};
+  slots[kDeepConvectionSlot] = {CloudType::Cumulonimbus, deep ? conv : BandValues{0.0}};
+  return slots;
+}
+
+std::vector<CloudLayer> layers_from_slots(const std::array<SlotBand, kLayerSlots>& slots) {
+  // Candidates in the order of precedence for equal cover: deep convection, low, middle, high.
   std::vector<CloudLayer> candidates;
-  const auto add = [&](std::optional<CloudLayer> layer) {
-    if (layer) candidates.push_back(*layer);
-  };
-  if (deep) add(band_layer(CloudType::Cumulonimbus, conv));
-  const bool near_ground = given(column.ground_m) && given(low.base_m) &&
-                           low.base_m - column.ground_m < kStratusBaseAboveGround_m;
-  add(band_layer(cumuliform ? CloudType::Cumulus : near_ground ? CloudType::Stratus : CloudType::Stratocumulus, low));
-  add(band_layer(sheet_from(middle, CloudType::Altocumulus, CloudType::Altostratus), middle));
-  add(band_layer(sheet_from(high, CloudType::Cirrus, CloudType::Cirrostratus), high));
+  for (int k : {kDeepConvectionSlot, kLowSlot, kMiddleSlot, kHighSlot})
+    if (std::optional<CloudLayer> layer = band_layer(slots[k].type, slots[k].band)) {
+      layer->coverage_channel = k;
+      candidates.push_back(*layer);
+    }
   // Where layers overlap, the one covering more of the sky keeps its altitudes (ties: the
   // order above) and the others move into the free part of their range.
   std::stable_sort(candidates.begin(), candidates.end(),
@@ -156,6 +164,18 @@ std::vector<CloudLayer> layers_from_column(const CloudColumn& column) {
     if (static_cast<int>(placed.size()) < kMaxCloudLayers) place_apart(placed, layer);
   std::sort(placed.begin(), placed.end(), [](const CloudLayer& a, const CloudLayer& b) { return a.base_m < b.base_m; });
   return placed;
+}
+
+std::vector<CloudLayer> layers_from_column(const CloudColumn& column) { return layers_from_slots(slot_bands(column)); }
+
+std::array<float, kLayerSlots> slot_covers(const CloudColumn& column) {
+  const std::array<SlotBand, kLayerSlots> slots = slot_bands(column);
+  std::array<float, kLayerSlots> covers{};
+  for (int k = 0; k < kLayerSlots; ++k) {
+    const double c = slots[k].band.cover;
+    covers[k] = given(c) ? static_cast<float>(std::clamp(c, 0.0, 1.0)) : 0.0f;
+  }
+  return covers;
 }
 
 }  // namespace cloudsvc::weather

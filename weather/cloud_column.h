@@ -84,7 +84,30 @@ inline constexpr double kLeastLayerCover = 0.01;
 // model level, or equal pressures) is widened upwards to it.
 inline constexpr double kLeastBandThickness_m = 300.0;
 
-// The renderer's layers for a column, sorted by base; weather::validate accepts them.
+// The renderer's layer slots of forecast weather: the low cloud (stratus, stratocumulus or
+// cumulus), the middle and high cloud and deep convection (cumulonimbus). A layer made from
+// slot k reads its local coverage from channel k of the weather map's layer coverage
+// (CloudLayer::coverage_channel, weather_map.h).
+inline constexpr int kLayerSlots = 4;
+inline constexpr int kLowSlot = 0, kMiddleSlot = 1, kHighSlot = 2, kDeepConvectionSlot = 3;
+
+// A slot's cloud type and band at a column (the band the slot's layer is made from).
+struct SlotBand {
+  CloudType type = CloudType::Stratocumulus;
+  BandValues band;
+};
+// The column's slots by the rules above (cover NaN or 0 where a slot has no cloud).
+std::array<SlotBand, kLayerSlots> slot_bands(const CloudColumn& column);
+
+// The layers of the slots, each with its slot as coverage channel, sorted by base and placed
+// apart; weather::validate accepts them.
+std::vector<CloudLayer> layers_from_slots(const std::array<SlotBand, kLayerSlots>& slots);
+
+// The renderer's layers for a column: layers_from_slots(slot_bands(column)).
 std::vector<CloudLayer> layers_from_column(const CloudColumn& column);
+
+// The cover of each slot at a column (0 where it has none): the layer-coverage channels of
+// the weather map at that point.
+std::array<float, kLayerSlots> slot_covers(const CloudColumn& column);
 
 }  // namespace cloudsvc::weather

@@ -249,6 +249,8 @@ std::optional<ValidationIssue> validate_layer(const CloudLayer& l, int i) {
     return ValidationIssue{layer_field(i, "wind_mps"), "speed " + num(speed) + " m/s exceeds " +
                                                            num(kMaxWindSpeed_mps) + " m/s"};
   }
+  if (l.coverage_channel < -1 || l.coverage_channel > 3)
+    return ValidationIssue{layer_field(i, "coverage_channel"), std::to_string(l.coverage_channel) + " out of range [-1, 3]"};
   return std::nullopt;
 }
 

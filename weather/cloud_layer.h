@@ -130,6 +130,11 @@ struct CloudLayer {
   double density_scale = 1.0;          // multiplier on microphysical extinction, [0, 10]
   double droplet_diameter_um = 20.0;   // [5, 50]
   Wind wind;                           // m/s, drives the cloud field's drift
+  // Where the layer's local coverage comes from: -1, its coverage modulated by the weather
+  // map's R channel (weather_map.h, local_coverage); 0-3, the map's layer-coverage channel
+  // of that number as it is (forecast weather: weather/forecast_frame.h). Not part of
+  // weather files or the protocol's layers.
+  int coverage_channel = -1;
 };
 
 constexpr int kMaxCloudLayers = 4;
@@ -153,7 +158,7 @@ struct Weather {
 // [-500, 20000], top_m in (base_m, 20000] with top_m - base_m >= 10, coverage [0, 1],
 // density_scale [0, 10], droplet_diameter_um [5, 50], |wind| <= 150 m/s, type not None;
 // layers sorted by base_m and not overlapping in altitude (touching is allowed);
-// ground_albedo, when set, finite and in [0, 1].
+// coverage_channel in [-1, 3]; ground_albedo, when set, finite and in [0, 1].
 std::string validate(const Weather& w);
 
 // The same checks, with the field ("layers[1].coverage") and the problem ("1.5 out of range

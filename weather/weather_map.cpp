@@ -74,12 +74,28 @@ WeatherMap generate_procedural_map(std::uint32_t seed, int width, int height,
   return map;
 }
 
-void WeatherMap::sample(double lat_deg, double lon_deg, float out[4]) const {
-  const bool usable = width > 0 && height > 0 &&
-                      rgba.size() >= static_cast<std::size_t>(width) * height * 4 &&
+namespace {
+
+// Mean of the southernmost or northernmost row of a 4-channel grid; `fallback` for an empty one.
+void grid_pole_value(const std::vector<float>& data, int width, int height, bool north, const float fallback[4],
+                     float out[4]) {
+  double mean[4] = {0, 0, 0, 0};
+  const bool usable = width > 0 && height > 0 && data.size() >= static_cast<std::size_t>(width) * height * 4;
+  if (usable) {
+    const float* row = &data[static_cast<std::size_t>(north ? height - 1 : 0) * width * 4];
+    for (int i = 0; i < width; ++i)
+      for (int k = 0; k < 4; ++k) mean[k] += row[4 * i + k];
+  }
+  for (int k = 0; k < 4; ++k) out[k] = usable ? static_cast<float>(mean[k] / width) : fallback[k];
+}
+
+// Bilinear sample of a 4-channel grid of the map's texels (see WeatherMap::sample).
+void sample_grid(const std::vector<float>& data, int width, int height, double lat_deg, double lon_deg,
+                 const float fallback[4], float out[4]) {
+  const bool usable = width > 0 && height > 0 && data.size() >= static_cast<std::size_t>(width) * height * 4 &&
                       std::isfinite(lat_deg) && std::isfinite(lon_deg);
   if (!usable) {
-    std::copy(kNeutral, kNeutral + 4, out);
+    std::copy(fallback, fallback + 4, out);
     return;
   }
   // Longitude into [0, 360) from -180 first (exact for |lon| < 2^53), then to texel-centre
@@ -94,9 +110,7 @@ void WeatherMap::sample(double lat_deg, double lon_deg, float out[4]) const {
   const int i1 = (i0 + 1 == width) ? 0 : i0 + 1;
   const double tx = x - fx;
 
-  const auto texel = [this](int i, int j) {
-    return &rgba[(static_cast<std::size_t>(j) * width + i) * 4];
-  };
+  const auto texel = [&](int i, int j) { return &data[(static_cast<std::size_t>(j) * width + i) * 4]; };
   // Bilinear in longitude along row j.
   const auto along_row = [&](int j, int k) {
     const float a = texel(i0, j)[k], b = texel(i1, j)[k];
@@ -118,21 +132,45 @@ void WeatherMap::sample(double lat_deg, double lon_deg, float out[4]) const {
   const int j = y < 0.0 ? 0 : height - 1;
   const double t = std::min(1.0, 2.0 * (y < 0.0 ? -y : y - (height - 1.0)));
   float pole[4];
-  pole_value(j != 0, pole);
+  grid_pole_value(data, width, height, j != 0, fallback, pole);
   for (int k = 0; k < 4; ++k) {
     const double ring = along_row(j, k);
     out[k] = static_cast<float>(ring + t * (pole[k] - ring));
   }
 }
 
-void WeatherMap::pole_value(bool north, float out[4]) const {
-  double mean[4] = {0, 0, 0, 0};
-  if (width > 0 && height > 0) {
-    const float* row = &rgba[static_cast<std::size_t>(north ? height - 1 : 0) * width * 4];
-    for (int i = 0; i < width; ++i)
-      for (int k = 0; k < 4; ++k) mean[k] += row[4 * i + k];
+constexpr float kNoCoverage[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+
+}  // namespace
+
+void WeatherMap::sample(double lat_deg, double lon_deg, float out[4]) const {
+  sample_grid(rgba, width, height, lat_deg, lon_deg, kNeutral, out);
+}
+
+void WeatherMap::pole_value(bool north, float out[4]) const { grid_pole_value(rgba, width, height, north, kNeutral, out); }
+
+void WeatherMap::sample_layer_coverage(double lat_deg, double lon_deg, float out[4]) const {
+  if (!has_layer_coverage()) {
+    std::copy(kNoCoverage, kNoCoverage + 4, out);
+    return;
   }
-  for (int k = 0; k < 4; ++k) out[k] = width > 0 ? static_cast<float>(mean[k] / width) : (k < 3 ? 0.5f : 0.0f);
+  sample_grid(layer_coverage, width, height, lat_deg, lon_deg, kNoCoverage, out);
+}
+
+void WeatherMap::layer_coverage_pole_value(bool north, float out[4]) const {
+  if (!has_layer_coverage()) {
+    std::copy(kNoCoverage, kNoCoverage + 4, out);
+    return;
+  }
+  grid_pole_value(layer_coverage, width, height, north, kNoCoverage, out);
+}
+
+float WeatherMap::coverage_bound(std::size_t n) const {
+  const auto bound = [](float v, float m) { return !(v <= m) ? (std::isfinite(v) ? v : 1.0f) : m; };
+  float m = bound(rgba[4 * n], 0.0f);
+  if (has_layer_coverage())
+    for (int k = 0; k < 4; ++k) m = bound(layer_coverage[4 * n + k], m);
+  return m;
 }
 
 namespace {
@@ -148,6 +186,10 @@ T modulated_layer_coverage(T layer_coverage, T m) {
 }  // namespace
 
 float local_coverage(float layer_coverage, float m) { return modulated_layer_coverage(layer_coverage, m); }
+float layer_local_coverage(int channel, float layer_coverage, float value) {
+  if (channel < 0) return local_coverage(layer_coverage, value);
+  return std::isfinite(value) ? std::clamp(value, 0.0f, 1.0f) : 0.0f;
+}
 double local_coverage(double layer_coverage, double m) { return modulated_layer_coverage(layer_coverage, m); }
 
 }  // namespace cloudsvc::weather

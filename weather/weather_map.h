@@ -20,6 +20,10 @@ struct WeatherMap {
   int width = 0;
   int height = 0;
   std::vector<float> rgba;  // width * height * 4, row-major from the south
+  // Coverage per layer slot (forecast weather, weather/forecast_frame.h): width * height * 4
+  // floats on the same texels, channel k the local coverage [0, 1] of the layers whose
+  // CloudLayer::coverage_channel is k (taken as it is, not modulated by R); empty: none.
+  std::vector<float> layer_coverage;
 
   // Bilinear sample at a geodetic position, wrapping in longitude (no antimeridian
   // seam) and clamping in latitude. Returns 4 channels.
@@ -35,6 +39,16 @@ struct WeatherMap {
   // Mean of the southernmost (north = false) or northernmost row: the value at the pole
   // that sample() blends to (the GPU sampler does the same).
   void pole_value(bool north, float out[4]) const;
+
+  // The same for layer_coverage (4 channels; all 0 when the map has none).
+  void sample_layer_coverage(double lat_deg, double lon_deg, float out[4]) const;
+  void layer_coverage_pole_value(bool north, float out[4]) const;
+  bool has_layer_coverage() const { return layer_coverage.size() == rgba.size() && !rgba.empty(); }
+
+  // An upper bound of what texel n gives layer_local_coverage for any layer: its coverage
+  // modulation R, and with layer coverage the largest of R and the four channels (local
+  // coverage grows with R, so the bound holds for layers of either kind). For culling.
+  float coverage_bound(std::size_t n) const;
 };
 
 // Deterministic procedural map from a seed: smooth noise evaluated on the unit sphere
@@ -50,5 +64,11 @@ WeatherMap generate_procedural_map(std::uint32_t seed, int width = 1024, int hei
 // modulated_coverage is the same formula). A non-finite coverage gives 0, a non-finite m 0.5.
 float local_coverage(float layer_coverage, float m);
 double local_coverage(double layer_coverage, double m);
+
+// Local coverage of a layer whose coverage channel is `channel` (CloudLayer::coverage_channel)
+// where the map gives `value`: the channel's value itself (clamped to [0, 1]) for a channel
+// >= 0, else local_coverage(layer_coverage, value) with value the modulation R. With an
+// upper bound of the map's value (coverage_bound), an upper bound of the local coverage.
+float layer_local_coverage(int channel, float layer_coverage, float value);
 
 }  // namespace cloudsvc::weather

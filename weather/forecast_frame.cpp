@@ -1,0 +1,99 @@
+// Forecast weather -> the renderer's layers and layer-coverage map (forecast_frame.h).
+#include "weather/forecast_frame.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "common/parallel_for.h"
+
+namespace cloudsvc::weather {
+
+namespace {
+
+constexpr double kDeg = 3.14159265358979323846 / 180.0;
+constexpr double kEarthRadius_m = 6371008.8;  // mean radius (IUGG): offsets of the region's points
+constexpr int kRings = 3, kPointsPerRing = 8;
+
+bool given(double v) { return std::isfinite(v); }
+
+// The point at distance d (m) and bearing b (rad) from (lat, lon) on the sphere.
+void offset_point(double lat, double lon, double d, double b, double& lat_out, double& lon_out) {
+  const double a = d / kEarthRadius_m, p = lat * kDeg;
+  const double sp = std::sin(p) * std::cos(a) + std::cos(p) * std::sin(a) * std::cos(b);
+  lat_out = std::asin(std::clamp(sp, -1.0, 1.0)) / kDeg;
+  lon_out = lon + std::atan2(std::sin(b) * std::sin(a) * std::cos(p), std::cos(a) - std::sin(p) * sp) / kDeg;
+}
+
+}  // namespace
+
+CloudColumn regional_column(const ForecastWeather& w, double lat_deg, double lon_deg, double utc_s) {
+  struct Sum {
+    double n = 0, cover = 0, wc_base = 0, base = 0, wc_top = 0, top = 0;
+  };
+  Sum sums[kColumnBands];
+  double ground = 0.0, ground_n = 0.0;
+  const auto add = [&](double lat, double lon) {
+    const CloudColumn c = w.column_at(lat, lon, utc_s);
+    if (given(c.ground_m)) ground += c.ground_m, ground_n += 1.0;
+    for (int b = 0; b < kColumnBands; ++b) {
+      const BandValues& v = c.bands[b];
+      if (!given(v.cover)) continue;
+      Sum& s = sums[b];
+      s.n += 1.0;
+      s.cover += v.cover;
+      if (v.cover < kLeastLayerCover) continue;
+      if (given(v.base_m)) s.wc_base += v.cover, s.base += v.cover * v.base_m;
+      if (given(v.top_m)) s.wc_top += v.cover, s.top += v.cover * v.top_m;
+    }
+  };
+  add(lat_deg, lon_deg);
+  for (int r = 1; r <= kRings; ++r)
+    for (int k = 0; k < kPointsPerRing; ++k) {
+      double lat, lon;
+      offset_point(lat_deg, lon_deg, kForecastRegion_m * r / kRings, 2.0 * M_PI * (k + 0.5 * (r % 2)) / kPointsPerRing, lat, lon);
+      add(lat, lon);
+    }
+  CloudColumn out;
+  if (ground_n > 0.0) out.ground_m = ground / ground_n;
+  for (int b = 0; b < kColumnBands; ++b) {
+    const Sum& s = sums[b];
+    if (s.n <= 0.0) continue;
+    out.bands[b].cover = s.cover / s.n;
+    if (s.wc_base > 0.0) out.bands[b].base_m = s.base / s.wc_base;
+    if (s.wc_top > 0.0) out.bands[b].top_m = s.top / s.wc_top;
+  }
+  return out;
+}
+
+Weather forecast_weather_at(const ForecastWeather& w, double lat_deg, double lon_deg, double utc_s) {
+  Weather out;
+  out.name = w.name();
+  out.layers = layers_from_column(regional_column(w, lat_deg, lon_deg, utc_s));
+  return out;
+}
+
+WeatherMap forecast_map(const ForecastWeather& w, double utc_s, int width, int height) {
+  WeatherMap map;
+  if (width <= 0 || height <= 0) return map;
+  map.width = width;
+  map.height = height;
+  const std::size_t texels = static_cast<std::size_t>(width) * height;
+  map.rgba.resize(texels * 4);
+  for (std::size_t n = 0; n < texels; ++n) {
+    map.rgba[4 * n] = map.rgba[4 * n + 1] = map.rgba[4 * n + 2] = 0.5f;
+    map.rgba[4 * n + 3] = 0.0f;
+  }
+  map.layer_coverage.assign(texels * 4, 0.0f);
+  parallel_for(height, kAllThreads, [&](int j) {
+    const double lat = -90.0 + (j + 0.5) * 180.0 / height;
+    for (int i = 0; i < width; ++i) {
+      const double lon = -180.0 + (i + 0.5) * 360.0 / width;
+      const std::array<float, kLayerSlots> c = slot_covers(w.column_at(lat, lon, utc_s));
+      float* out = &map.layer_coverage[(static_cast<std::size_t>(j) * width + i) * 4];
+      for (int k = 0; k < kLayerSlots; ++k) out[k] = c[k];
+    }
+  });
+  return map;
+}
+
+}  // namespace cloudsvc::weather

@@ -1,0 +1,32 @@
+// What the renderer draws from forecast weather (GRIB2 forecasts, METAR reports:
+// forecast_weather.h) around a position at a time.
+//
+// The layers (cloud types, bases and tops) are those of the region around the position:
+// each band averaged over points within kForecastRegion_m of it (cover as the mean over the
+// points, base and top weighted by cover), then turned into layer slots and layers as at a
+// point (cloud_column.h). Each layer reads its local coverage from its slot's channel of the
+// weather map's layer coverage (CloudLayer::coverage_channel), which holds the slots' cover
+// at every texel: the cloud is where the forecast puts it, at the altitudes of the region.
+// Moving more than kForecastRegion_m / 2 calls for new layers (the service does).
+#pragma once
+
+#include "weather/cloud_layer.h"
+#include "weather/forecast_weather.h"
+#include "weather/weather_map.h"
+
+namespace cloudsvc::weather {
+
+inline constexpr double kForecastRegion_m = 150000.0;
+
+// The regional column around a position (degrees) at a time (UTC seconds).
+CloudColumn regional_column(const ForecastWeather& w, double lat_deg, double lon_deg, double utc_s);
+
+// The weather of the region: its layers (each with its coverage channel), named after the
+// source; validate() accepts it.
+Weather forecast_weather_at(const ForecastWeather& w, double lat_deg, double lon_deg, double utc_s);
+
+// A global map of width x height texels at a time: R, G, B neutral (0.5) and A 0, and every
+// texel's slot covers (slot_covers) as its layer coverage. Rows in parallel on all cores.
+WeatherMap forecast_map(const ForecastWeather& w, double utc_s, int width, int height);
+
+}  // namespace cloudsvc::weather

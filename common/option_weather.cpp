@@ -51,6 +51,15 @@ weather::Weather load_weather_file(std::string_view flag, const std::string& pat
   return w;
 }
 
+std::shared_ptr<const weather::ForecastWeather> load_forecast(std::string_view flag, const std::string& path,
+                                                              double reference_utc_s) {
+  try {
+    return weather::load_forecast_weather({path}, reference_utc_s);
+  } catch (const weather::WeatherFileError& e) {
+    fail(flag, path, without_path_prefix(e.what(), path));
+  }
+}
+
 weather::Weather resolve_weather(std::string_view flag, const std::string& arg) {
   if (ends_with_ci(arg, ".json")) return load_weather_file(flag, arg);
   if (std::optional<weather::Weather> w = weather::preset(arg)) return *w;

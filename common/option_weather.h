@@ -2,10 +2,12 @@
 // (weather/weather_json.h, docs/WEATHER.md). FlagError (option_values.h) names the flag.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <string_view>
 
 #include "weather/cloud_layer.h"
+#include "weather/forecast_weather.h"
 
 namespace cloudsvc::cli {
 
@@ -15,6 +17,11 @@ weather::Weather weather_preset(std::string_view flag, const std::string& name);
 // The weather file at `path`, read and validated; FlagError names the problem (not found,
 // not a regular file, the file's first error).
 weather::Weather load_weather_file(std::string_view flag, const std::string& path);
+
+// Forecast weather from a GRIB2 or METAR file (weather/forecast_weather.h; METAR reports
+// dated by reference_utc_s), or FlagError naming the flag, the file and the problem.
+std::shared_ptr<const weather::ForecastWeather> load_forecast(std::string_view flag, const std::string& path,
+                                                              double reference_utc_s);
 
 // A preset name, or a path ending in .json (any case) read as a weather file.
 weather::Weather resolve_weather(std::string_view flag, const std::string& arg);

@@ -42,28 +42,47 @@ void CloudRenderer::apply_tile(const weather::MapTile& tile, double now_utc_s) {
   }
 }
 
-void CloudRenderer::set_weather(const weather::Weather& w) {
+void CloudRenderer::adopt_weather(const weather::Weather& w) {
   const std::string problem = weather::validate(w);
   if (!problem.empty()) throw std::invalid_argument("invalid weather: " + problem);
   weather_ = w;
   ++weather_generation_;
   wind_anchor_.reset();
   cloud_buffer_.reset_history();  // new clouds: nothing to reuse
-  if (!map_valid_ || map_seed_ != w.map_seed) {
+}
+
+void CloudRenderer::set_weather(const weather::Weather& w) {
+  adopt_weather(w);
+  if (!map_valid_ || map_seed_ != w.map_seed || forecast_map_) {
     timeline_.reset(weather::generate_procedural_map(w.map_seed, config_.weather_map_width, config_.weather_map_height));
     map_seed_ = w.map_seed;
     map_valid_ = true;
+    forecast_map_ = false;
   }
 }
 
 void CloudRenderer::set_forecast(const weather::Weather& w, weather::WeatherMap map) {
-  if (map.width != config_.weather_map_width || map.height != config_.weather_map_height || !map.has_layer_coverage())
-    throw std::invalid_argument("forecast map: expected " + std::to_string(config_.weather_map_width) + " x " +
-                                std::to_string(config_.weather_map_height) + " texels with layer coverage");
-  set_weather(w);
-  timeline_.reset(std::move(map));
+  set_forecast(w, {{0.0, std::move(map)}});
+}
+
+void CloudRenderer::set_forecast(const weather::Weather& w, std::vector<std::pair<double, weather::WeatherMap>> keyframes) {
+  for (const auto& [t, map] : keyframes)
+    if (map.width != config_.weather_map_width || map.height != config_.weather_map_height || !map.has_layer_coverage())
+      throw std::invalid_argument("forecast map: expected " + std::to_string(config_.weather_map_width) + " x " +
+                                  std::to_string(config_.weather_map_height) + " texels with layer coverage");
+  const std::string problem = weather::validate(w);
+  if (!problem.empty()) throw std::invalid_argument("invalid weather: " + problem);
+  // the same timeline: its keyframe versions keep counting, so the GPU uploads the new ones
+  timeline_.reset(std::move(keyframes));  // throws before it changes anything
+  adopt_weather(w);
   map_seed_ = w.map_seed;
   map_valid_ = true;
+  forecast_map_ = true;
+}
+
+void CloudRenderer::update_forecast_layers(const weather::Weather& w) {
+  if (!forecast_map_) throw std::logic_error("update_forecast_layers without a forecast");
+  adopt_weather(w);
 }
 
 // Layers with no cloud anywhere this frame can see (renderer/coverage_cull.h) are marked

@@ -48,11 +48,16 @@ class CloudRenderer {
   const weather::Weather& weather() const { return weather_; }
 
   // Sets forecast weather (weather/forecast_frame.h): layers that read the layer-coverage
-  // channels of `map`, which replaces the weather map (its size must be the renderer's:
-  // weather_map_width x weather_map_height of the RendererConfig). Throws
-  // std::invalid_argument for a weather validate() rejects or a map of another size. A
-  // later set_weather with the same map seed keeps the map (its R channel is neutral).
+  // channels of the maps, which replace the weather map's keyframes (one map for now, or
+  // keyframes at their valid times, up to WeatherTimeline::kMaxKeyframes; each of the
+  // renderer's size, weather_map_width x weather_map_height of the RendererConfig, with
+  // layer coverage). Throws std::invalid_argument for a weather validate() rejects or maps
+  // that break those rules. set_weather afterwards returns to the procedural map.
   void set_forecast(const weather::Weather& w, weather::WeatherMap map);
+  void set_forecast(const weather::Weather& w, std::vector<std::pair<double, weather::WeatherMap>> keyframes);
+  // New layers for the forecast's keyframes (the region moved); std::logic_error without a forecast.
+  void update_forecast_layers(const weather::Weather& w);
+  bool has_forecast() const { return forecast_map_; }
   int weather_map_width() const { return config_.weather_map_width; }
   int weather_map_height() const { return config_.weather_map_height; }
 
@@ -85,6 +90,8 @@ class CloudRenderer {
   weather::Weather weather_;
   std::uint32_t map_seed_ = 0;
   bool map_valid_ = false;
+  bool forecast_map_ = false;  // the keyframes are a forecast's (set_forecast)
+  void adopt_weather(const weather::Weather& w);  // validate, take w, start the clouds afresh
   weather::WeatherTimeline timeline_;
   weather::GroundAlbedoMap ground_albedo_map_;
   std::optional<WindAnchor> wind_anchor_;  // latched at the first view after set_weather

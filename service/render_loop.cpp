@@ -11,6 +11,7 @@
 #include "renderer/cloud_renderer.h"
 #include "renderer/gl/egl_context.h"
 #include "renderer/quality_presets.h"
+#include "service/forecast_tracker.h"
 #include "service/frame_sinks.h"
 #include "service/sim_clock.h"
 #include "service/window_presenter.h"
@@ -119,6 +120,7 @@ class RenderLoop::Run {
   CloudRenderer renderer_;
   protocol::SetView view_;
   SimClock clock_;
+  std::unique_ptr<ForecastTracker> forecast_;  // --weather FILE.grib2|.metar, until a client sends layers
   std::optional<PendingPose> pose_;  // the pose on screen
   std::uint64_t frame_ = 0;          // frames begun, numbering them from 1
   SteadyClock::time_point fps_window_start_;
@@ -131,7 +133,10 @@ RenderLoop::Run::Run(RenderLoop& loop)
                               : nullptr),
       egl_(window_ ? nullptr : std::make_unique<gl::EglContext>()), renderer_(renderer_config(options_)),
       view_(initial_view(options_)) {
-  renderer_.set_weather(options_.weather);
+  if (options_.forecast)
+    forecast_ = std::make_unique<ForecastTracker>(options_.forecast, renderer_.weather_map_width(), renderer_.weather_map_height());
+  else
+    renderer_.set_weather(options_.weather);
   clock_.set(options_.unix_time_s);
   fps_window_start_ = SteadyClock::now();
 }
@@ -144,7 +149,10 @@ void RenderLoop::Run::poll_window() {
 
 void RenderLoop::Run::apply_change(StateChange& c) {
   if (auto* v = std::get_if<protocol::SetView>(&c)) view_ = *v;
-  else if (auto* w = std::get_if<protocol::WeatherLayers>(&c)) renderer_.set_weather(to_weather(*w));
+  else if (auto* w = std::get_if<protocol::WeatherLayers>(&c)) {
+    renderer_.set_weather(to_weather(*w));  // a client's layers replace the forecast
+    forecast_.reset();
+  }
   else if (auto* t = std::get_if<protocol::SetTime>(&c)) clock_.set(t->utc_unix_s);
   else if (auto* tile = std::get_if<protocol::WeatherMapTile>(&c)) apply_tile(*tile);
 }
@@ -178,6 +186,7 @@ void RenderLoop::Run::on_pose(const PendingPose& p) {
   }
   clock_.observe(p.pose);
   pose_ = p;
+  if (forecast_) forecast_->update(renderer_, p.pose.lat_deg, p.pose.lon_deg, utc);
   render_and_publish(*pose_, FrameAddress{});
 }
 

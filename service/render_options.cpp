@@ -330,13 +330,7 @@ void apply_scene_and_output(const RenderArgs& a, RenderOptions& opt) {
   if (weather::is_forecast_path(opt.weather_arg)) {
     if (opt.quality == "reference" || opt.quality == "truth")
       fail("--weather", opt.weather_arg, "GRIB2 and METAR weather is drawn by the GPU quality presets only, not --quality " + opt.quality);
-    try {
-      opt.forecast = weather::load_forecast_weather({opt.weather_arg}, opt.unix_time_s);
-    } catch (const weather::WeatherFileError& e) {
-      std::string message = e.what();
-      if (message.rfind(opt.weather_arg + ": ", 0) == 0) message.erase(0, opt.weather_arg.size() + 2);
-      fail("--weather", opt.weather_arg, message);
-    }
+    opt.forecast = cli::load_forecast("--weather", opt.weather_arg, opt.unix_time_s);
     opt.weather = weather::forecast_weather_at(*opt.forecast, opt.position.lat_deg, opt.position.lon_deg, opt.unix_time_s);
   } else {
     opt.weather = resolve_weather("--weather", opt.weather_arg);

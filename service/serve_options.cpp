@@ -280,16 +280,18 @@ void apply_endpoints(const ServeCommandLine::Args& a, ServeOptions& opt) {
 
 void apply_scene(const ServeCommandLine::Args& a, ServeOptions& opt) {
   const CLI::App& cmd = *a.command;
-  if (given(cmd, "--weather")) opt.weather_arg = a.weather;
-  if (weather::is_forecast_path(opt.weather_arg))
-    fail("--weather", opt.weather_arg,
-         "GRIB2 and METAR weather is not served yet (cloudsvc render and cloudsvc weather-info read it)");
-  opt.weather = resolve_weather("--weather", opt.weather_arg);
   if (given(cmd, "--time")) {
     opt.time_text = a.time;
     opt.unix_time_s = parse_time("--time", a.time);
   } else {
     opt.unix_time_s = now_unix_s();  // time_text stays empty: not given
+  }
+  if (given(cmd, "--weather")) opt.weather_arg = a.weather;
+  if (weather::is_forecast_path(opt.weather_arg)) {
+    // the layers follow the poses (service/forecast_tracker.h); none until the first one
+    opt.forecast = load_forecast("--weather", opt.weather_arg, opt.unix_time_s);
+  } else {
+    opt.weather = resolve_weather("--weather", opt.weather_arg);
   }
   if (given(cmd, "--size")) std::tie(opt.width, opt.height) = parse_image_size("--size", a.size);
   if (given(cmd, "--fov")) opt.fov_deg = parse_number("--fov", a.fov, kFieldOfView);

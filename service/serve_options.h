@@ -9,6 +9,7 @@
 
 #include "renderer/model/mie_phase_table.h"
 #include "weather/cloud_layer.h"
+#include "weather/forecast_weather.h"
 
 namespace cloudsvc {
 
@@ -29,11 +30,12 @@ struct ServeOptions {
   int shm_max_height = 1080;
   bool window = false;                // --window: show frames in a GLFW window
   std::string out_dir;                // --out-dir DIR: write every frame there (PNG); empty = no file sink
-  std::string weather_arg = "broken-cumulus";  // --weather PRESET|FILE.json: weather at start
+  std::string weather_arg = "broken-cumulus";  // --weather PRESET|FILE: weather at start
   bool cumulus_domes = false;                  // --cumulus-domes: cumulus layers as individual domes
   bool noise_tiling = false;                   // --noise-tiling: RendererConfig::noise_tiling
   model::CloudPhaseModel cloud_phase = model::CloudPhaseModel::kFit;  // --cloud-phase fit|mie
-  weather::Weather weather;                    // resolved
+  weather::Weather weather;                    // resolved (empty with a forecast)
+  std::shared_ptr<const weather::ForecastWeather> forecast;  // --weather FILE.grib2|.metar|.txt
   std::string time_text;              // --time UTC ISO 8601 used until a client sends time; default: now
   double unix_time_s = 0.0;           // resolved (now when --time is absent)
   int width = 640;                    // --size WxH: initial view until a client sends SetView

@@ -395,10 +395,9 @@ TEST_F(CliServeOptionsTest, SceneFlags) {
   ASSERT_EQ(f.weather.layers.size(), cb->layers.size());
   ASSERT_FALSE(f.weather.layers.empty());
   EXPECT_DOUBLE_EQ(f.weather.layers[0].base_m, cb->layers[0].base_m);
-  // Forecasts are not served yet: said plainly, not as an unknown preset.
-  EXPECT_EQ(run({"serve", "--weather", "gfs.grib2"}).cmd.error,
-            "cloudsvc serve: --weather gfs.grib2: GRIB2 and METAR weather is not served yet (cloudsvc render and "
-            "cloudsvc weather-info read it)");
+  // A forecast file is read, not taken for an unknown preset.
+  EXPECT_EQ(run({"serve", "--weather", "/no/such/gfs.grib2"}).cmd.error,
+            "cloudsvc serve: --weather /no/such/gfs.grib2: cannot open: No such file or directory");
 }
 
 TEST_F(CliServeOptionsTest, LimitFlags) {

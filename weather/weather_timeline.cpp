@@ -4,6 +4,8 @@
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 namespace cloudsvc::weather {
 
@@ -53,6 +55,17 @@ WeatherTimeline::WeatherTimeline(WeatherMap base) { reset(std::move(base)); }
 void WeatherTimeline::reset(WeatherMap base) {
   frames_.clear();
   frames_[-std::numeric_limits<double>::infinity()] = Keyframe{std::move(base), next_version_++};
+}
+
+void WeatherTimeline::reset(std::vector<std::pair<double, WeatherMap>> keyframes) {
+  if (keyframes.empty() || keyframes.size() > kMaxKeyframes)
+    throw std::invalid_argument("weather timeline: " + std::to_string(keyframes.size()) + " keyframes, expected 1 to " +
+                                std::to_string(kMaxKeyframes));
+  for (const auto& [t, map] : keyframes)
+    if (!std::isfinite(t) || map.width != keyframes.front().second.width || map.height != keyframes.front().second.height)
+      throw std::invalid_argument("weather timeline: keyframes need finite times and one size");
+  frames_.clear();
+  for (auto& [t, map] : keyframes) frames_[t] = Keyframe{std::move(map), next_version_++};
 }
 
 std::map<double, WeatherTimeline::Keyframe>::const_iterator WeatherTimeline::keyframe_in_use(double t) const {

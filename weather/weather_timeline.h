@@ -14,6 +14,7 @@
 
 #include <cstdint>
 #include <map>
+#include <utility>
 #include <vector>
 
 #include "weather/map_tile.h"
@@ -43,6 +44,9 @@ class WeatherTimeline {
 
   // Replaces everything with one keyframe (e.g. a new procedural map).
   void reset(WeatherMap base);
+  // Replaces everything with keyframes valid at the given UTC times (forecast steps; at
+  // least one, at most kMaxKeyframes, all of one size). Throws std::invalid_argument otherwise.
+  void reset(std::vector<std::pair<double, WeatherMap>> keyframes);
   // Applies a tile (which must have no problem()) given the current UTC time.
   void apply(const MapTile& tile, double now_utc_s, double transition_s = kDefaultTransition_s);
 

@@ -30,25 +30,27 @@ vec2 map_pole_weights(float v, float map_height) {
   return vec2(y < 0.0 ? min(1.0, -2.0 * y) : 0.0, y > map_height - 1.0 ? min(1.0, 2.0 * (y - map_height + 1.0)) : 0.0);
 }
 
-// The map in the direction q for a map of map_height rows, the next keyframe at weight
-// blend, and the pole values (the rows' means) to blend to.
-vec4 weather_map_at(vec3 q, float map_height, float blend, vec4 pole_south, vec4 pole_north) {
+// A pair of keyframe textures (this one, the next at weight blend) in the direction q, for
+// maps of map_height rows, blended within half a row of a pole to the poles' values (the
+// rows' means).
+vec4 keyframes_at(sampler2D now_map, sampler2D next_map, vec3 q, float map_height, float blend, vec4 pole_south,
+                  vec4 pole_north) {
   vec2 uv = map_uv(q);
   // the next keyframe only while one is fading in (a uniform branch: no divergence)
-  vec4 w = textureLod(weather_map, uv, 0.0);
-  if (blend > 0.0) w = mix(w, textureLod(weather_map_next, uv, 0.0), blend);
+  vec4 w = textureLod(now_map, uv, 0.0);
+  if (blend > 0.0) w = mix(w, textureLod(next_map, uv, 0.0), blend);
   vec2 pw = map_pole_weights(uv.y, map_height);
   return mix(mix(w, pole_south, pw.x), pole_north, pw.y);
 }
 
-// The layer-coverage channels in the direction q, sampled as weather_map_at samples the map
-// (the same texels, keyframe blend and pole blend).
+// The weather map in the direction q.
+vec4 weather_map_at(vec3 q, float map_height, float blend, vec4 pole_south, vec4 pole_north) {
+  return keyframes_at(weather_map, weather_map_next, q, map_height, blend, pole_south, pole_north);
+}
+
+// The layer-coverage channels in the direction q (the same texels, blends and poles).
 vec4 layer_coverage_map_at(vec3 q, float map_height, float blend, vec4 pole_south, vec4 pole_north) {
-  vec2 uv = map_uv(q);
-  vec4 c = textureLod(layer_coverage_map, uv, 0.0);
-  if (blend > 0.0) c = mix(c, textureLod(layer_coverage_map_next, uv, 0.0), blend);
-  vec2 pw = map_pole_weights(uv.y, map_height);
-  return mix(mix(c, pole_south, pw.x), pole_north, pw.y);
+  return keyframes_at(layer_coverage_map, layer_coverage_map_next, q, map_height, blend, pole_south, pole_north);
 }
 
 // A layer's coverage c modulated by the map's coverage channel m (weather::local_coverage).

@@ -74,6 +74,34 @@ CloudColumn blend_columns(const CloudColumn& a, const CloudColumn& b, double w) 
   return out;
 }
 
+void ColumnAverage::add(const CloudColumn& c, double weight) {
+  if (given(c.ground_m)) ground_w_ += weight, ground_ += weight * c.ground_m;
+  for (int b = 0; b < kColumnBands; ++b) {
+    const BandValues& v = c.bands[b];
+    if (!given(v.cover)) continue;
+    Sum& s = sums_[b];
+    s.w += weight;
+    s.cover += weight * v.cover;
+    if (v.cover < kLeastLayerCover) continue;
+    const double wc = weight * v.cover;
+    if (given(v.base_m)) s.wc_base += wc, s.base += wc * v.base_m;
+    if (given(v.top_m)) s.wc_top += wc, s.top += wc * v.top_m;
+  }
+}
+
+CloudColumn ColumnAverage::result() const {
+  CloudColumn out;
+  if (ground_w_ > 0.0) out.ground_m = ground_ / ground_w_;
+  for (int b = 0; b < kColumnBands; ++b) {
+    const Sum& s = sums_[b];
+    if (s.w <= 0.0) continue;
+    out.bands[b].cover = s.cover / s.w;
+    if (s.wc_base > 0.0) out.bands[b].base_m = s.base / s.wc_base;
+    if (s.wc_top > 0.0) out.bands[b].top_m = s.top / s.wc_top;
+  }
+  return out;
+}
+
 double low_middle_boundary_m() { return standard_pressure_altitude_m(0.8 * kSeaLevelPressure_Pa); }
 double middle_high_boundary_m() { return standard_pressure_altitude_m(0.45 * kSeaLevelPressure_Pa); }
 

@@ -52,6 +52,23 @@ struct CloudColumn {
 // reports in time blend this way.
 CloudColumn blend_columns(const CloudColumn& a, const CloudColumn& b, double w);
 
+// A weighted average of columns (regions, aerodromes): each band's cover over the columns
+// that give it, its base and top weighted by cover as well (so they come from where the
+// cloud is; covers under kLeastLayerCover count for cover only), the ground's height over
+// the columns that know it. Bands no column gives stay NaN.
+class ColumnAverage {
+ public:
+  void add(const CloudColumn& c, double weight);
+  CloudColumn result() const;
+
+ private:
+  struct Sum {
+    double w = 0, cover = 0, wc_base = 0, base = 0, wc_top = 0, top = 0;
+  };
+  Sum sums_[kColumnBands];
+  double ground_w_ = 0.0, ground_ = 0.0;
+};
+
 // Heights separating the low, middle and high bands of a cloud-cover profile: the
 // standard-atmosphere altitudes of sigma = p / p_surface = 0.8 and 0.45 with p_surface =
 // 101325 Pa, the bands of ECMWF's low, medium and high cloud cover (IFS Documentation

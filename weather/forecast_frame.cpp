@@ -14,8 +14,6 @@ constexpr double kDeg = 3.14159265358979323846 / 180.0;
 constexpr double kEarthRadius_m = 6371008.8;  // mean radius (IUGG): offsets of the region's points
 constexpr int kRings = 3, kPointsPerRing = 8;
 
-bool given(double v) { return std::isfinite(v); }
-
 // The point at distance d (m) and bearing b (rad) from (lat, lon) on the sphere.
 void offset_point(double lat, double lon, double d, double b, double& lat_out, double& lon_out) {
   const double a = d / kEarthRadius_m, p = lat * kDeg;
@@ -27,42 +25,15 @@ void offset_point(double lat, double lon, double d, double b, double& lat_out, d
 }  // namespace
 
 CloudColumn regional_column(const ForecastWeather& w, double lat_deg, double lon_deg, double utc_s) {
-  struct Sum {
-    double n = 0, cover = 0, wc_base = 0, base = 0, wc_top = 0, top = 0;
-  };
-  Sum sums[kColumnBands];
-  double ground = 0.0, ground_n = 0.0;
-  const auto add = [&](double lat, double lon) {
-    const CloudColumn c = w.column_at(lat, lon, utc_s);
-    if (given(c.ground_m)) ground += c.ground_m, ground_n += 1.0;
-    for (int b = 0; b < kColumnBands; ++b) {
-      const BandValues& v = c.bands[b];
-      if (!given(v.cover)) continue;
-      Sum& s = sums[b];
-      s.n += 1.0;
-      s.cover += v.cover;
-      if (v.cover < kLeastLayerCover) continue;
-      if (given(v.base_m)) s.wc_base += v.cover, s.base += v.cover * v.base_m;
-      if (given(v.top_m)) s.wc_top += v.cover, s.top += v.cover * v.top_m;
-    }
-  };
-  add(lat_deg, lon_deg);
+  ColumnAverage region;
+  region.add(w.column_at(lat_deg, lon_deg, utc_s), 1.0);
   for (int r = 1; r <= kRings; ++r)
     for (int k = 0; k < kPointsPerRing; ++k) {
       double lat, lon;
       offset_point(lat_deg, lon_deg, kForecastRegion_m * r / kRings, 2.0 * M_PI * (k + 0.5 * (r % 2)) / kPointsPerRing, lat, lon);
-      add(lat, lon);
+      region.add(w.column_at(lat, lon, utc_s), 1.0);
     }
-  CloudColumn out;
-  if (ground_n > 0.0) out.ground_m = ground / ground_n;
-  for (int b = 0; b < kColumnBands; ++b) {
-    const Sum& s = sums[b];
-    if (s.n <= 0.0) continue;
-    out.bands[b].cover = s.cover / s.n;
-    if (s.wc_base > 0.0) out.bands[b].base_m = s.base / s.wc_base;
-    if (s.wc_top > 0.0) out.bands[b].top_m = s.top / s.wc_top;
-  }
-  return out;
+  return region.result();
 }
 
 Weather forecast_weather_at(const ForecastWeather& w, double lat_deg, double lon_deg, double utc_s) {

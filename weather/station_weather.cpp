@@ -140,42 +140,16 @@ CloudColumn StationWeather::station_column(const Station& s, double utc_s) const
 CloudColumn StationWeather::column_at(double lat_deg, double lon_deg, double utc_s) const {
   double p[3];
   unit_vector(lat_deg, lon_deg, p);
-  struct Sum {
-    double w = 0, wc = 0, wcz_base = 0, wcz_top = 0, wc_base = 0, wc_top = 0;
-  };
-  Sum sums[kColumnBands];
-  double w_ground = 0.0, ground = 0.0;
+  ColumnAverage blend;
   for (const Station& s : stations_) {
     const double chord = std::sqrt((p[0] - s.unit[0]) * (p[0] - s.unit[0]) + (p[1] - s.unit[1]) * (p[1] - s.unit[1]) +
                                    (p[2] - s.unit[2]) * (p[2] - s.unit[2]));
     const double d = std::max(2.0 * kEarthRadius_m * std::asin(std::min(1.0, chord / 2.0)), 1.0);
     if (d >= kStationReach_m) continue;
     const double r = (kStationReach_m - d) / (kStationReach_m * d);
-    const double w = r * r;
-    const CloudColumn c = station_column(s, utc_s);
-    w_ground += w;
-    ground += w * s.aerodrome.elevation_m;
-    for (int b = 0; b < kColumnBands; ++b) {
-      const BandValues& v = c.bands[b];
-      if (!given(v.cover)) continue;
-      Sum& sum = sums[b];
-      sum.w += w;
-      sum.wc += w * v.cover;
-      if (v.cover < kLeastLayerCover) continue;
-      if (given(v.base_m)) sum.wcz_base += w * v.cover * v.base_m, sum.wc_base += w * v.cover;
-      if (given(v.top_m)) sum.wcz_top += w * v.cover * v.top_m, sum.wc_top += w * v.cover;
-    }
+    blend.add(station_column(s, utc_s), r * r);
   }
-  CloudColumn out;
-  if (w_ground > 0.0) out.ground_m = ground / w_ground;
-  for (int b = 0; b < kColumnBands; ++b) {
-    const Sum& sum = sums[b];
-    if (sum.w <= 0.0) continue;
-    out.bands[b].cover = sum.wc / sum.w;
-    if (sum.wc_base > 0.0) out.bands[b].base_m = sum.wcz_base / sum.wc_base;
-    if (sum.wc_top > 0.0) out.bands[b].top_m = sum.wcz_top / sum.wc_top;
-  }
-  return out;
+  return blend.result();
 }
 
 }  // namespace cloudsvc::weather

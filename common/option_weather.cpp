@@ -64,12 +64,14 @@ weather::Weather resolve_weather(std::string_view flag, const std::string& arg) 
   if (ends_with_ci(arg, ".json")) return load_weather_file(flag, arg);
   if (std::optional<weather::Weather> w = weather::preset(arg)) return *w;
   fail(flag, arg,
-       "unknown weather preset (expected one of " + preset_list() + ", or a path to a .json weather file)");
+       "unknown weather preset (expected one of " + preset_list() +
+           ", or a path to a .json weather file, a GRIB2 forecast or METAR reports)");
 }
 
 std::string weather_help(const std::string& default_arg, std::string_view what) {
   return std::string(what) + ": a preset name (" + preset_list() +
-         ") or a path to a weather file ending in .json (docs/WEATHER.md); default " + default_arg;
+         "), a path to a weather file ending in .json, or a GRIB2 forecast (.grib2, .grb2, .grib, .grb) or METAR "
+         "reports (.metar, .txt) (docs/WEATHER.md); default " + default_arg;
 }
 
 }  // namespace cloudsvc::cli

@@ -23,10 +23,12 @@ weather::Weather load_weather_file(std::string_view flag, const std::string& pat
 std::shared_ptr<const weather::ForecastWeather> load_forecast(std::string_view flag, const std::string& path,
                                                               double reference_utc_s);
 
-// A preset name, or a path ending in .json (any case) read as a weather file.
+// A preset name, or a path ending in .json (any case) read as a weather file (forecast
+// files are read by load_forecast).
 weather::Weather resolve_weather(std::string_view flag, const std::string& arg);
 
-// "<what>: a preset name (...) or a path to a weather file ending in .json ...; default X".
+// "<what>: a preset name (...), a path to a weather file ending in .json, or a GRIB2
+// forecast or METAR reports ...; default X".
 std::string weather_help(const std::string& default_arg, std::string_view what = "Weather");
 
 }  // namespace cloudsvc::cli

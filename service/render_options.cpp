@@ -139,10 +139,9 @@ void add_view_flags(CLI::App& cmd, RenderArgs& args, const RenderOptions& defaul
   cmd.add_option("--size", args.size, size_help(defaults.width, defaults.height))
       ->type_name("WxH");
   cmd.add_option("--weather", args.weather,
-                 weather_help(defaults.weather_arg) +
-                     ". Also a GRIB2 forecast (.grib2, .grb2, .grib, .grb) or METAR reports (.metar, .txt): their "
-                     "clouds at --lat/--lon and --time (GPU presets only; docs/WEATHER.md)")
-      ->type_name("PRESET|FILE.json");
+                 weather_help(defaults.weather_arg, "Weather (a forecast's clouds at --lat/--lon and --time, GPU "
+                                                    "presets only)"))
+      ->type_name("PRESET|FILE");
 }
 
 void add_output_flags(CLI::App& cmd, RenderArgs& args, const RenderOptions& defaults) {

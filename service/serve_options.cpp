@@ -224,8 +224,8 @@ void add_sink_flags(CLI::App& cmd, ServeCommandLine::Args& args, const ServeOpti
 
 void add_scene_flags(CLI::App& cmd, ServeCommandLine::Args& args, const ServeOptions& defaults) {
   cmd.add_option("--weather", args.weather,
-                 weather_help(defaults.weather_arg, "Weather at start"))
-      ->type_name("PRESET|FILE.json");
+                 weather_help(defaults.weather_arg, "Weather at start (a forecast's follows the poses)"))
+      ->type_name("PRESET|FILE");
   cmd.add_flag("--cumulus-domes", args.cumulus_domes,
                "Draw cumulus layers as individual clouds (domes over a placement with a power-law spread of "
                "sizes, docs/MORPHOLOGY.md) instead of the thresholded noise field; slower on llvmpipe; "

@@ -6,22 +6,10 @@
 
 #include "renderer/cloud_renderer.h"
 #include "weather/forecast_frame.h"
+#include "weather/sphere_geometry.h"
 #include "weather/weather_timeline.h"
 
 namespace cloudsvc {
-
-namespace {
-
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
-constexpr double kEarthRadius_m = 6371008.8;  // mean radius (IUGG)
-
-double distance_m(double lat1, double lon1, double lat2, double lon2) {
-  const double a = std::sin(0.5 * (lat2 - lat1) * kDeg), b = std::sin(0.5 * (lon2 - lon1) * kDeg);
-  const double h = a * a + std::cos(lat1 * kDeg) * std::cos(lat2 * kDeg) * b * b;
-  return 2.0 * kEarthRadius_m * std::asin(std::min(1.0, std::sqrt(h)));
-}
-
-}  // namespace
 
 ForecastTracker::ForecastTracker(std::shared_ptr<const weather::ForecastWeather> forecast, int map_width, int map_height)
     : forecast_(std::move(forecast)), map_width_(map_width), map_height_(map_height), steps_(forecast_->valid_times()) {}
@@ -45,7 +33,7 @@ void ForecastTracker::update(CloudRenderer& renderer, double lat_deg, double lon
   if (count_ == 0 || before || after || !renderer.has_forecast()) {
     std::vector<std::pair<double, weather::WeatherMap>> frames = keyframes_around(utc_s);
     renderer.set_forecast(weather::forecast_weather_at(*forecast_, lat_deg, lon_deg, utc_s), std::move(frames));
-  } else if (distance_m(lat_deg, lon_deg, lat_, lon_) > 0.5 * weather::kForecastRegion_m ||
+  } else if (weather::surface_distance_m(lat_deg, lon_deg, lat_, lon_) > 0.5 * weather::kForecastRegion_m ||
              std::abs(utc_s - utc_) > kLayerRefresh_s) {
     renderer.update_forecast_layers(weather::forecast_weather_at(*forecast_, lat_deg, lon_deg, utc_s));
   } else {

@@ -5,21 +5,20 @@
 #include <cmath>
 
 #include "common/parallel_for.h"
+#include "weather/sphere_geometry.h"
 
 namespace cloudsvc::weather {
 
 namespace {
 
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
-constexpr double kEarthRadius_m = 6371008.8;  // mean radius (IUGG): offsets of the region's points
 constexpr int kRings = 3, kPointsPerRing = 8;
 
 // The point at distance d (m) and bearing b (rad) from (lat, lon) on the sphere.
 void offset_point(double lat, double lon, double d, double b, double& lat_out, double& lon_out) {
-  const double a = d / kEarthRadius_m, p = lat * kDeg;
+  const double a = d / kMeanEarthRadius_m, p = lat * kRadPerDeg;
   const double sp = std::sin(p) * std::cos(a) + std::cos(p) * std::sin(a) * std::cos(b);
-  lat_out = std::asin(std::clamp(sp, -1.0, 1.0)) / kDeg;
-  lon_out = lon + std::atan2(std::sin(b) * std::sin(a) * std::cos(p), std::cos(a) - std::sin(p) * sp) / kDeg;
+  lat_out = std::asin(std::clamp(sp, -1.0, 1.0)) / kRadPerDeg;
+  lon_out = lon + std::atan2(std::sin(b) * std::sin(a) * std::cos(p), std::cos(a) - std::sin(p) * sp) / kRadPerDeg;
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 // Sampling of forecast-grid fields (grid_field.h).
 #include "weather/grid_field.h"
 
+#include "weather/sphere_geometry.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -11,7 +13,6 @@ namespace cloudsvc::weather {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kDegToRad = 3.14159265358979323846 / 180.0;
 // Latitudes closer than this are one row (degrees; ecCodes computes them in double).
 constexpr double kSameLatitude_deg = 1e-7;
 // Largest raster the resampling of an irregular grid builds (nodes): 16 Mi floats.
@@ -28,20 +29,6 @@ double mix_present(double a, double b, double t) {
   if (std::isnan(a)) return b;
   if (std::isnan(b)) return a;
   return a + (b - a) * t;
-}
-
-// Angle between two geodetic positions, degrees (chord formula, accurate at small angles).
-double arc_deg(double lat1, double lon1, double lat2, double lon2) {
-  const auto unit = [](double lat, double lon, double v[3]) {
-    v[0] = std::cos(lat * kDegToRad) * std::cos(lon * kDegToRad);
-    v[1] = std::cos(lat * kDegToRad) * std::sin(lon * kDegToRad);
-    v[2] = std::sin(lat * kDegToRad);
-  };
-  double a[3], b[3];
-  unit(lat1, lon1, a);
-  unit(lat2, lon2, b);
-  const double chord = std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
-  return 2.0 * std::asin(std::min(1.0, chord / 2.0)) / kDegToRad;
 }
 
 double mean_present(std::span<const float> v) {
@@ -129,7 +116,7 @@ GridField GridField::from_rows(std::vector<Row> rows, std::vector<float> values)
   const Row* equator = nullptr;
   for (const Row& row : f.rows_)
     if (row.count > 1 && (!equator || std::abs(row.lat_deg) < std::abs(equator->lat_deg))) equator = &row;
-  if (equator) spacing = std::min(spacing, equator->dlon_deg * std::cos(equator->lat_deg * kDegToRad));
+  if (equator) spacing = std::min(spacing, equator->dlon_deg * std::cos(equator->lat_deg * kRadPerDeg));
   f.spacing_deg_ = spacing;
   const Row& south = f.rows_.front();
   const Row& north = f.rows_.back();
@@ -193,7 +180,7 @@ GridField GridField::resampled(std::span<const double> lat_deg, std::span<const 
   std::vector<double> steps;
   steps.reserve(n);
   for (std::size_t i = 1; i < n; ++i) {
-    const double d = arc_deg(lat_deg[i - 1], lon_deg[i - 1], lat_deg[i], lon_deg[i]);
+    const double d = arc_between(unit_vector(lat_deg[i - 1], lon_deg[i - 1]), unit_vector(lat_deg[i], lon_deg[i])) / kRadPerDeg;
     if (d > 0.0) steps.push_back(d);
   }
   double s = 1.0;
@@ -302,7 +289,7 @@ GridField GridField::resampled(std::span<const double> lat_deg, std::span<const 
   };
   for (int j = 0; j < height; ++j) {
     const double lat = lat_min + j * dlat;
-    const double reach = 2.0 * s / (dlon * std::max(std::cos(lat * kDegToRad), 1e-3));
+    const double reach = 2.0 * s / (dlon * std::max(std::cos(lat * kRadPerDeg), 1e-3));
     fill_line(static_cast<std::size_t>(j) * width, 1, width, reach, full_circle);
   }
   for (int i = 0; i < width; ++i) fill_line(static_cast<std::size_t>(i), width, height, 2.0 * s / dlat, false);

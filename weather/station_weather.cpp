@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 
+#include "weather/sphere_geometry.h"
 #include "weather/weather_json.h"
 
 namespace cloudsvc::weather {
@@ -12,17 +13,9 @@ namespace cloudsvc::weather {
 namespace {
 
 constexpr double kFoot_m = 0.3048;
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
-constexpr double kEarthRadius_m = 6371008.8;  // mean radius (IUGG), for distances between aerodromes
 constexpr double kLowTop_m = 2000.0, kMiddleTop_m = 6000.0;  // etage limits above the ground
 
 bool given(double v) { return std::isfinite(v); }
-
-void unit_vector(double lat_deg, double lon_deg, double v[3]) {
-  v[0] = std::cos(lat_deg * kDeg) * std::cos(lon_deg * kDeg);
-  v[1] = std::cos(lat_deg * kDeg) * std::sin(lon_deg * kDeg);
-  v[2] = std::sin(lat_deg * kDeg);
-}
 
 // Widens a band with one group: cover the largest, base the lowest, top the highest.
 void widen(BandValues& b, double cover, double base_m, double top_m) {
@@ -83,7 +76,7 @@ StationWeather StationWeather::from_reports(const std::vector<MetarReport>& repo
                              " medium and large aerodromes of OurAirports, docs/WEATHER.md)");
     Station& s = by_code[r.station];
     s.aerodrome = *a;
-    unit_vector(a->lat_deg, a->lon_deg, s.unit);
+    s.unit = unit_vector(a->lat_deg, a->lon_deg);
     s.observations.push_back({r.utc_s, column_of_report(r, *a)});
   }
   for (auto& [code, s] : by_code) {
@@ -138,13 +131,10 @@ CloudColumn StationWeather::station_column(const Station& s, double utc_s) const
 }
 
 CloudColumn StationWeather::column_at(double lat_deg, double lon_deg, double utc_s) const {
-  double p[3];
-  unit_vector(lat_deg, lon_deg, p);
+  const std::array<double, 3> p = unit_vector(lat_deg, lon_deg);
   ColumnAverage blend;
   for (const Station& s : stations_) {
-    const double chord = std::sqrt((p[0] - s.unit[0]) * (p[0] - s.unit[0]) + (p[1] - s.unit[1]) * (p[1] - s.unit[1]) +
-                                   (p[2] - s.unit[2]) * (p[2] - s.unit[2]));
-    const double d = std::max(2.0 * kEarthRadius_m * std::asin(std::min(1.0, chord / 2.0)), 1.0);
+    const double d = std::max(kMeanEarthRadius_m * arc_between(p, s.unit), 1.0);
     if (d >= kStationReach_m) continue;
     const double r = (kStationReach_m - d) / (kStationReach_m * d);
     blend.add(station_column(s, utc_s), r * r);

@@ -20,6 +20,7 @@
 // every aerodrome there is no cloud.
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -59,7 +60,7 @@ class StationWeather : public ForecastWeather {
   struct Station {
     Aerodrome aerodrome;
     std::vector<Observation> observations;  // ascending time
-    double unit[3] = {0, 0, 0};            // direction from the Earth's centre
+    std::array<double, 3> unit{};          // direction from the Earth's centre
   };
   CloudColumn station_column(const Station& s, double utc_s) const;
 

@@ -189,6 +189,29 @@ double parse_time(std::string_view flag, const std::string& text) {
   return *unix_time_s;
 }
 
+PlaceAndTime parse_place_and_time(std::string_view flag, const std::string& text) {
+  std::vector<std::string> parts;
+  for (std::size_t start = 0;;) {
+    const std::size_t comma = text.find(',', start);
+    parts.push_back(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  if (parts.size() < 2 || parts.size() > 3) fail(flag, text, "expected LAT,LON or LAT,LON,TIME");
+  const auto number = [&](const std::string& part, double lo, double hi, const char* what) {
+    const std::optional<double> v = parse_finite_number(part);
+    if (!v || *v < lo || *v > hi)
+      fail(flag, text, std::string(what) + " '" + part + "' is not a number in [" + format_number(lo) + ", " +
+                           format_number(hi) + "] (degrees)");
+    return *v;
+  };
+  PlaceAndTime p;
+  p.lat_deg = number(parts[0], -90.0, 90.0, "latitude");
+  p.lon_deg = number(parts[1], -180.0, 360.0, "longitude");
+  if (parts.size() == 3) p.utc_s = parse_time(flag, parts[2]);
+  return p;
+}
+
 // ---- help text -----------------------------------------------------------------------------
 
 std::string numeric_help(std::string_view what, const Range& r, double default_value) {

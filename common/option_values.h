@@ -100,6 +100,14 @@ double parse_duration(std::string_view flag, const std::string& text, double max
 // seconds since the Unix epoch, or FlagError.
 double parse_time(std::string_view flag, const std::string& text);
 
+// A point and optionally a time, "LAT,LON[,TIME]": degrees (latitude [-90, 90], longitude
+// [-180, 360]) and UTC ISO 8601 (parse_time). FlagError names the part that is wrong.
+struct PlaceAndTime {
+  double lat_deg = 0.0, lon_deg = 0.0;
+  std::optional<double> utc_s;  // absent when TIME is not given
+};
+PlaceAndTime parse_place_and_time(std::string_view flag, const std::string& text);
+
 // ---- help text -----------------------------------------------------------------------------
 
 // "<what>; range <range> (<unit>); default <value>" for the help of a numeric flag.

@@ -1,6 +1,8 @@
 // Weather flag values (option_weather.h).
 #include "common/option_weather.h"
 
+#include <CLI/CLI.hpp>
+
 #include <exception>
 #include <filesystem>
 #include <optional>
@@ -51,13 +53,35 @@ weather::Weather load_weather_file(std::string_view flag, const std::string& pat
   return w;
 }
 
-std::shared_ptr<const weather::ForecastWeather> load_forecast(std::string_view flag, const std::string& path,
+std::shared_ptr<const weather::ForecastWeather> load_forecast(std::string_view flag,
+                                                              const std::vector<std::string>& paths,
                                                               double reference_utc_s) {
   try {
-    return weather::load_forecast_weather({path}, reference_utc_s);
+    return weather::load_forecast_weather(paths, reference_utc_s);
   } catch (const weather::WeatherFileError& e) {
-    fail(flag, path, without_path_prefix(e.what(), path));
+    // The message starts with the file it is about: show that one as the flag's value.
+    for (const std::string& path : paths)
+      if (std::string(e.what()).rfind(path + ": ", 0) == 0) fail(flag, path, without_path_prefix(e.what(), path));
+    fail(flag, join(paths, " "), e.what());
   }
+}
+
+std::vector<std::string> weather_flag_values(const CLI::App& cmd, const std::vector<std::string>& values,
+                                             const std::string& default_arg) {
+  return cmd.get_option("--weather")->count() > 0 ? values : std::vector<std::string>{default_arg};
+}
+
+WeatherChoice resolve_weather_choice(std::string_view flag, const std::vector<std::string>& values,
+                                     double reference_utc_s) {
+  if (values.empty()) fail(flag, "", "expected a preset name or weather files");
+  if (values.size() == 1 && !weather::is_forecast_path(values.front()))
+    return {resolve_weather(flag, values.front()), nullptr};
+  for (const std::string& v : values)
+    if (!weather::is_forecast_path(v))
+      fail(flag, join(values, " "),
+           "'" + v + "' among several values: several are only GRIB2 or METAR files; a preset or a .json weather "
+           "file comes alone");
+  return {weather::Weather{}, load_forecast(flag, values, reference_utc_s)};
 }
 
 weather::Weather resolve_weather(std::string_view flag, const std::string& arg) {

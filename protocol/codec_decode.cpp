@@ -79,7 +79,7 @@ WeatherLayers get(const wire::WeatherLayers& m) {
       // A vector element is a non-null offset (the verifier checked it).
       out.layers.push_back(CloudLayer{l->type(), l->base_m(), l->top_m(), l->coverage(),
                                       l->density_scale(), l->droplet_diameter_um(),
-                                      l->wind_east_mps(), l->wind_north_mps()});
+                                      l->wind_east_mps(), l->wind_north_mps(), l->coverage_channel()});
     }
   }
   return out;
@@ -95,6 +95,7 @@ WeatherMapTile get(const wire::WeatherMapTile& m) {
   out.height = m.height();
   out.channels = m.channels();
   out.valid_at_utc_s = m.valid_at_utc_s();
+  out.layer_channels = m.layer_channels();
   if (const auto* data = m.data()) {
     out.data.resize(data->size());
     // Little-endian floats on the wire and on every host this builds for (flatbuffers

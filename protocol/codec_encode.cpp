@@ -61,7 +61,7 @@ struct BodyWriter {
     for (const CloudLayer& l : m.layers) {
       layers.push_back(wire::CreateCloudLayer(b, l.type, l.base_m, l.top_m, l.coverage,
                                               l.density_scale, l.droplet_diameter_um,
-                                              l.wind_east_mps, l.wind_north_mps));
+                                              l.wind_east_mps, l.wind_north_mps, l.coverage_channel));
     }
     const fb::Optional<double> albedo = m.ground_albedo ? fb::Optional<double>(*m.ground_albedo) : fb::nullopt;
     return wire::CreateWeatherLayers(b, b.CreateVector(layers), m.map_seed, albedo).Union();
@@ -69,7 +69,8 @@ struct BodyWriter {
   fb::Offset<void> operator()(const WeatherMapTile& m) {
     const auto data = b.CreateVector(m.data);
     return wire::CreateWeatherMapTile(b, m.lat_min_deg, m.lon_min_deg, m.lat_max_deg, m.lon_max_deg,
-                                      m.width, m.height, m.channels, m.valid_at_utc_s, data)
+                                      m.width, m.height, m.channels, m.valid_at_utc_s, data,
+                                      m.layer_channels)
         .Union();
   }
   fb::Offset<void> operator()(const RenderRequest& m) {

@@ -11,7 +11,9 @@ Limits protocol_limits() {
                 kMaxTileSize};
 }
 
-int WeatherMapTile::channel_count() const { return std::popcount(static_cast<unsigned>(channels)); }
+int WeatherMapTile::channel_count() const {
+  return std::popcount(static_cast<unsigned>(channels)) + std::popcount(static_cast<unsigned>(layer_channels));
+}
 
 namespace {
 

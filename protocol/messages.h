@@ -43,7 +43,8 @@ inline constexpr std::uint8_t kAll = kTeleport | kReset;
 }  // namespace pose_flag
 
 // Weather map channel bits (WeatherMapTile.channels). A tile's values are interleaved per
-// texel in ascending bit order of the channels present.
+// texel in ascending bit order of the channels present, then its layer-coverage slots
+// (WeatherMapTile.layer_channels, bits 0..3) in ascending order.
 namespace tile_channel {
 inline constexpr std::uint8_t kCoverage = 1u << 0;             // [0, 1], 0.5 = layer's own
 inline constexpr std::uint8_t kVerticalDevelopment = 1u << 1;  // [0, 1], 0.5 = layer's own
@@ -144,6 +145,7 @@ struct CloudLayer {
   double droplet_diameter_um = 20.0;  // [5, 50]
   double wind_east_mps = 0.0;         // m/s towards east
   double wind_north_mps = 0.0;        // m/s towards north
+  std::int8_t coverage_channel = -1;  // -1 coverage modulated by the map; 0..3 layer-coverage slot (minor 2)
   bool operator==(const CloudLayer&) const = default;
 };
 
@@ -165,10 +167,11 @@ struct WeatherMapTile {
   double lon_max_deg = 0.0;   // eastern edge (lon_min, lon_min + 360]; > 180 wraps
   std::uint32_t width = 0;    // texels, 1..1024
   std::uint32_t height = 0;   // texels, 1..1024
-  std::uint8_t channels = 0;  // tile_channel bits, at least one
+  std::uint8_t channels = 0;  // tile_channel bits
   double valid_at_utc_s = 0.0;
   std::vector<float> data;    // height * width * channel_count() values in [0, 1]
-  int channel_count() const;  // number of bits set in channels
+  std::uint8_t layer_channels = 0;  // layer-coverage slot bits 0..3 (minor 2); not both empty
+  int channel_count() const;  // values per texel: bits set in channels and layer_channels
   bool operator==(const WeatherMapTile&) const = default;
 };
 

@@ -206,6 +206,8 @@ Problem check_layer(const CloudLayer& l, const std::string& pre) {
                kMaxDropletDiameter_um));
   CHECK(finite(join(pre, "wind_east_mps"), l.wind_east_mps));
   CHECK(finite(join(pre, "wind_north_mps"), l.wind_north_mps));
+  if (l.coverage_channel < -1 || l.coverage_channel > 3)
+    return join(pre, "coverage_channel ", num(l.coverage_channel), " out of range [-1, 3]");
   const double speed = std::hypot(l.wind_east_mps, l.wind_north_mps);
   if (!(speed <= kMaxWindSpeed_mps)) {
     return join(pre, "wind speed ", num(speed), " m/s above ", num(kMaxWindSpeed_mps));

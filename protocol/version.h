@@ -9,6 +9,6 @@
 namespace cloudsvc::protocol {
 
 inline constexpr std::uint16_t kProtocolMajor = 1;
-inline constexpr std::uint16_t kProtocolMinor = 1;
+inline constexpr std::uint16_t kProtocolMinor = 2;
 
 }  // namespace cloudsvc::protocol

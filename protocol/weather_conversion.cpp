@@ -16,6 +16,7 @@ weather::Weather to_weather(const protocol::WeatherLayers& m) {
     c.density_scale = l.density_scale;
     c.droplet_diameter_um = l.droplet_diameter_um;
     c.wind = {l.wind_east_mps, l.wind_north_mps};
+    c.coverage_channel = l.coverage_channel;
     w.layers.push_back(c);
   }
   return w;
@@ -35,6 +36,7 @@ protocol::WeatherLayers to_message(const weather::Weather& w) {
     l.droplet_diameter_um = c.droplet_diameter_um;
     l.wind_east_mps = c.wind.east_mps;
     l.wind_north_mps = c.wind.north_mps;
+    l.coverage_channel = static_cast<std::int8_t>(c.coverage_channel);
     m.layers.push_back(l);
   }
   return m;
@@ -50,13 +52,15 @@ weather::MapTile to_map_tile(const protocol::WeatherMapTile& m) {
   t.height = static_cast<int>(m.height);
   t.channels = m.channels;
   t.valid_at_utc_s = m.valid_at_utc_s;
+  t.layer_channels = m.layer_channels;
   t.data = m.data;
   return t;
 }
 
 weather::MapTileHeader to_tile_header(const protocol::WeatherMapTile& m) {
   return weather::MapTileHeader{m.lat_min_deg, m.lon_min_deg, m.lat_max_deg, m.lon_max_deg,
-                                m.width,       m.height,      m.channels,    m.valid_at_utc_s};
+                                m.width,       m.height,      m.channels,    m.valid_at_utc_s,
+                                m.layer_channels};
 }
 
 protocol::WeatherMapTile to_message(const weather::MapTile& t) {
@@ -69,6 +73,7 @@ protocol::WeatherMapTile to_message(const weather::MapTile& t) {
   m.height = static_cast<std::uint32_t>(t.height);
   m.channels = t.channels;
   m.valid_at_utc_s = t.valid_at_utc_s;
+  m.layer_channels = t.layer_channels;
   m.data = t.data;
   return m;
 }

@@ -35,7 +35,7 @@ void CloudRenderer::apply_tile(const weather::MapTile& tile, double now_utc_s) {
   // the values, little beside apply_tile's resampling of every keyframe.
   const std::string problem = tile.problem();
   if (!problem.empty()) throw std::invalid_argument("weather tile: " + problem);
-  if (tile.channels & weather::kWeatherMapTileChannels) timeline_.apply(tile, now_utc_s);
+  if ((tile.channels & weather::kWeatherMapTileChannels) || tile.layer_channels) timeline_.apply(tile, now_utc_s);
   if (tile.channels & weather::kGroundAlbedoTileChannel) {
     ground_albedo_map_.apply(tile);
     cloud_buffer_.reset_history();  // the clouds' light from the ground changes at once

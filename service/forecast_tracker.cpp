@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include "renderer/cloud_renderer.h"
 #include "weather/forecast_frame.h"
@@ -11,18 +12,18 @@
 
 namespace cloudsvc {
 
-ForecastTracker::ForecastTracker(std::shared_ptr<const weather::ForecastWeather> forecast, int map_width, int map_height)
-    : forecast_(std::move(forecast)), map_width_(map_width), map_height_(map_height), steps_(forecast_->valid_times()) {}
+ForecastTracker::ForecastTracker(std::shared_ptr<const weather::ForecastWeather> forecast, int map_width,
+                                 int map_height, double start_utc_s)
+    : forecast_(std::move(forecast)), map_width_(map_width), map_height_(map_height), steps_(forecast_->valid_times()) {
+  std::tie(prepared_first_, std::ignore) =
+      weather::keyframe_steps_around(steps_, start_utc_s, weather::WeatherTimeline::kMaxKeyframes);
+  prepared_ = build_keyframes(start_utc_s);
+}
 
-std::vector<std::pair<double, weather::WeatherMap>> ForecastTracker::keyframes_around(double utc_s) {
-  const std::size_t n = steps_.size(), k = std::min(n, weather::WeatherTimeline::kMaxKeyframes);
-  // the step at or before the time, with up to a third of the keyframes before it
-  const std::size_t at = static_cast<std::size_t>(
-      std::max<std::ptrdiff_t>(0, std::upper_bound(steps_.begin(), steps_.end(), utc_s) - steps_.begin() - 1));
-  first_ = std::min(at - std::min(at, k / 3), n - k);
-  count_ = k;
+std::vector<std::pair<double, weather::WeatherMap>> ForecastTracker::build_keyframes(double utc_s) const {
+  const auto [first, count] = weather::keyframe_steps_around(steps_, utc_s, weather::WeatherTimeline::kMaxKeyframes);
   std::vector<std::pair<double, weather::WeatherMap>> frames;
-  for (std::size_t i = first_; i < first_ + count_; ++i)
+  for (std::size_t i = first; i < first + count; ++i)
     frames.emplace_back(steps_[i], weather::forecast_map(*forecast_, steps_[i], map_width_, map_height_));
   return frames;
 }
@@ -31,7 +32,11 @@ void ForecastTracker::update(CloudRenderer& renderer, double lat_deg, double lon
   const bool before = first_ > 0 && utc_s < steps_[first_];
   const bool after = first_ + count_ < steps_.size() && utc_s > steps_[first_ + count_ - 1];
   if (count_ == 0 || before || after || !renderer.has_forecast()) {
-    std::vector<std::pair<double, weather::WeatherMap>> frames = keyframes_around(utc_s);
+    std::tie(first_, count_) = weather::keyframe_steps_around(steps_, utc_s, weather::WeatherTimeline::kMaxKeyframes);
+    // the keyframes made at start-up when they are the ones needed, else new ones
+    std::vector<std::pair<double, weather::WeatherMap>> frames =
+        !prepared_.empty() && prepared_first_ == first_ ? std::move(prepared_) : build_keyframes(utc_s);
+    prepared_.clear();
     renderer.set_forecast(weather::forecast_weather_at(*forecast_, lat_deg, lon_deg, utc_s), std::move(frames));
   } else if (weather::surface_distance_m(lat_deg, lon_deg, lat_, lon_) > 0.5 * weather::kForecastRegion_m ||
              std::abs(utc_s - utc_) > kLayerRefresh_s) {

@@ -22,7 +22,10 @@ class ForecastTracker {
  public:
   static constexpr double kLayerRefresh_s = 600.0;
 
-  ForecastTracker(std::shared_ptr<const weather::ForecastWeather> forecast, int map_width, int map_height);
+  // Makes the keyframes around start_utc_s (the service's --time) at once, so that the first
+  // pose near that time finds them made (a 0.25° step takes about 0.1 s a keyframe).
+  ForecastTracker(std::shared_ptr<const weather::ForecastWeather> forecast, int map_width, int map_height,
+                  double start_utc_s);
 
   // Brings the renderer's forecast to a pose at (lat, lon) degrees and UTC seconds.
   void update(CloudRenderer& renderer, double lat_deg, double lon_deg, double utc_s);
@@ -31,12 +34,15 @@ class ForecastTracker {
   std::pair<std::size_t, std::size_t> keyframe_steps() const { return {first_, count_}; }
 
  private:
-  std::vector<std::pair<double, weather::WeatherMap>> keyframes_around(double utc_s);
+  // The maps of the steps keyframe_steps_around(utc_s) picks.
+  std::vector<std::pair<double, weather::WeatherMap>> build_keyframes(double utc_s) const;
 
   std::shared_ptr<const weather::ForecastWeather> forecast_;
   int map_width_, map_height_;
   std::vector<double> steps_;
   std::size_t first_ = 0, count_ = 0;  // steps in the renderer's keyframes (count 0: none yet)
+  std::vector<std::pair<double, weather::WeatherMap>> prepared_;  // made at start-up, until used
+  std::size_t prepared_first_ = 0;                                // their first step
   double lat_ = 0.0, lon_ = 0.0, utc_ = 0.0;  // where and when the layers were made
 };
 

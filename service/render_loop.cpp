@@ -134,7 +134,8 @@ RenderLoop::Run::Run(RenderLoop& loop)
       egl_(window_ ? nullptr : std::make_unique<gl::EglContext>()), renderer_(renderer_config(options_)),
       view_(initial_view(options_)) {
   if (options_.forecast)
-    forecast_ = std::make_unique<ForecastTracker>(options_.forecast, renderer_.weather_map_width(), renderer_.weather_map_height());
+    forecast_ = std::make_unique<ForecastTracker>(options_.forecast, renderer_.weather_map_width(),
+                                                  renderer_.weather_map_height(), options_.unix_time_s);
   else
     renderer_.set_weather(options_.weather);
   clock_.set(options_.unix_time_s);

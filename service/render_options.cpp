@@ -45,7 +45,10 @@ using cli::parse_integer;
 using cli::parse_number;
 using cli::parse_time;
 using cli::Range;
-using cli::resolve_weather;
+using cli::join;
+using cli::resolve_weather_choice;
+using cli::weather_flag_values;
+using cli::WeatherChoice;
 using cli::ServeCommandLine;
 using cli::WeatherInfoCommandLine;
 using cli::size_help;
@@ -86,7 +89,8 @@ double wrap_heading_deg(double heading_deg) {
 // Raw text of each `render` flag, as collected by CLI11.
 struct RenderArgs {
   CLI::App* command = nullptr;
-  std::string lat, lon, alt, heading, pitch, roll, time, fov, size, weather, out, frames, exposure;
+  std::string lat, lon, alt, heading, pitch, roll, time, fov, size, out, frames, exposure;
+  std::vector<std::string> weather;  // --weather: one preset or file, or several forecast files
   std::string quality, render_frames, spp, seed, max_order;  // --quality, --frames, --spp, --seed, --max-order
   std::string cloud_phase;                        // --cloud-phase
   bool window = false;
@@ -140,8 +144,8 @@ void add_view_flags(CLI::App& cmd, RenderArgs& args, const RenderOptions& defaul
       ->type_name("WxH");
   cmd.add_option("--weather", args.weather,
                  weather_help(defaults.weather_arg, "Weather (a forecast's clouds at --lat/--lon and --time, GPU "
-                                                    "presets only)"))
-      ->type_name("PRESET|FILE");
+                                                    "presets only); several GRIB2 or METAR files may follow"))
+      ->type_name("PRESET|FILE...");
 }
 
 void add_output_flags(CLI::App& cmd, RenderArgs& args, const RenderOptions& defaults) {
@@ -325,15 +329,15 @@ void apply_scene_and_output(const RenderArgs& a, RenderOptions& opt) {
   const CLI::App& cmd = *a.command;
   if (given(cmd, "--time")) opt.time_text = a.time;
   opt.unix_time_s = parse_time("--time", opt.time_text);
-  if (given(cmd, "--weather")) opt.weather_arg = a.weather;
-  if (weather::is_forecast_path(opt.weather_arg)) {
-    if (opt.quality == "reference" || opt.quality == "truth")
-      fail("--weather", opt.weather_arg, "GRIB2 and METAR weather is drawn by the GPU quality presets only, not --quality " + opt.quality);
-    opt.forecast = cli::load_forecast("--weather", opt.weather_arg, opt.unix_time_s);
-    opt.weather = weather::forecast_weather_at(*opt.forecast, opt.position.lat_deg, opt.position.lon_deg, opt.unix_time_s);
-  } else {
-    opt.weather = resolve_weather("--weather", opt.weather_arg);
-  }
+  const std::vector<std::string> weather_values = weather_flag_values(cmd, a.weather, opt.weather_arg);
+  opt.weather_arg = join(weather_values, " ");
+  if (weather::is_forecast_path(weather_values.front()) && (opt.quality == "reference" || opt.quality == "truth"))
+    fail("--weather", opt.weather_arg, "GRIB2 and METAR weather is drawn by the GPU quality presets only, not --quality " + opt.quality);
+  WeatherChoice choice = resolve_weather_choice("--weather", weather_values, opt.unix_time_s);
+  opt.forecast = std::move(choice.forecast);
+  opt.weather = opt.forecast ? weather::forecast_weather_at(*opt.forecast, opt.position.lat_deg,
+                                                            opt.position.lon_deg, opt.unix_time_s)
+                             : std::move(choice.weather);
   if (given(cmd, "--out")) {
     opt.out_path = a.out;
   } else if (opt.window) {

@@ -144,7 +144,8 @@ std::string size_text(int width, int height) {
 struct ServeCommandLine::Args {
   CLI::App* command = nullptr;
   std::vector<std::string> listen;
-  std::string shm, shm_max_size, out_dir, weather, time, size, fov, max_clients, exit_after_frames;
+  std::string shm, shm_max_size, out_dir, time, size, fov, max_clients, exit_after_frames;
+  std::vector<std::string> weather;  // --weather: one preset or file, or several forecast files
   std::string socket_mode, shm_mode, idle_timeout, max_view_size, tile_budget, ready_file;
   bool window = false;
   bool cumulus_domes = false;
@@ -224,8 +225,9 @@ void add_sink_flags(CLI::App& cmd, ServeCommandLine::Args& args, const ServeOpti
 
 void add_scene_flags(CLI::App& cmd, ServeCommandLine::Args& args, const ServeOptions& defaults) {
   cmd.add_option("--weather", args.weather,
-                 weather_help(defaults.weather_arg, "Weather at start (a forecast's follows the poses)"))
-      ->type_name("PRESET|FILE");
+                 weather_help(defaults.weather_arg, "Weather at start (a forecast's follows the poses); several "
+                                                    "GRIB2 or METAR files may follow"))
+      ->type_name("PRESET|FILE...");
   cmd.add_flag("--cumulus-domes", args.cumulus_domes,
                "Draw cumulus layers as individual clouds (domes over a placement with a power-law spread of "
                "sizes, docs/MORPHOLOGY.md) instead of the thresholded noise field; slower on llvmpipe; "
@@ -286,13 +288,12 @@ void apply_scene(const ServeCommandLine::Args& a, ServeOptions& opt) {
   } else {
     opt.unix_time_s = now_unix_s();  // time_text stays empty: not given
   }
-  if (given(cmd, "--weather")) opt.weather_arg = a.weather;
-  if (weather::is_forecast_path(opt.weather_arg)) {
-    // the layers follow the poses (service/forecast_tracker.h); none until the first one
-    opt.forecast = load_forecast("--weather", opt.weather_arg, opt.unix_time_s);
-  } else {
-    opt.weather = resolve_weather("--weather", opt.weather_arg);
-  }
+  const std::vector<std::string> weather_values = weather_flag_values(cmd, a.weather, opt.weather_arg);
+  opt.weather_arg = join(weather_values, " ");
+  // a forecast's layers follow the poses (service/forecast_tracker.h); none until the first one
+  WeatherChoice choice = resolve_weather_choice("--weather", weather_values, opt.unix_time_s);
+  opt.forecast = std::move(choice.forecast);
+  opt.weather = std::move(choice.weather);
   if (given(cmd, "--size")) std::tie(opt.width, opt.height) = parse_image_size("--size", a.size);
   if (given(cmd, "--fov")) opt.fov_deg = parse_number("--fov", a.fov, kFieldOfView);
   if (given(cmd, "--exit-after-frames")) {

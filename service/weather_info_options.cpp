@@ -43,24 +43,10 @@ WeatherInfoOptions WeatherInfoCommandLine::validate() const {
   const Args& a = *args_;
   WeatherInfoOptions opt;
   opt.files = a.files;
-  std::vector<std::string> parts;
-  std::size_t start = 0;
-  for (;;) {
-    const std::size_t comma = a.at.find(',', start);
-    parts.push_back(a.at.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
-    if (comma == std::string::npos) break;
-    start = comma + 1;
-  }
-  if (parts.size() < 2 || parts.size() > 3) fail("--at", a.at, "expected LAT,LON or LAT,LON,TIME");
-  const auto number = [&](const std::string& text, double lo, double hi, const char* what) {
-    const std::optional<double> v = parse_finite_number(text);
-    if (!v || *v < lo || *v > hi)
-      fail("--at", a.at, std::string(what) + " '" + text + "' is not a number in [" + format_number(lo) + ", " + format_number(hi) + "] (degrees)");
-    return *v;
-  };
-  opt.lat_deg = number(parts[0], -90.0, 90.0, "latitude");
-  opt.lon_deg = number(parts[1], -180.0, 360.0, "longitude");
-  if (parts.size() == 3) opt.utc_s = parse_time("--at", parts[2]);
+  const PlaceAndTime at = parse_place_and_time("--at", a.at);
+  opt.lat_deg = at.lat_deg;
+  opt.lon_deg = at.lon_deg;
+  opt.utc_s = at.utc_s;
   return opt;
 }
 

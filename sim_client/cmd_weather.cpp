@@ -1,10 +1,13 @@
 // `sim_client weather`: sends cloud layers (a weather file or preset) and/or a weather map
-// image split into protocol tiles, then reports whether the service accepted them.
+// image split into protocol tiles, or a forecast (GRIB2, METAR) as the layers of a region
+// and each step's layer coverage as tiles, then reports whether the service accepted them.
 #include <CLI/CLI.hpp>
 
+#include <chrono>
 #include <cstdio>
 #include <memory>
 #include <thread>
+#include <tuple>
 
 #include "common/option_address.h"
 #include "common/option_values.h"
@@ -16,10 +19,14 @@
 #include "sim_client/commands.h"
 #include "sim_client/map_flags.h"
 #include "sim_client/map_image.h"
+#include "sim_client/forecast_raster.h"
 #include "sim_client/map_tiles.h"
 #include "sim_client/text_input.h"
 #include "sim_client/usage_errors.h"
+#include "weather/forecast_frame.h"
+#include "weather/grib_reader.h"
 #include "weather/presets.h"
+#include "weather/weather_timeline.h"
 
 namespace cloudsvc::sim {
 
@@ -29,6 +36,17 @@ constexpr const char* kName = "weather";
 
 struct WeatherArgs {
   std::string connect = kDefaultAddress, layers, preset, map, bounds, valid_at, channels = "coverage", quiet_ms = "500";
+  std::vector<std::string> grib, metar;  // forecast files
+  std::string at, map_size;  // map_size empty: the service's map, 1024x512
+};
+
+// A forecast to send: its layers around a point and its steps' maps (forecast_raster.h).
+struct ForecastToSend {
+  std::shared_ptr<const weather::ForecastWeather> weather;
+  std::string flag;                    // --grib or --metar, for messages
+  double lat_deg = 0.0, lon_deg = 0.0;  // where the layers are made
+  double utc_s = 0.0;                   // when: the layers' time and the steps around it
+  int map_width = 1024, map_height = 512;
 };
 
 struct WeatherOptions {
@@ -40,15 +58,46 @@ struct WeatherOptions {
   double valid_at_utc_s = 0.0;
   std::vector<std::uint8_t> channels;
   std::chrono::milliseconds quiet{500};
+  std::optional<ForecastToSend> forecast;  // --grib or --metar
 };
+
+ForecastToSend validate_forecast(const WeatherArgs& a) {
+  if (!a.grib.empty() && !a.metar.empty()) cli::fail("--metar", cli::join(a.metar, " "), "give either --grib or --metar, not both");
+  for (const auto& [flag, value] : {std::pair{"--layers", &a.layers}, std::pair{"--preset", &a.preset}, std::pair{"--map", &a.map}})
+    if (!value->empty()) cli::fail(flag, *value, "not with a forecast (--grib, --metar): it sends its own layers and map");
+  if (a.at.empty()) cli::fail("--at", a.at, "required with --grib or --metar: LAT,LON[,TIME], where the layers are made");
+  ForecastToSend f;
+  f.flag = a.grib.empty() ? "--metar" : "--grib";
+  const std::vector<std::string>& files = a.grib.empty() ? a.metar : a.grib;
+  for (const std::string& path : files)
+    if (weather::is_grib_path(path) != (f.flag == "--grib"))
+      cli::fail(f.flag, path, f.flag == "--grib" ? "expected a GRIB2 file (.grib2, .grb2, .grib, .grb)"
+                                                 : "expected METAR reports (.metar, .txt)");
+  const cli::PlaceAndTime at = cli::parse_place_and_time("--at", a.at);
+  f.lat_deg = at.lat_deg;
+  f.lon_deg = at.lon_deg;
+  // METAR reports carry only a day of the month: the time of --at dates them, else now.
+  const double now_s = std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+  f.weather = cli::load_forecast(f.flag, files, at.utc_s.value_or(now_s));
+  f.utc_s = at.utc_s.value_or(f.weather->valid_times().front());
+  if (!a.map_size.empty()) std::tie(f.map_width, f.map_height) = cli::parse_image_size("--map-size", a.map_size, 4096);
+  return f;
+}
 
 WeatherOptions validate(const WeatherArgs& a) {
   WeatherOptions o;
   cli::parse_endpoint("--connect", a.connect, cli::PortUse::Connect);
   o.address = a.connect;
+  o.quiet = std::chrono::milliseconds(cli::parse_integer("--quiet-ms", a.quiet_ms, 0, 60000, "milliseconds"));
+  if (!a.grib.empty() || !a.metar.empty()) {
+    o.forecast = validate_forecast(a);
+    return o;
+  }
+  for (const auto& [flag, value] : {std::pair{"--at", &a.at}, std::pair{"--map-size", &a.map_size}})
+    if (!value->empty()) cli::fail(flag, *value, "only with --grib or --metar");
   if (!a.layers.empty() && !a.preset.empty()) cli::fail("--preset", a.preset, "give either --layers or --preset, not both");
   if (a.layers.empty() && a.preset.empty() && a.map.empty())
-    throw UsageError("nothing to send: give --layers FILE.json, --preset NAME or --map IMAGE");
+    throw UsageError("nothing to send: give --layers FILE.json, --preset NAME, --map IMAGE, --grib FILE or --metar FILE");
   if (!a.preset.empty()) {
     o.layers = cli::weather_preset("--preset", a.preset);
     o.layers_label = "preset " + a.preset;
@@ -68,7 +117,6 @@ WeatherOptions validate(const WeatherArgs& a) {
     o.valid_at_utc_s = cli::parse_time("--valid-at", a.valid_at);
     o.channels = parse_flag_channels("--channels", a.channels);
   }
-  o.quiet = std::chrono::milliseconds(cli::parse_integer("--quiet-ms", a.quiet_ms, 0, 60000, "milliseconds"));
   return o;
 }
 
@@ -78,6 +126,40 @@ struct Sent {
   std::string what;
 };
 
+// Sends the forecast's layers around its point, then the map of each step around its time
+// (at most the service's keyframes: weather/weather_timeline.h) as tiles valid at the step's
+// time. Returns the summary line.
+std::string send_forecast(ClientSession& session, const ForecastToSend& f, std::vector<Sent>& sent) {
+  if (session.welcome().minor < 2)
+    throw RunError("the service speaks protocol " + std::to_string(session.welcome().major) + "." +
+                   std::to_string(session.welcome().minor) + "; forecast weather (layer-coverage tiles) needs 1.2");
+  if (!session.offers(protocol::capability::kWeatherTiles))
+    throw RunError("the service does not accept weather map tiles (no WeatherTiles capability)");
+  const weather::Weather layers = weather::forecast_weather_at(*f.weather, f.lat_deg, f.lon_deg, f.utc_s);
+  sent.push_back({session.send(to_message(layers)), "the forecast's layers"});
+  const std::vector<double> steps = f.weather->valid_times();
+  const auto [first, count] = weather::keyframe_steps_around(steps, f.utc_s, weather::WeatherTimeline::kMaxKeyframes);
+  const std::uint32_t side = tile_side_for(session.welcome().limits, 8);
+  std::size_t tile_count = 0;
+  for (std::size_t s = first; s < first + count; ++s) {
+    const std::string step = "step " + geo::format_utc_iso8601(steps[s]);
+    const MapRaster raster = forecast_raster(*f.weather, steps[s], f.map_width, f.map_height);
+    const std::vector<protocol::WeatherMapTile> tiles = split_into_tiles(raster, GeoBounds{-90.0, -180.0, 90.0, 180.0}, steps[s], side);
+    for (std::size_t i = 0; i < tiles.size(); ++i) {
+      if (auto problem = protocol::validate(protocol::Message(tiles[i])))
+        throw RunError(step + ", tile " + std::to_string(i + 1) + ": " + *problem);
+      sent.push_back({session.send(tiles[i]), step + ", tile " + std::to_string(i + 1) + "/" + std::to_string(tiles.size())});
+    }
+    tile_count += tiles.size();
+  }
+  return "weather: sent the forecast " + f.weather->name() + ": " + std::to_string(layers.layers.size()) +
+         " layer" + (layers.layers.size() == 1 ? "" : "s") + " around " + format_number(f.lat_deg) + "," +
+         format_number(f.lon_deg) + " at " + geo::format_utc_iso8601(f.utc_s) + ", " + std::to_string(count) +
+         " step" + (count == 1 ? "" : "s") + " from " + geo::format_utc_iso8601(steps[first]) + " as " +
+         std::to_string(tile_count) + (tile_count == 1 ? " tile (" : " tiles (") + std::to_string(f.map_width) + "x" +
+         std::to_string(f.map_height) + " texels each step)";
+}
+
 int run_weather(const WeatherOptions& o) {
   // Read and check everything before connecting.
   std::vector<protocol::WeatherMapTile> tiles;
@@ -86,6 +168,8 @@ int run_weather(const WeatherOptions& o) {
 
   ClientSession session(o.address, "sim_client weather");
   std::vector<Sent> sent;
+  std::string forecast_summary;
+  if (o.forecast) forecast_summary = send_forecast(session, *o.forecast, sent);
   if (o.layers) {
     const protocol::WeatherLayers m = to_message(*o.layers);
     if (m.layers.size() > session.welcome().limits.max_layers)
@@ -120,6 +204,7 @@ int run_weather(const WeatherOptions& o) {
       if (s.seq == e.answers_seq) about = s.what;
     warn(kName, "service error about " + about + ": " + describe_error(e));
   }
+  if (o.forecast) std::printf("%s\n", forecast_summary.c_str());
   if (o.layers) std::printf("weather: sent %s (%zu layer%s)\n", o.layers_label.c_str(), o.layers->layers.size(),
                             o.layers->layers.size() == 1 ? "" : "s");
   if (!o.map.empty()) {
@@ -169,6 +254,23 @@ Command add_weather_command(CLI::App& app) {
                   "(vertical development), density, precipitation, albedo (0.5 = the layer's own value; precipitation "
                   "0 = none; albedo: the ground's grey albedo 0..1, applied from the next frame); default coverage")
       ->type_name("LIST");
+  cmd->add_option("--grib", args->grib,
+                  "GRIB2 forecast files (.grib2, .grb2, .grib, .grb; docs/WEATHER.md) to send: the layers of the region "
+                  "around --at and, for each forecast step around its time (at most 8), the global map of the layers' "
+                  "coverage as tiles valid at the step's time")
+      ->type_name("FILE...");
+  cmd->add_option("--metar", args->metar,
+                  "METAR or SPECI reports (.metar, .txt; one report per line) to send like --grib; they are dated by "
+                  "the time of --at, else by the current date")
+      ->type_name("FILE...");
+  cmd->add_option("--at", args->at,
+                  "With --grib or --metar: where and when the layers are made, LAT,LON in degrees and optionally ,TIME "
+                  "in UTC ISO 8601; without TIME the first forecast step")
+      ->type_name("LAT,LON[,TIME]");
+  cmd->add_option("--map-size", args->map_size,
+                  "With --grib or --metar: global map size of each step, WxH texels (each side at most 4096); "
+                  "default 1024x512, the service's map")
+      ->type_name("WxH");
   cmd->add_option("--quiet-ms", args->quiet_ms,
                   "After the service has taken every message, listen this long for late errors, milliseconds, "
                   "[0, 60000]; default 500")
@@ -176,7 +278,9 @@ Command add_weather_command(CLI::App& app) {
   cmd->footer(std::string(kExitCodesHelp) +
               "\nExamples: sim_client weather --preset overcast-stratus --connect unix:/tmp/cloudsvc.sock\n"
               "          sim_client weather --map coverage.exr --bounds 40,0,50,20 --valid-at 2026-06-21T12:00Z "
-              "--channels coverage,density --connect unix:/tmp/cloudsvc.sock");
+              "--channels coverage,density --connect unix:/tmp/cloudsvc.sock\n"
+              "          sim_client weather --grib gfs.grib2 --at 47.45,8.56,2026-06-21T12:00Z --connect "
+              "unix:/tmp/cloudsvc.sock");
   return {cmd, [args]() -> int { return run_weather(validate(*args)); }};
 }
 

@@ -2,6 +2,7 @@
 #include "sim_client/map_tiles.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <stdexcept>
 
@@ -25,11 +26,16 @@ double edge(int c, int size, double lo, double hi) {
 
 }  // namespace
 
+std::size_t MapRaster::value_count() const {
+  return channel_bits.size() + static_cast<std::size_t>(std::popcount(static_cast<unsigned>(layer_channels)));
+}
+
 std::vector<protocol::WeatherMapTile> split_into_tiles(const MapRaster& raster, const GeoBounds& bounds,
                                                        double valid_at_utc_s, std::uint32_t max_side) {
-  const std::size_t nc = raster.channel_bits.size();
-  if (raster.width < 1 || raster.height < 1 || nc < 1 || nc > 5)
-    throw std::invalid_argument("weather map: need at least 1x1 texels and 1..5 channels");
+  const std::size_t nc = raster.value_count();
+  if (raster.width < 1 || raster.height < 1 || nc < 1 || raster.channel_bits.size() > 5 ||
+      (raster.layer_channels & ~0x0fu))
+    throw std::invalid_argument("weather map: need at least 1x1 texels, 0..5 channels and layer slots 0..3, not none");
   if (raster.values.size() != static_cast<std::size_t>(raster.width) * raster.height * nc)
     throw std::invalid_argument("weather map: value count does not match width x height x channels");
   if (max_side < 1) throw std::invalid_argument("weather map: tile side must be at least 1 texel");
@@ -39,10 +45,11 @@ std::vector<protocol::WeatherMapTile> split_into_tiles(const MapRaster& raster, 
       throw std::invalid_argument("weather map: channel bits must be distinct single tile_channel bits");
     all_bits |= b;
   }
-  // order[k]: raster channel holding the tile's k-th channel (ascending bit order).
+  // order[k]: raster value holding the tile's k-th value (channels in ascending bit order,
+  // then the layer slots as they are).
   std::vector<std::size_t> order(nc);
   for (std::size_t k = 0; k < nc; ++k) order[k] = k;
-  std::sort(order.begin(), order.end(),
+  std::sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(raster.channel_bits.size()),
             [&](std::size_t a, std::size_t b) { return raster.channel_bits[a] < raster.channel_bits[b]; });
 
   const int side = static_cast<int>(std::min<std::uint32_t>(max_side, 1u << 30));
@@ -67,6 +74,7 @@ std::vector<protocol::WeatherMapTile> split_into_tiles(const MapRaster& raster, 
       t.width = static_cast<std::uint32_t>(c1 - c0);
       t.height = static_cast<std::uint32_t>(s1 - s0);
       t.channels = all_bits;
+      t.layer_channels = raster.layer_channels;
       t.valid_at_utc_s = valid_at_utc_s;
       t.data.resize(static_cast<std::size_t>(t.width) * t.height * nc);
       std::size_t out = 0;

@@ -12,12 +12,14 @@ namespace cloudsvc::sim {
 
 // Map values on an equirectangular grid over some bounds, in image order: row 0 is the
 // NORTHERNMOST row, column 0 the westernmost. channel_bits[k] is the protocol tile_channel
-// bit of value k of each texel: values[(row * width + col) * channel_bits.size() + k], all
-// in [0, 1].
+// bit of value k of each texel, and the layer-coverage slots of layer_channels follow in
+// ascending slot order: values[(row * width + col) * value_count() + k], all in [0, 1].
 struct MapRaster {
   int width = 0, height = 0;               // texels
   std::vector<std::uint8_t> channel_bits;  // distinct tile_channel bits, in raster order
+  std::uint8_t layer_channels = 0;         // WeatherMapTile.layer_channels bits (slots 0..3)
   std::vector<float> values;
+  std::size_t value_count() const;         // values per texel
 };
 
 // Splits the raster into nx * ny tiles, nx = ceil(width / max_side), ny likewise, with
@@ -25,7 +27,8 @@ struct MapRaster {
 // tile's edges are the raster's texel edges: longitude lon_min + c * (lon_max - lon_min) /
 // width (exactly lon_max at c = width) and likewise for latitude, so neighbouring tiles
 // share edges bit for bit and the union is exactly `bounds`. Tile rows are flipped to the
-// protocol's south-first order and the channels reordered into ascending bit order. A tile
+// protocol's south-first order and the channels reordered into ascending bit order (the
+// layer slots after them, as they are). A tile
 // starting at or east of 180° is shifted by -360° (the protocol's lon_min is in
 // [-180, 180)). Throws std::invalid_argument on an inconsistent raster or max_side < 1.
 std::vector<protocol::WeatherMapTile> split_into_tiles(const MapRaster& raster, const GeoBounds& bounds,

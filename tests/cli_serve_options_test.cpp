@@ -18,6 +18,7 @@
 #include "weather/presets.h"
 #include "weather/weather_json.h"
 #include "cli_test_support.h"
+#include "grib_test_support.h"
 
 namespace cloudsvc {
 namespace {
@@ -398,6 +399,25 @@ TEST_F(CliServeOptionsTest, SceneFlags) {
   // A forecast file is read, not taken for an unknown preset.
   EXPECT_EQ(run({"serve", "--weather", "/no/such/gfs.grib2"}).cmd.error,
             "cloudsvc serve: --weather /no/such/gfs.grib2: cannot open: No such file or directory");
+  // Several GRIB2 files make one forecast (one step each here), given after one --weather
+  // or with the flag repeated; a preset or weather file comes alone.
+  test::GribTempDir dir;
+  std::vector<std::string> steps;
+  for (long hour : {0L, 6L}) {
+    steps.push_back(dir.file("step" + std::to_string(hour) + ".grib2").string());
+    test::append_cloud_field(steps.back(), 6, 1, 214, 80.0, hour);
+  }
+  for (const auto& args : {std::vector<std::string>{"--weather", steps[0], steps[1]},
+                           std::vector<std::string>{"--weather", steps[0], "--weather", steps[1]}}) {
+    const ServeOptions two = serve_with(args);
+    ASSERT_TRUE(two.forecast);
+    EXPECT_EQ(two.forecast->valid_times().size(), 2u);
+    EXPECT_EQ(two.weather_arg, steps[0] + " " + steps[1]);
+  }
+  EXPECT_EQ(run({"serve", "--weather", "clear", steps[0]}).cmd.error,
+            "cloudsvc serve: --weather clear " + steps[0] +
+                ": 'clear' among several values: several are only GRIB2 or METAR files; a preset or a .json "
+                "weather file comes alone");
 }
 
 TEST_F(CliServeOptionsTest, LimitFlags) {

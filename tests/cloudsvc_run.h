@@ -1,4 +1,4 @@
-// Runs the cloudsvc executable with arguments, its stdout and stderr captured in files of a
+// Runs the cloudsvc and sim_client executables with arguments, its stdout and stderr captured in files of a
 // test's directory (end-to-end tests of the command line).
 #pragma once
 
@@ -25,9 +25,10 @@ inline std::string shell_quote(const std::string& s) {
   return q + "'";
 }
 
-// `cloudsvc args...` from the build's bin directory; `dir` holds the captured streams.
-inline RunResult run_cloudsvc(const std::vector<std::string>& args, const std::filesystem::path& dir) {
-  std::string cmd = shell_quote(std::string(CLOUDSVC_BIN_DIR) + "/cloudsvc");
+// `program args...` from the build's bin directory; `dir` holds the captured streams.
+inline RunResult run_program(const std::string& program, const std::vector<std::string>& args,
+                             const std::filesystem::path& dir) {
+  std::string cmd = shell_quote(std::string(CLOUDSVC_BIN_DIR) + "/" + program);
   for (const auto& a : args) cmd += " " + shell_quote(a);
   const std::filesystem::path out = dir / "stdout.txt", err = dir / "stderr.txt";
   cmd += " >" + shell_quote(out.string()) + " 2>" + shell_quote(err.string());
@@ -41,6 +42,14 @@ inline RunResult run_cloudsvc(const std::vector<std::string>& args, const std::f
   r.out = slurp(out);
   r.err = slurp(err);
   return r;
+}
+
+inline RunResult run_cloudsvc(const std::vector<std::string>& args, const std::filesystem::path& dir) {
+  return run_program("cloudsvc", args, dir);
+}
+
+inline RunResult run_sim_client(const std::vector<std::string>& args, const std::filesystem::path& dir) {
+  return run_program("sim_client", args, dir);
 }
 
 }  // namespace cloudsvc::test

@@ -150,6 +150,31 @@ TEST(ProtocolCodec, RoundTripsEveryMessageType) {
   EXPECT_EQ(types.size(), std::variant_size_v<Message>);
 }
 
+// Forecast weather (minor 2): layers that read a layer-coverage slot and tiles that carry
+// slots, with or without weather-map channels, survive the wire; an old peer's layers and
+// tiles (fields absent) read as coverage_channel -1 and no slots.
+TEST(ProtocolCodec, ForecastLayerCoverageRoundTrips) {
+  WeatherLayers w = sample_layers();
+  w.layers[0].coverage_channel = 0;
+  w.layers[2].coverage_channel = 3;
+  const DecodeResult rl = round(w);
+  ASSERT_TRUE(rl.ok()) << rl.error_text;
+  EXPECT_EQ(std::get<WeatherLayers>(*rl.message), w);
+  EXPECT_EQ(std::get<WeatherLayers>(*rl.message).layers[1].coverage_channel, -1);
+  for (std::uint8_t channels : {std::uint8_t{0}, tile_channel::kCoverage}) {
+    WeatherMapTile t = sample_tile();
+    t.channels = channels;
+    t.layer_channels = 0b1001;
+    t.data.assign(static_cast<std::size_t>(t.width) * t.height * t.channel_count(), 0.25f);
+    ASSERT_EQ(validate(t), std::nullopt);
+    const DecodeResult rt = round(t);
+    ASSERT_TRUE(rt.ok()) << rt.error_text;
+    EXPECT_EQ(std::get<WeatherMapTile>(*rt.message), t);
+  }
+  const DecodeResult old = round(sample_tile());
+  EXPECT_EQ(std::get<WeatherMapTile>(*old.message).layer_channels, 0);
+}
+
 TEST(ProtocolCodec, DoublesSurviveBitExactly) {
   Pose p = sample_pose();
   p.lat_deg = std::nextafter(90.0, 0.0);
@@ -467,6 +492,10 @@ TEST(ProtocolValidate, LayerRanges) {
                   "WeatherLayers.layers[2].top_m"});
   expect_invalid({"top below base", layers([](WeatherLayers& w) { w.layers[0].top_m = 700; }),
                   "WeatherLayers.layers[0].top_m"});
+  expect_invalid({"coverage channel 4", layers([](WeatherLayers& w) { w.layers[1].coverage_channel = 4; }),
+                  "WeatherLayers.layers[1].coverage_channel 4 out of range [-1, 3]"});
+  expect_invalid({"coverage channel -2", layers([](WeatherLayers& w) { w.layers[0].coverage_channel = -2; }),
+                  "WeatherLayers.layers[0].coverage_channel -2 out of range [-1, 3]"});
   expect_invalid({"ground albedo 1.5", layers([](WeatherLayers& w) { w.ground_albedo = 1.5; }),
                   "WeatherLayers.ground_albedo 1.5 out of range [0, 1]"});
   expect_invalid({"ground albedo -0.2", layers([](WeatherLayers& w) { w.ground_albedo = -0.2; }),
@@ -587,7 +616,10 @@ TEST(ProtocolValidate, TilesFollowTheWeatherModulesRules) {
   EXPECT_EQ(validate(tile([](WeatherMapTile& t) { t.height = 0xffffffffu; })),
             "WeatherMapTile.height 4294967295 out of range [1, 1024]");
   EXPECT_EQ(validate(tile([](WeatherMapTile& t) { t.channels = 0x21; })), "WeatherMapTile.channels has unknown bits 0x20");
-  EXPECT_EQ(validate(tile([](WeatherMapTile& t) { t.channels = 0; })), "WeatherMapTile.channels is empty");
+  EXPECT_EQ(validate(tile([](WeatherMapTile& t) { t.channels = 0; })),
+            "WeatherMapTile.channels and layer_channels are empty");
+  EXPECT_EQ(validate(tile([](WeatherMapTile& t) { t.layer_channels = 0x30; })),
+            "WeatherMapTile.layer_channels has unknown bits 0x30");
   EXPECT_EQ(validate(tile([](WeatherMapTile& t) { t.lon_min_deg = -180.5; })),
             "WeatherMapTile.lon_min_deg -180.5 out of range [-180, 180)");
   EXPECT_EQ(validate(tile([](WeatherMapTile& t) { t.lat_max_deg = 45; })),

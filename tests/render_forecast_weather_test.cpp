@@ -10,29 +10,23 @@
 #include <cmath>
 #include <cstdio>
 
+#include "forecast_test_support.h"
 #include "render_test_support.h"
 #include "weather/forecast_frame.h"
 
 namespace cloudsvc::test {
 namespace {
 
-class SplitForecast : public weather::ForecastWeather {
- public:
-  weather::CloudColumn column_at(double, double lon_deg, double) const override {
-    weather::CloudColumn c;
-    const bool east = lon_deg > 8.0;
-    c[weather::CloudBand::Low] = {east ? 1.0 : 0.0, 1000.0, 1600.0};
-    c[weather::CloudBand::Middle] = {0.0};
-    c[weather::CloudBand::High] = {east ? 0.0 : 1.0, 8000.0, 9500.0};
-    c[weather::CloudBand::Convective] = {0.0};
-    return c;
-  }
-  std::vector<double> valid_times() const override { return {0.0}; }
-  const std::string& name() const override { return name_; }
-
- private:
-  std::string name_ = "split";
-};
+// Overcast low cloud east of 8° E, overcast high cloud west of it.
+const FunctionForecast split_forecast("split", [](double, double lon_deg) {
+  weather::CloudColumn c;
+  const bool east = lon_deg > 8.0;
+  c[weather::CloudBand::Low] = {east ? 1.0 : 0.0, 1000.0, 1600.0};
+  c[weather::CloudBand::Middle] = {0.0};
+  c[weather::CloudBand::High] = {east ? 0.0 : 1.0, 8000.0, 9500.0};
+  c[weather::CloudBand::Convective] = {0.0};
+  return c;
+});
 
 double cloud_fraction(const FrameImage& img) {
   return static_cast<double>(img.stats.cloud_pixels) / (static_cast<double>(img.width) * img.height);
@@ -40,7 +34,7 @@ double cloud_fraction(const FrameImage& img) {
 
 TEST(ForecastWeather, EachLayerHasCloudWhereItsOwnChannelPutsIt) {
   CloudRenderer& r = shared_renderer();
-  const SplitForecast forecast;
+  const auto& forecast = split_forecast;
   const char* time = "2026-06-21T10:00:00Z";
   struct Case {
     double lon, pitch;
@@ -75,7 +69,7 @@ TEST(ForecastWeather, EachLayerHasCloudWhereItsOwnChannelPutsIt) {
 
 TEST(ForecastWeather, AForecastMapOfAnotherSizeIsRejected) {
   CloudRenderer& r = shared_renderer();
-  const SplitForecast forecast;
+  const auto& forecast = split_forecast;
   const weather::Weather w = weather::forecast_weather_at(forecast, 47.0, 9.5, 0.0);
   EXPECT_THROW(r.set_forecast(w, weather::forecast_map(forecast, 0.0, 64, 32)), std::invalid_argument);
   weather::WeatherMap no_channels = weather::forecast_map(forecast, 0.0, r.weather_map_width(), r.weather_map_height());

@@ -1,6 +1,8 @@
 // `cloudsvc serve --weather FILE.grib2` (service/forecast_tracker.h): the poses' frames show
 // the forecast's clouds where it puts them, a client's layers replace the forecast, and a
-// bad forecast file stops the service at start with one line.
+// bad forecast file stops the service at start with one line. `sim_client weather --grib`
+// streams a forecast to a running service with the same result, and a bad file leaves the
+// service's weather as it was.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -38,13 +40,18 @@ FrameStats frame_of(ServiceConnection& c, const ServiceProcess& svc, const proto
   return stats_of(f);
 }
 
-TEST(ServiceForecast, FramesShowTheForecastsCloudsUntilAClientSendsLayers) {
-  GribTempDir dir;
-  // Low cloud cover 100 % over 0-30 E, 0-60 N (the regular_ll sample's area), 900-850 hPa.
+// Low cloud cover 100 % over 0-30 E, 0-60 N (the regular_ll sample's area), 900-850 hPa.
+std::filesystem::path low_cloud_forecast(const GribTempDir& dir) {
   const auto grib = dir.file("low.grib2");
   append_cloud_field(grib, 6, 1, 214, 100.0, 0);
   append_cloud_field(grib, 3, 0, 212, 90000.0, 0);
   append_cloud_field(grib, 3, 0, 213, 85000.0, 0);
+  return grib;
+}
+
+TEST(ServiceForecast, FramesShowTheForecastsCloudsUntilAClientSendsLayers) {
+  GribTempDir dir;
+  const auto grib = low_cloud_forecast(dir);
   ServiceProcess svc("forecast", {"--weather", grib.string()});
   ASSERT_TRUE(svc.running());
   ServiceConnection c(svc.address(), "forecast");
@@ -60,6 +67,35 @@ TEST(ServiceForecast, FramesShowTheForecastsCloudsUntilAClientSendsLayers) {
   w.layers = {protocol::CloudLayer{10, 1000.0, 1500.0, 1.0, 1.0, 20.0, 0.0, 0.0}};
   c.send(w);
   EXPECT_GT(frame_of(c, svc, looking_down(30.0, -40.0, kT)).cloud_fraction, 0.95);
+}
+
+TEST(ServiceForecast, SimClientStreamsAForecastThatFramesShow) {
+  GribTempDir dir;
+  const auto grib = low_cloud_forecast(dir);
+  // The service starts clear, its clock an hour before the forecast's step: the step's tiles
+  // make a keyframe at its valid time.
+  ServiceProcess svc("forecast_stream", {"--weather", "clear", "--time", "2026-05-31T23:00:00Z"});
+  ASSERT_TRUE(svc.running());
+  const RunResult r = run_sim_client({"weather", "--grib", grib.string(), "--at", "30,15", "--map-size", "360x180",
+                                      "--quiet-ms", "200", "--connect", svc.address()},
+                                     dir.file(""));
+  ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
+  EXPECT_NE(r.out.find("weather: sent the forecast " + grib.string() + ": 1 layer around 30,15 at "
+                       "2026-06-01T00:00:00Z, 1 step from 2026-06-01T00:00:00Z as "),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("weather: accepted"), std::string::npos) << r.out;
+  ServiceConnection c(svc.address(), "forecast");
+  EXPECT_GT(frame_of(c, svc, looking_down(30.0, 15.0, kT)).cloud_fraction, 0.95);
+  EXPECT_LT(frame_of(c, svc, looking_down(30.0, -40.0, kT)).cloud_fraction, 0.02);  // outside the forecast's cloud
+  // A bad file: one line naming it, exit 2, and the service keeps the forecast's clouds.
+  const auto text = dir.file("bad.grib2");
+  std::ofstream(text) << "not a forecast\n";
+  const RunResult bad = run_sim_client({"weather", "--grib", text.string(), "--at", "30,15", "--connect", svc.address()},
+                                       dir.file(""));
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_EQ(bad.err, "sim_client weather: --grib " + text.string() + ": not a GRIB file (no GRIB message found)\n");
+  EXPECT_GT(frame_of(c, svc, looking_down(30.5, 15.5, kT)).cloud_fraction, 0.95);
 }
 
 TEST(ServiceForecast, ABadForecastFileStopsTheServiceAtStart) {

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <utility>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -48,9 +49,10 @@ class ServiceProcess {
     std::vector<std::string> args = {std::string(CLOUDSVC_BIN_DIR) + "/cloudsvc", "serve"};
     if (tcp == Tcp::Yes) args.insert(args.end(), {"--listen", "tcp://127.0.0.1:0"});
     args.insert(args.end(), {"--listen", "unix:" + socket_, "--ready-file", ready_path().string(), "--shm", shm_,
-                             "--size", "64x36", "--time", "2026-06-21T12:00:00Z"});
-    if (std::find(extra.begin(), extra.end(), "--weather") == extra.end())
-      args.insert(args.end(), {"--weather", "scattered-cumulus"});
+                             "--size", "64x36"});
+    // defaults a test may give otherwise
+    for (const auto& [flag, value] : {std::pair{"--time", "2026-06-21T12:00:00Z"}, std::pair{"--weather", "scattered-cumulus"}})
+      if (std::find(extra.begin(), extra.end(), flag) == extra.end()) args.insert(args.end(), {flag, value});
     if (std::find(extra.begin(), extra.end(), "--shm-max-size") == extra.end())
       args.insert(args.end(), {"--shm-max-size", "256x256"});
     if (out == OutDir::Yes) {

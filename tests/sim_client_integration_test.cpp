@@ -326,6 +326,28 @@ TEST(SimClientCli, BadInputExitsTwoAndConnectionFailureExitsOneWithOneLine) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.err, "sim_client weather: --valid-at \"\": required with --map: the UTC time the map is valid at\n");
 
+  // Forecasts: each mistake is one line naming the flag, before any connection is tried.
+  const std::string none = " --connect unix:" + (dir / "none.sock").string();
+  r = run_sim_client(dir, "weather --grib gfs.grib2" + none);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "sim_client weather: --at \"\": required with --grib or --metar: LAT,LON[,TIME], where the layers are made\n");
+  r = run_sim_client(dir, "weather --grib reports.metar --at 47,8" + none);
+  EXPECT_EQ(r.err, "sim_client weather: --grib reports.metar: expected a GRIB2 file (.grib2, .grb2, .grib, .grb)\n");
+  r = run_sim_client(dir, "weather --metar reports.metar --preset clear --at 47,8" + none);
+  EXPECT_EQ(r.err, "sim_client weather: --preset clear: not with a forecast (--grib, --metar): it sends its own layers and map\n");
+  r = run_sim_client(dir, "weather --metar reports.metar --at 47,8,noon" + none);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err.rfind("sim_client weather: --at noon: expected a UTC ISO 8601 time", 0), 0u) << r.err;
+  const fs::path metar = dir / "reports.metar";
+  std::ofstream(metar) << "METAR LSZH 211150Z 24008KT 9999 FEW030 BKN3O0 18/09 Q1017\n";
+  r = run_sim_client(dir, "weather --metar " + metar.string() + " --at 47,8,2026-06-21T12:00Z" + none);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(lines_of(r.err).size(), 1u) << r.err;
+  EXPECT_EQ(r.err.rfind("sim_client weather: --metar " + metar.string() + ": line 1: malformed sky group 'BKN3O0'", 0), 0u)
+      << r.err;
+  r = run_sim_client(dir, "weather --preset clear --at 47,8" + none);
+  EXPECT_EQ(r.err, "sim_client weather: --at 47,8: only with --grib or --metar\n");
+
   r = run_sim_client(dir, "--help");
   EXPECT_EQ(r.exit_code, 0);
   for (const char* cmd : {"replay", "sweep", "weather", "watch"}) EXPECT_NE(r.out.find(cmd), std::string::npos);

@@ -15,10 +15,13 @@
 #include <set>
 #include <sstream>
 
+#include "forecast_test_support.h"
 #include "common/option_values.h"
 #include "protocol/validate.h"
+#include "protocol/weather_conversion.h"
 #include "sim_client/commands.h"
 #include "sim_client/contact_sheet.h"
+#include "sim_client/forecast_raster.h"
 #include "sim_client/image_stats.h"
 #include "sim_client/manifest.h"
 #include "sim_client/map_flags.h"
@@ -30,6 +33,8 @@
 #include "sim_client/sweep_plan.h"
 #include "sim_client/usage_errors.h"
 #include "sim_client/watch_stats.h"
+#include "weather/forecast_frame.h"
+#include "weather/weather_timeline.h"
 
 namespace cloudsvc::sim {
 namespace {
@@ -403,6 +408,59 @@ TEST(MapTiles, TileSideRespectsTheServiceLimits) {
   limits.max_payload_bytes = 1u << 20;  // 1 MiB: (1048576 - 1024 B) / 16 B per texel = 255.9^2
   EXPECT_EQ(tile_side_for(limits, 4), 255u);
   EXPECT_THROW(split_into_tiles(make_raster(2, 2, {1, 1}), GeoBounds{0, 0, 1, 1}, 0.0, 16), std::invalid_argument);
+}
+
+// A forecast whose low band covers a latitude-dependent fraction of the sky east of 0°
+// (none west of it), its mid band 0.3 everywhere.
+const test::FunctionForecast banded_forecast("banded", [](double lat_deg, double lon_deg) {
+  weather::CloudColumn c;
+  c[weather::CloudBand::Low] = {lon_deg >= 0.0 ? 0.5 + 0.5 * std::sin(lat_deg * M_PI / 180.0) : 0.0, 800.0, 1600.0};
+  c[weather::CloudBand::Middle] = {0.3, 4000.0, 5000.0};
+  return c;
+}, 1780272000.0);
+
+// `sim_client weather --grib` sends each step as forecast_raster tiles: applied to the
+// service's map they give the map the service itself makes of the forecast (forecast_map),
+// texel for texel, when the sizes match.
+TEST(ForecastTiles, ApplyToTheMapTheServiceMakesOfTheForecast) {
+  const auto& f = banded_forecast;
+  const MapRaster raster = forecast_raster(f, 1780272000.0, 64, 32);
+  ASSERT_EQ(raster.value_count(), 8u);
+  const auto tiles = split_into_tiles(raster, GeoBounds{-90.0, -180.0, 90.0, 180.0}, 1780272000.0, 20);
+  ASSERT_EQ(tiles.size(), 8u);  // 4 x 2 tiles of at most 20 texels a side
+  weather::WeatherMap service = weather::forecast_map(f, 0.0, 64, 32);
+  std::fill(service.rgba.begin(), service.rgba.end(), 0.9f);  // a map that had other weather
+  service.layer_coverage.clear();
+  for (const auto& t : tiles) {
+    EXPECT_EQ(t.layer_channels, 0x0f);
+    ASSERT_EQ(protocol::validate(protocol::Message(t)), std::nullopt);
+    weather::apply_tile(service, to_map_tile(t));
+  }
+  const weather::WeatherMap expected = weather::forecast_map(f, 1780272000.0, 64, 32);
+  ASSERT_TRUE(service.has_layer_coverage());
+  for (std::size_t i = 0; i < expected.rgba.size(); ++i) {
+    ASSERT_NEAR(service.rgba[i], expected.rgba[i], 1e-6f) << i;
+    ASSERT_NEAR(service.layer_coverage[i], expected.layer_coverage[i], 1e-6f) << i;
+  }
+  float c[4];
+  service.sample_layer_coverage(45.0, 10.0, c);
+  EXPECT_GT(c[0] + c[1] + c[2] + c[3], 0.5f) << "cloud where the forecast has it";
+}
+
+TEST(MapTiles, LayerSlotsFollowTheChannelsInEachTexel) {
+  MapRaster r = make_raster(3, 2, {protocol::tile_channel::kDensity, protocol::tile_channel::kCoverage});
+  r.layer_channels = 0b0110;  // slots 1 and 2: two more values per texel
+  r.values.clear();
+  for (int texel = 0; texel < 6; ++texel) r.values.insert(r.values.end(), {0.1f, 0.2f, 0.3f, 0.4f});
+  const auto tiles = split_into_tiles(r, GeoBounds{0, 0, 1, 1}, 0.0, 16);
+  ASSERT_EQ(tiles.size(), 1u);
+  EXPECT_EQ(tiles[0].layer_channels, 0b0110);
+  EXPECT_EQ(tiles[0].channel_count(), 4);
+  // coverage (raster value 1), density (value 0), then the slots as they are
+  EXPECT_EQ(std::vector<float>(tiles[0].data.begin(), tiles[0].data.begin() + 4),
+            (std::vector<float>{0.2f, 0.1f, 0.3f, 0.4f}));
+  r.layer_channels = 0x10;
+  EXPECT_THROW(split_into_tiles(r, GeoBounds{0, 0, 1, 1}, 0.0, 16), std::invalid_argument);
 }
 
 TEST(MapImage, ValuesOutsideTheUnitIntervalNameThePixel) {

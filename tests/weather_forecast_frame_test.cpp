@@ -2,8 +2,10 @@
 // and the weather map's layer-coverage channels (weather_map.h): sampling, poles, bounds.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
+#include "forecast_test_support.h"
 #include "weather/forecast_frame.h"
 
 namespace {
@@ -12,25 +14,17 @@ using namespace cloudsvc::weather;
 
 // Low cloud whose cover rises eastwards (0 at 0 E to 1 at 20 E), a fixed middle deck, and
 // shallow convection north of 50 N.
-class RampForecast : public ForecastWeather {
- public:
-  CloudColumn column_at(double lat, double lon, double) const override {
-    CloudColumn c;
-    c[CloudBand::Low] = {std::clamp(lon / 20.0, 0.0, 1.0), 1000.0, 1800.0};
-    c[CloudBand::Middle] = {0.3, 3500.0, 4500.0};
-    c[CloudBand::High] = {0.0};
-    c[CloudBand::Convective] = {lat > 50.0 ? 0.9 : 0.0, 1200.0, 3000.0};
-    return c;
-  }
-  std::vector<double> valid_times() const override { return {0.0}; }
-  const std::string& name() const override { return name_; }
-
- private:
-  std::string name_ = "ramp";
-};
+const cloudsvc::test::FunctionForecast ramp_forecast("ramp", [](double lat, double lon) {
+  CloudColumn c;
+  c[CloudBand::Low] = {std::clamp(lon / 20.0, 0.0, 1.0), 1000.0, 1800.0};
+  c[CloudBand::Middle] = {0.3, 3500.0, 4500.0};
+  c[CloudBand::High] = {0.0};
+  c[CloudBand::Convective] = {lat > 50.0 ? 0.9 : 0.0, 1200.0, 3000.0};
+  return c;
+});
 
 TEST(ForecastFrame, LayersOfTheRegionReadTheirSlotsChannels) {
-  const RampForecast f;
+  const auto& f = ramp_forecast;
   const Weather w = forecast_weather_at(f, 45.0, 10.0, 0.0);
   EXPECT_EQ(validate(w), "");
   ASSERT_EQ(w.layers.size(), 2u);
@@ -45,7 +39,7 @@ TEST(ForecastFrame, LayersOfTheRegionReadTheirSlotsChannels) {
 }
 
 TEST(ForecastFrame, TheMapHoldsEverySlotsCoverAtItsTexels) {
-  const RampForecast f;
+  const auto& f = ramp_forecast;
   const WeatherMap m = forecast_map(f, 0.0, 360, 180);
   ASSERT_TRUE(m.has_layer_coverage());
   float c[4], w[4];

@@ -371,6 +371,45 @@ TEST(GribErrors, BadFilesGetOneLineNamingTheFileAndTheProblem) {
   EXPECT_EQ(none.rfind(temperature.string() + ": no cloud fields among its 1 GRIB messages (", 0), 0u) << none;
   EXPECT_NE(none.find("expected cloud cover (e.g. tcc, lcc, mcc, hcc)"), std::string::npos) << none;
 
+  // A data section that does not hold what section 5 says (four times the groups): ecCodes'
+  // complex-packing decoder fails a consistency check, which would abort the process; the
+  // reader names the message instead, and reads other files afterwards.
+  const auto packed = dir.file("complex.grib2");
+  append_grib_message(packed, "regular_ll_sfc_grib2",
+                      {{"paramId", 164L}, {"bitsPerValue", 12L},
+                       {"packingType", std::string("grid_complex_spatial_differencing")}},
+                      cover_fraction);
+  std::vector<char> message(std::filesystem::file_size(packed));
+  std::ifstream(packed, std::ios::binary).read(message.data(), static_cast<std::streamsize>(message.size()));
+  const auto octets = [&](std::size_t at) {  // 4-byte big-endian number at `at`
+    std::uint32_t v = 0;
+    for (int k = 0; k < 4; ++k) v = (v << 8) | static_cast<unsigned char>(message[at + k]);
+    return v;
+  };
+  bool damaged_groups = false;
+  for (std::size_t at = 16; at + 35 < message.size() && octets(at) > 0; at += octets(at)) {  // sections after the indicator
+    if (message[at + 4] != 5) continue;
+    const std::uint32_t groups = octets(at + 31);  // octets 32-35 of template 5.2 / 5.3: the number of groups
+    for (int k = 0; k < 4; ++k) message[at + 31 + k] = static_cast<char>(((4 * groups) >> (24 - 8 * k)) & 0xff);
+    damaged_groups = groups > 0;
+    break;
+  }
+  ASSERT_TRUE(damaged_groups);
+  const auto damaged = dir.file("damaged.grib2");
+  std::ofstream(damaged, std::ios::binary).write(message.data(), static_cast<std::streamsize>(message.size()));
+  const std::string damage = read_error(damaged);
+  EXPECT_EQ(damage.rfind(damaged.string() + ": damaged GRIB message 1: ecCodes cannot decode it (", 0), 0u) << damage;
+  EXPECT_EQ(read_error(packed), "") << "a good file reads after a damaged one";
+
+  // A local cover parameter in units that are neither % nor a fraction.
+  std::string problem;
+  const auto role = classify_cloud_field(GribIdentity{0, 6, 192, 1, 164, "tcc", "okta"}, &problem);
+  EXPECT_TRUE(role.has_value());
+  EXPECT_EQ(problem, "cloud cover in units 'okta', neither % nor a fraction 0-1");
+  problem.clear();
+  classify_cloud_field(GribIdentity{0, 6, 192, 1, 164, "tcc", "(0 - 1)"}, &problem);
+  EXPECT_EQ(problem, "");
+
   const auto spectral = dir.file("sh.grib2");
   append_grib_message(spectral, "sh_sfc_grib2", {{"paramId", 164L}}, [](double, double) { return 0.5; });
   const std::string sh = read_error(spectral);

@@ -65,7 +65,12 @@ TEST(WeatherTiles, ProblemsAreNamed) {
   EXPECT_EQ(t.problem(), "MapTile.data has 15 values, expected 16 (width 4 x height 4 x 1 channels)");
   t = coverage_tile(40, 0, 50, 20, 0.5f);
   t.channels = 0;
-  EXPECT_EQ(t.problem(), "MapTile.channels is empty");
+  EXPECT_EQ(t.problem(), "MapTile.channels and layer_channels are empty");
+  t.layer_channels = 0x01;  // the one value per texel is layer coverage slot 0
+  EXPECT_TRUE(t.problem().empty());
+  t.layer_channels = 0x11;
+  EXPECT_EQ(t.problem(), "MapTile.layer_channels has unknown bits 0x10");
+  t.layer_channels = 0;
   t.channels = 0x21;
   EXPECT_EQ(t.problem(), "MapTile.channels has unknown bits 0x20");
   t = coverage_tile(40, 0, 50, 20, 0.5f);
@@ -76,6 +81,47 @@ TEST(WeatherTiles, ProblemsAreNamed) {
   t.channels = 0b101;
   t.data = {0.5f, 0.5f, 0.5f, 1.25f};
   EXPECT_EQ(t.problem(), "MapTile.data[3] 1.25 out of range [0, 1] (col 1, row 0, density)");
+  // Layer-coverage slots follow the channels in each texel (coverage, slot 1, slot 3).
+  t.channels = 0b1;
+  t.layer_channels = 0b1010;
+  t.data = {0.5f, 0.5f, 0.5f, 0.5f, 0.5f, -0.5f};
+  EXPECT_EQ(t.problem(), "MapTile.data[5] -0.5 out of range [0, 1] (col 1, row 0, layer coverage 3)");
+  t.data.pop_back();
+  EXPECT_EQ(t.problem(), "MapTile.data has 5 values, expected 6 (width 2 x height 1 x 3 channels)");
+}
+
+// Forecast weather streamed as tiles: the layer-coverage slots land in the map's layer
+// coverage (a map without any gets it, 0 where no tile gave a value), in their area only,
+// next to the tile's weather-map channels.
+TEST(WeatherTiles, LayerCoverageSlotsLandInTheMapsLayerCoverage) {
+  WeatherMap m = flat_map(0.5f);
+  ASSERT_FALSE(m.has_layer_coverage());
+  MapTile t = coverage_tile(40, 0, 50, 20, 0.9f, 0.0, 2, 2);
+  t.layer_channels = 0b0101;  // slots 0 and 2 after the coverage channel
+  t.data.clear();
+  for (int texel = 0; texel < 4; ++texel) t.data.insert(t.data.end(), {0.9f, 0.25f, 0.75f});
+  ASSERT_TRUE(t.problem().empty()) << t.problem();
+  apply_tile(m, t);
+  ASSERT_TRUE(m.has_layer_coverage());
+  float c[4];
+  m.sample_layer_coverage(45, 10, c);
+  EXPECT_NEAR(c[0], 0.25f, 1e-6);
+  EXPECT_NEAR(c[1], 0.0f, 1e-6) << "a slot the tile does not carry";
+  EXPECT_NEAR(c[2], 0.75f, 1e-6);
+  EXPECT_NEAR(c[3], 0.0f, 1e-6);
+  EXPECT_NEAR(at(m, 45, 10), 0.9f, 1e-6) << "the coverage channel, before the slots";
+  m.sample_layer_coverage(30, 10, c);
+  EXPECT_NEAR(c[0], 0.0f, 1e-6) << "outside the tile";
+  // A second tile with slot 2 only keeps slot 0.
+  MapTile u = coverage_tile(40, 0, 50, 20, 0.0f, 0.0, 1, 1);
+  u.channels = 0;
+  u.layer_channels = 0b0100;
+  u.data = {0.5f};
+  apply_tile(m, u);
+  m.sample_layer_coverage(45, 10, c);
+  EXPECT_NEAR(c[0], 0.25f, 1e-6);
+  EXPECT_NEAR(c[2], 0.5f, 1e-6);
+  EXPECT_NEAR(at(m, 45, 10), 0.9f, 1e-6) << "no channels: the map's rgba untouched";
 }
 
 // The one size limit of a tile, whoever sends it (the protocol announces the same number).

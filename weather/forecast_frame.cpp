@@ -42,6 +42,14 @@ Weather forecast_weather_at(const ForecastWeather& w, double lat_deg, double lon
   return out;
 }
 
+std::pair<std::size_t, std::size_t> keyframe_steps_around(const std::vector<double>& steps, double utc_s,
+                                                          std::size_t max_count) {
+  const std::size_t n = steps.size(), k = std::min(n, max_count);
+  const auto at = static_cast<std::size_t>(
+      std::max<std::ptrdiff_t>(0, std::upper_bound(steps.begin(), steps.end(), utc_s) - steps.begin() - 1));
+  return {std::min(at - std::min(at, k / 3), n - k), k};
+}
+
 WeatherMap forecast_map(const ForecastWeather& w, double utc_s, int width, int height) {
   WeatherMap map;
   if (width <= 0 || height <= 0) return map;

@@ -10,6 +10,10 @@
 // Moving more than kForecastRegion_m / 2 calls for new layers (the service does).
 #pragma once
 
+#include <cstddef>
+#include <utility>
+#include <vector>
+
 #include "weather/cloud_layer.h"
 #include "weather/forecast_weather.h"
 #include "weather/weather_map.h"
@@ -24,6 +28,12 @@ CloudColumn regional_column(const ForecastWeather& w, double lat_deg, double lon
 // The weather of the region: its layers (each with its coverage channel), named after the
 // source; validate() accepts it.
 Weather forecast_weather_at(const ForecastWeather& w, double lat_deg, double lon_deg, double utc_s);
+
+// The forecast steps to hold as keyframes around a time: [first, first + count) of `steps`
+// (valid times, ascending), count = min(steps.size(), max_count), starting up to a third of
+// them before the step at or before utc_s (the first step when utc_s precedes all).
+std::pair<std::size_t, std::size_t> keyframe_steps_around(const std::vector<double>& steps, double utc_s,
+                                                          std::size_t max_count);
 
 // A global map of width x height texels at a time: R, G, B neutral (0.5) and A 0, and every
 // texel's slot covers (slot_covers) as its layer coverage. Rows in parallel on all cores.

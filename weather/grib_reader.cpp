@@ -9,9 +9,11 @@
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <stdexcept>
 #include <string_view>
 
 #include "geodesy/utc_time.h"
+#include "weather/file_extension.h"
 #include "weather/standard_atmosphere.h"
 #include "weather/weather_json.h"
 
@@ -25,9 +27,21 @@ thread_local std::string g_last_eccodes_message;
 void keep_eccodes_message(const codes_context*, int level, const char* message) {
   if (level == CODES_LOG_ERROR || level == CODES_LOG_FATAL) g_last_eccodes_message = message ? message : "";
 }
+// ecCodes stops the process (abort) when a decoder's consistency check fails, as it does on
+// some damaged data sections (e.g. complex packing whose group sizes exceed the values).
+// Bad input must not stop the service: the check's procedure throws instead, and the reader
+// turns that into a one-line error about the message. The exception unwinds through
+// ecCodes' C frames (built with unwind tables, as Debian's x86_64 and arm64 builds are); what
+// ecCodes allocated for that message is leaked, once per damaged message.
+struct EccodesCheckFailed : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+void throw_eccodes_check(const char* message) { throw EccodesCheckFailed(message ? message : "?"); }
+
 void route_eccodes_logging() {
   static const bool routed = [] {
     codes_context_set_logging_proc(codes_context_get_default(), keep_eccodes_message);
+    codes_set_codes_assertion_failed_proc(throw_eccodes_check);
     return true;
   }();
   (void)routed;
@@ -110,27 +124,22 @@ void convert_values(const CloudFieldRole& role, std::vector<double>& v) {
 }  // namespace
 
 bool is_grib_path(const std::string& path) {
-  const std::size_t dot = path.find_last_of('.');
-  if (dot == std::string::npos || path.find('/', dot) != std::string::npos) return false;
-  std::string ext = path.substr(dot + 1);
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const std::string ext = lowercase_extension(path);
   return ext == "grib2" || ext == "grb2" || ext == "grib" || ext == "grb";
 }
 
-GribReadResult read_grib_cloud_fields(const std::string& path) {
-  route_eccodes_logging();
-  std::unique_ptr<FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
-  if (!file) fail(path, std::string("cannot open: ") + std::strerror(errno));
+namespace {
 
-  GribReadResult result;
+// Reads the file's messages into result (counting them as it goes).
+void read_messages(const std::string& path, FILE* file, GribReadResult& result) {
   // Latitudes and longitudes of the last grid, reused by messages on the same grid.
   std::string grid_md5;
   std::vector<double> lats, lons;
   for (;;) {
-    const long offset = std::ftell(file.get());
+    const long offset = std::ftell(file);
     int error = 0;
     g_last_eccodes_message.clear();
-    Handle h(codes_handle_new_from_file(nullptr, file.get(), PRODUCT_GRIB, &error));
+    Handle h(codes_handle_new_from_file(nullptr, file, PRODUCT_GRIB, &error));
     if (!h) {
       if (error == 0 || error == GRIB_END_OF_FILE) break;
       fail(path, "truncated or damaged GRIB message " + std::to_string(result.messages + 1) + " after byte " +
@@ -199,6 +208,21 @@ GribReadResult read_grib_cloud_fields(const std::string& path) {
     convert_values(out.role, values);
     out.field = GridField::from_points(lats, lons, values);
     result.clouds.push_back(std::move(out));
+  }
+}
+
+}  // namespace
+
+GribReadResult read_grib_cloud_fields(const std::string& path) {
+  route_eccodes_logging();
+  std::unique_ptr<FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
+  if (!file) fail(path, std::string("cannot open: ") + std::strerror(errno));
+
+  GribReadResult result;
+  try {
+    read_messages(path, file.get(), result);
+  } catch (const EccodesCheckFailed& e) {
+    fail(path, "damaged GRIB message " + std::to_string(result.messages) + ": ecCodes cannot decode it (" + e.what() + ")");
   }
   if (result.messages == 0) fail(path, "not a GRIB file (no GRIB message found)");
   if (result.clouds.empty()) {

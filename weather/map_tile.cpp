@@ -47,6 +47,15 @@ Problem open_closed(std::string_view pre, std::string_view field, double v, doub
   return {};
 }
 
+Problem known_bits(std::string_view pre, std::string_view field, std::uint8_t bits, std::uint8_t known) {
+  if (const unsigned unknown = bits & ~unsigned{known}) {
+    char hex[8];
+    const auto r = std::to_chars(hex, hex + sizeof hex, unknown, 16);
+    return line(pre, field, " has unknown bits 0x", std::string_view(hex, r.ptr - hex));
+  }
+  return {};
+}
+
 Problem texels(std::string_view pre, std::string_view field, std::int64_t v) {
   if (v < 1 || v > kMaxTileTexels) {
     return line(pre, field, " ", std::to_string(v), " out of range [1, ", std::to_string(kMaxTileTexels), "]");
@@ -54,7 +63,7 @@ Problem texels(std::string_view pre, std::string_view field, std::int64_t v) {
   return {};
 }
 
-std::string_view channel_name(int bit) {
+std::string_view tile_channel_name(int bit) {
   switch (bit) {
     case 0:
       return "coverage";
@@ -69,6 +78,16 @@ std::string_view channel_name(int bit) {
   }
 }
 
+// The name of value k of a texel (0 <= k < tile_value_count): its channel, or its layer
+// coverage slot after the channels.
+std::string channel_name(const MapTileHeader& t, int k) {
+  for (int bit = 0; bit < 8; ++bit)
+    if (((t.channels >> bit) & 1) && k-- == 0) return std::string(tile_channel_name(bit));
+  for (int slot = 0; slot < 4; ++slot)
+    if (((t.layer_channels >> slot) & 1) && k-- == 0) return "layer coverage " + std::to_string(slot);
+  return "?";
+}
+
 #define CHECK(expr)                                  \
   do {                                               \
     if (Problem p_ = (expr); !p_.empty()) return p_; \
@@ -77,7 +96,12 @@ std::string_view channel_name(int bit) {
 }  // namespace
 
 MapTileHeader MapTile::header() const {
-  return MapTileHeader{lat_min_deg, lon_min_deg, lat_max_deg, lon_max_deg, width, height, channels, valid_at_utc_s};
+  return MapTileHeader{lat_min_deg, lon_min_deg, lat_max_deg, lon_max_deg, width, height, channels, valid_at_utc_s,
+                       layer_channels};
+}
+
+int tile_value_count(std::uint8_t channels, std::uint8_t layer_channels) {
+  return std::popcount(channels) + std::popcount(layer_channels);
 }
 
 std::string MapTile::problem(std::string_view field_prefix) const {
@@ -93,18 +117,15 @@ std::string tile_header_problem(const MapTileHeader& t, std::string_view pre) {
   CHECK(open_closed(pre, "lon_max_deg", t.lon_max_deg, t.lon_min_deg, t.lon_min_deg + 360.0));
   CHECK(texels(pre, "width", t.width));
   CHECK(texels(pre, "height", t.height));
-  if (const unsigned unknown = t.channels & ~unsigned{kAllTileChannels}) {
-    char hex[8];
-    const auto r = std::to_chars(hex, hex + sizeof hex, unknown, 16);
-    return line(pre, "channels", " has unknown bits 0x", std::string_view(hex, r.ptr - hex));
-  }
-  if (t.channels == 0) return line(pre, "channels", " is empty");
+  CHECK(known_bits(pre, "channels", t.channels, kAllTileChannels));
+  CHECK(known_bits(pre, "layer_channels", t.layer_channels, kAllLayerCoverageSlots));
+  if (t.channels == 0 && t.layer_channels == 0) return line(pre, "channels", " and layer_channels are empty");
   if (!std::isfinite(t.valid_at_utc_s)) return not_finite(pre, "valid_at_utc_s", t.valid_at_utc_s);
   return {};
 }
 
 std::string tile_data_problem(const MapTileHeader& t, std::span<const float> data, std::string_view pre) {
-  const int nc = std::popcount(t.channels);
+  const int nc = tile_value_count(t.channels, t.layer_channels);
   const auto columns = static_cast<std::size_t>(t.width);
   const std::size_t expected = columns * static_cast<std::size_t>(t.height) * nc;
   if (data.size() != expected) {
@@ -116,16 +137,8 @@ std::string tile_data_problem(const MapTileHeader& t, std::span<const float> dat
     const float v = data[i];
     if (v >= 0.0f && v <= 1.0f) continue;  // false for NaN
     const std::size_t texel = i / nc;
-    int k = static_cast<int>(i % nc);
-    int bit = 0;  // the k-th set bit of channels
-    for (;; ++bit) {
-      if ((t.channels >> bit) & 1) {
-        if (k == 0) break;
-        --k;
-      }
-    }
     return line(pre, "data", "[", std::to_string(i), "] ", num(static_cast<double>(v)), " out of range [0, 1] (col ",
-                std::to_string(texel % columns), ", row ", std::to_string(texel / columns), ", ", channel_name(bit),
+                std::to_string(texel % columns), ", row ", std::to_string(texel / columns), ", ", channel_name(t, static_cast<int>(i % nc)),
                 ")");
   }
   return {};

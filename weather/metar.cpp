@@ -11,6 +11,7 @@
 #include <regex>
 
 #include "geodesy/utc_time.h"
+#include "weather/file_extension.h"
 #include "weather/weather_json.h"
 
 namespace cloudsvc::weather {
@@ -139,10 +140,7 @@ MetarReport parse_metar(std::string_view report, double reference_utc_s) {
 }
 
 bool is_metar_path(const std::string& path) {
-  const std::size_t dot = path.find_last_of('.');
-  if (dot == std::string::npos || path.find('/', dot) != std::string::npos) return false;
-  std::string ext = path.substr(dot + 1);
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const std::string ext = lowercase_extension(path);
   return ext == "metar" || ext == "txt";
 }
 

@@ -9,15 +9,12 @@
 
 namespace cloudsvc::weather {
 
-void apply_tile(WeatherMap& map, const MapTile& t) {
-  int source[4];  // map channel k <- the tile's channel bit k (the first four bits)
-  for (int k = 0, i = 0; k < 4; ++k) source[k] = (t.channels >> k) & 1u ? i++ : kResampleKeep;
-  resample_tile(map, t, source);
-}
+namespace {
 
-void resample_tile(WeatherMap& map, const MapTile& t, const int (&slot)[4]) {
-  if (map.width <= 0 || map.height <= 0) return;
-  const int nch = std::popcount(t.channels);
+// resample_tile into a grid of 4 values per texel (WeatherMap::rgba or layer_coverage).
+void resample_into(std::vector<float>& grid, int width, int height, const MapTile& t, const int (&slot)[4]) {
+  if (width <= 0 || height <= 0) return;
+  const int nch = tile_value_count(t.channels, t.layer_channels);
   const double dlat = (t.lat_max_deg - t.lat_min_deg) / t.height;
   const double dlon = (t.lon_max_deg - t.lon_min_deg) / t.width;
   auto tile_value = [&](int col, int row, int s) {
@@ -25,20 +22,20 @@ void resample_tile(WeatherMap& map, const MapTile& t, const int (&slot)[4]) {
     row = std::clamp(row, 0, t.height - 1);
     return t.data[(static_cast<std::size_t>(row) * t.width + col) * nch + s];
   };
-  for (int j = 0; j < map.height; ++j) {
-    const double lat = -90.0 + (j + 0.5) * 180.0 / map.height;
+  for (int j = 0; j < height; ++j) {
+    const double lat = -90.0 + (j + 0.5) * 180.0 / height;
     if (lat < t.lat_min_deg || lat > t.lat_max_deg) continue;
     const double y = (lat - t.lat_min_deg) / dlat - 0.5;
     const int r0 = static_cast<int>(std::floor(y));
     const double fy = y - r0;
-    for (int i = 0; i < map.width; ++i) {
-      double lon = -180.0 + (i + 0.5) * 360.0 / map.width;
+    for (int i = 0; i < width; ++i) {
+      double lon = -180.0 + (i + 0.5) * 360.0 / width;
       if (lon < t.lon_min_deg) lon += 360.0;  // tiles crossing the antimeridian
       if (lon < t.lon_min_deg || lon > t.lon_max_deg) continue;
       const double x = (lon - t.lon_min_deg) / dlon - 0.5;
       const int c0 = static_cast<int>(std::floor(x));
       const double fx = x - c0;
-      float* px = &map.rgba[(static_cast<std::size_t>(j) * map.width + i) * 4];
+      float* px = &grid[(static_cast<std::size_t>(j) * width + i) * 4];
       for (int k = 0; k < 4; ++k) {
         if (slot[k] == kResampleOne) px[k] = 1.0f;
         if (slot[k] < 0) continue;
@@ -48,6 +45,25 @@ void resample_tile(WeatherMap& map, const MapTile& t, const int (&slot)[4]) {
       }
     }
   }
+}
+
+}  // namespace
+
+void apply_tile(WeatherMap& map, const MapTile& t) {
+  int source[4];  // map channel k <- the tile's channel bit k (the first four bits)
+  for (int k = 0, i = 0; k < 4; ++k) source[k] = (t.channels >> k) & 1u ? i++ : kResampleKeep;
+  resample_tile(map, t, source);
+  if (t.layer_channels == 0) return;
+  // Layer coverage slot k <- the tile's slot bit k, after its channels' values. A map
+  // without layer coverage gets it, 0 (no cloud of those layers) where no tile gave any.
+  if (!map.has_layer_coverage()) map.layer_coverage.assign(map.rgba.size(), 0.0f);
+  for (int k = 0, i = std::popcount(t.channels); k < 4; ++k)
+    source[k] = (t.layer_channels >> k) & 1u ? i++ : kResampleKeep;
+  resample_into(map.layer_coverage, map.width, map.height, t, source);
+}
+
+void resample_tile(WeatherMap& map, const MapTile& t, const int (&slot)[4]) {
+  resample_into(map.rgba, map.width, map.height, t, slot);
 }
 
 WeatherTimeline::WeatherTimeline(WeatherMap base) { reset(std::move(base)); }

@@ -22,12 +22,13 @@
 
 namespace cloudsvc::weather {
 
-// Writes the tile's weather-map channels (kWeatherMapTileChannels) into `map` at every map
-// texel whose centre lies inside the tile (bilinear resampling of the tile; seamless across
-// the antimeridian).
+// Writes the tile's weather-map channels (kWeatherMapTileChannels) and layer-coverage slots
+// (MapTile::layer_channels) into `map` at every map texel whose centre lies inside the tile
+// (bilinear resampling of the tile; seamless across the antimeridian). A map without layer
+// coverage that gets a slot gets all four, 0 outside the tile.
 void apply_tile(WeatherMap& map, const MapTile& tile);
 
-// The resampling of apply_tile with the destination chosen per map channel k:
+// The resampling of apply_tile with the destination chosen per map channel k of rgba:
 // source[k] >= 0 writes the tile's value at texel slot source[k] (its index among the
 // tile's channels, ascending bit order), kResampleKeep leaves the channel as it is and
 // kResampleOne writes 1 (e.g. a weight: "a tile covers this texel").

@@ -188,7 +188,13 @@ void read_messages(const std::string& path, FILE* file, GribReadResult& result) 
     constexpr double kMissing = 1.0e35;
     const bool bitmap = get_long(m, "bitmapPresent") != 0;
     if (bitmap) codes_set_double(m, "missingValue", kMissing);
-    std::vector<double> values = get_doubles(m, "values", &error);
+    std::vector<double> values;
+    try {
+      values = get_doubles(m, "values", &error);
+    } catch (const EccodesCheckFailed& e) {
+      fail(path, label + ": cannot decode values packed as '" + get_string(m, "packingType") + "': the data section is damaged (" +
+                     e.what() + ")");
+    }
     if (error != 0)
       fail(path, label + ": cannot decode values packed as '" + get_string(m, "packingType") + "': " + eccodes_reason(error));
     if (bitmap)

@@ -7,7 +7,9 @@
 //                      session, one refused at the handshake, one with a bad frame;
 //   protocol_validate, weather_timeline  pseudo-random bytes (for FuzzedDataProvider any
 //                      bytes are a valid input; these give it a start beyond the empty one);
-//   simclient_map_image  small images (seed_images.h).
+//   simclient_map_image  small images (seed_images.h);
+//   cigi_datagram      CIGI host datagrams (IG Control with every honoured packet, in
+//                      both byte orders, and one cut short) and an IG datagram.
 // The build runs it into build-san/fuzz/seeds (fuzz/CMakeLists.txt).
 #include <cstdint>
 #include <cstdio>
@@ -20,6 +22,7 @@
 
 #include "fuzz/seed_images.h"
 #include "fuzz/seed_messages.h"
+#include "protocol/cigi/cigi_datagram.h"
 #include "protocol/codec.h"
 #include "protocol/framing.h"
 
@@ -120,6 +123,34 @@ void write_random_seeds(const fs::path& root, const std::string& target, std::ui
 
 }  // namespace
 
+void write_cigi_seeds(const fs::path& root) {
+  using namespace cloudsvc::cigi;
+  const fs::path dir = fresh_dir(root, "cigi_datagram");
+  for (ByteOrder order : {ByteOrder::Big, ByteOrder::Little}) {
+    const std::string suffix = order == ByteOrder::Big ? "-big" : "-little";
+    DatagramWriter w(order);
+    w.add(IgControl{});
+    w.add(EntityControl{});
+    w.add(ViewControl{});
+    ViewDefinition v;
+    v.enable = 0x3f;
+    v.near_m = 1.0f, v.far_m = 1.0e5f, v.left_deg = -30.0f, v.right_deg = 30.0f, v.top_deg = 20.0f, v.bottom_deg = -20.0f;
+    w.add(v);
+    w.add(CelestialSphereControl{});
+    w.add(AtmosphereControl{});
+    w.add(EnvironmentalRegionControl{});
+    w.add(WeatherControl{});
+    write_file(dir / ("host" + suffix), w.bytes());
+    Bytes cut = w.bytes();
+    cut.resize(cut.size() - 13);
+    write_file(dir / ("host-cut" + suffix), cut);
+    DatagramWriter ig(order);
+    ig.add(StartOfFrame{});
+    ig.add(IgMessage{1, "View Definition at byte 24: far_m 0 out of range"});
+    write_file(dir / ("ig" + suffix), ig.bytes());
+  }
+}
+
 int main(int argc, char** argv) {
   if (argc != 2) {
     std::fprintf(stderr, "usage: %s <seed-dir>\n", argv[0]);
@@ -130,6 +161,7 @@ int main(int argc, char** argv) {
     write_decode_seeds(root);
     write_framing_seeds(root);
     write_session_seeds(root);
+    write_cigi_seeds(root);
     write_random_seeds(root, "protocol_validate", 0x2545f491u);
     write_random_seeds(root, "weather_timeline", 0x9e3779b9u);
     fuzz::write_seed_images(fresh_dir(root, "simclient_map_image"));

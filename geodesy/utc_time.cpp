@@ -123,16 +123,19 @@ std::optional<double> parse_utc_iso8601(std::string_view text) {
   }
   if (!r.done()) return std::nullopt;
 
+  const std::optional<double> utc = utc_from_civil(year, month, day, hour, minute, second);
+  if (!utc) return std::nullopt;
+  return *utc - static_cast<double>(offset_s) + frac;
+}
+
+std::optional<double> utc_from_civil(int year, int month, int day, int hour, int minute, int second) {
   if (year < kMinYear || year > kMaxYear || month < 1 || month > 12 || day < 1 ||
       day > days_in_month(year, month))
     return std::nullopt;
   // Hour 24 (end of day) and leap second 60 are not accepted: POSIX time has neither.
-  if (hour > 23 || minute > 59 || second > 59) return std::nullopt;
-
+  if (hour < 0 || minute < 0 || second < 0 || hour > 23 || minute > 59 || second > 59) return std::nullopt;
   const std::int64_t days = days_from_civil(year, month, day);
-  const std::int64_t whole =
-      days * kSecondsPerDay + hour * 3600 + minute * 60 + second - offset_s;
-  return static_cast<double>(whole) + frac;
+  return static_cast<double>(days * kSecondsPerDay + hour * 3600 + minute * 60 + second);
 }
 
 std::string format_utc_iso8601(double unix_time_s) {

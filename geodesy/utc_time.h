@@ -13,6 +13,10 @@ namespace cloudsvc::geo {
 // (month 13, day 31 in April, hour 24, ...). Years 1900..2199.
 std::optional<double> parse_utc_iso8601(std::string_view text);
 
+// Seconds since the Unix epoch of a UTC calendar date and time, or nullopt when a field is
+// out of range (the rules of parse_utc_iso8601: years 1900..2199, no hour 24 or second 60).
+std::optional<double> utc_from_civil(int year, int month, int day, int hour, int minute, int second);
+
 // Formats seconds since the Unix epoch as "YYYY-MM-DDTHH:MM:SSZ" (rounded to 1 s).
 std::string format_utc_iso8601(double unix_time_s);
 

@@ -14,6 +14,7 @@ namespace {
 
 using cloudsvc::geo::format_utc_iso8601;
 using cloudsvc::geo::parse_utc_iso8601;
+using cloudsvc::geo::utc_from_civil;
 using cloudsvc::geo::solar_position;
 using cloudsvc::geo::SolarPosition;
 
@@ -393,6 +394,19 @@ TEST(UtcTime, RoundTripEveryDay) {
     ++n;
   }
   EXPECT_EQ(n, 109573);  // days in 1900..2199
+}
+
+// Calendar fields (CIGI's Celestial Sphere Control) to UTC: the same instants and rules as
+// the ISO 8601 text.
+TEST(UtcTime, FromCivilFields) {
+  EXPECT_EQ(utc_from_civil(2026, 6, 21, 12, 30, 15), parse_utc_iso8601("2026-06-21T12:30:15Z"));
+  EXPECT_EQ(utc_from_civil(1970, 1, 1, 0, 0, 0), 0.0);
+  EXPECT_EQ(utc_from_civil(2028, 2, 29, 23, 59, 59), parse_utc_iso8601("2028-02-29T23:59:59Z"));
+  EXPECT_FALSE(utc_from_civil(2026, 2, 29, 0, 0, 0));
+  EXPECT_FALSE(utc_from_civil(2026, 13, 1, 0, 0, 0));
+  EXPECT_FALSE(utc_from_civil(2026, 6, 21, 24, 0, 0));
+  EXPECT_FALSE(utc_from_civil(2026, 6, 21, 12, -1, 0));
+  EXPECT_FALSE(utc_from_civil(1899, 12, 31, 0, 0, 0));
 }
 
 }  // namespace

@@ -115,6 +115,21 @@ TEST(Metar, LayersAboveTheAerodromeAtSeaLevelAndInTheMountains) {
   EXPECT_NEAR(l[0].top_m, l[0].base_m + kDeckDepth_m[0], 1e-6);
   EXPECT_DOUBLE_EQ(l[0].coverage, 0.75);
 
+  // A high aerodrome, as published (KDEN, 5431 ft): scattered cloud 8000 ft above the field,
+  // and a clear report with the US remark groups.
+  const Aerodrome& kden = *find_aerodrome("KDEN");
+  EXPECT_NEAR(kden.elevation_m, 5431 * kFt, 1e-6);
+  l = layers_from_column(column_of_report(
+      parse_metar("METAR KDEN 172353Z 28007KT 10SM SCT080 27/10 A3018 RMK AO2 SLP141", kReference), kden));
+  ASSERT_EQ(l.size(), 1u);
+  EXPECT_NEAR(l[0].base_m, kden.elevation_m + 8000 * kFt, 1e-6);
+  EXPECT_DOUBLE_EQ(l[0].coverage, 3.5 / 8);
+  EXPECT_GT(l[0].base_m, 4000.0) << "above the field at 1.7 km, not above sea level";
+  const MetarReport clear = parse_metar(
+      "METAR KDEN 191153Z 00000KT 10SM CLR M03/M11 A2985 RMK AO2 SLP107 T10331111 10044 21033 53000", kReference);
+  EXPECT_TRUE(clear.clear);
+  EXPECT_TRUE(layers_from_column(column_of_report(clear, kden)).empty());
+
   // Mountains (SLLP, 4071 m), composed: a scattered cumulonimbus at 3000 ft and a broken
   // middle deck at 10000 ft above the field.
   const Aerodrome& sllp = *find_aerodrome("SLLP");

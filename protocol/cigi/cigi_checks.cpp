@@ -6,6 +6,8 @@
 #include <cmath>
 #include <string_view>
 
+#include "geodesy/utc_time.h"
+
 namespace cloudsvc::cigi {
 namespace {
 
@@ -32,8 +34,6 @@ constexpr double kHuge = 1.0e9;  // "any finite value" for fields the IG only st
   do {                                                  \
     if (std::string p_ = (expr); !p_.empty()) return p_; \
   } while (false)
-
-bool leap(int y) { return (y % 4 == 0 && y % 100 != 0) || y % 400 == 0; }
 
 }  // namespace
 
@@ -91,10 +91,8 @@ std::string check(const CelestialSphereControl& p) {
   if (!p.date_valid) return {};
   const int month = static_cast<int>(p.date / 1000000), day = static_cast<int>(p.date / 10000 % 100),
             year = static_cast<int>(p.date % 10000);
-  static constexpr int kDays[] = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
-  const std::string bad = "date " + std::to_string(p.date) + " is not a date MMDDYYYY in 1900..2199";
-  if (year < 1900 || year > 2199 || month < 1 || month > 12) return bad;
-  if (day < 1 || day > kDays[month - 1] + (month == 2 && leap(year) ? 1 : 0)) return bad;
+  if (!geo::utc_from_civil(year, month, day, p.hour, p.minute, 0))
+    return "date " + std::to_string(p.date) + " is not a date MMDDYYYY in 1900..2199";
   return {};
 }
 

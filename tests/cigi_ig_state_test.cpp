@@ -1,0 +1,153 @@
+// The IG's state from a CIGI host's datagrams (protocol/cigi/cigi_ig_state.h): views built up
+// field by field, the ownship, the sun's time, global and regional cloud layers, and the
+// packets refused at this stage.
+#include <gtest/gtest.h>
+
+#include "geodesy/utc_time.h"
+#include "protocol/cigi/cigi_ig_state.h"
+
+namespace cloudsvc::cigi {
+namespace {
+
+// A datagram of these packets as a host sends it, read back as the IG reads it.
+HostDatagram datagram(std::vector<HostPacket> packets, std::uint32_t host_frame = 1, IgMode mode = IgMode::Operate) {
+  DatagramWriter w(ByteOrder::Big);
+  IgControl c;
+  c.host_frame = host_frame;
+  c.mode = mode;
+  w.add(c);
+  for (const HostPacket& p : packets) w.add(p);
+  HostDatagram d = read_host_datagram(w.bytes());
+  EXPECT_TRUE(d.rejections.empty()) << d.rejections.front().reason;
+  return d;
+}
+
+TEST(CigiIgState, ViewsAreBuiltFieldByFieldFromTheDefault) {
+  const ViewFrustum defaults{-25.0f, 25.0f, 15.0f, -15.0f, 1.0f, 100000.0f};
+  IgState s(defaults);
+  ASSERT_EQ(s.views().size(), 1u);
+  EXPECT_EQ(s.views()[0].frustum, defaults) << "before any view packet: view 0 with the IG's field of view";
+  ViewControl left;
+  left.view_id = 1;
+  left.enable = view_enable::kYaw | view_enable::kY;
+  left.yaw_deg = -50.0f;
+  left.y_m = -0.5f;
+  left.x_m = 99.0f;  // not enabled: not used
+  ViewDefinition narrow;
+  narrow.view_id = 1;
+  narrow.enable = definition_enable::kLeft | definition_enable::kRight;
+  narrow.left_deg = -20.0f;
+  narrow.right_deg = 20.0f;
+  EXPECT_TRUE(s.apply(datagram({left, narrow}, 7)).empty());
+  EXPECT_EQ(s.last_host_frame(), 7u);
+  EXPECT_EQ(s.mode(), IgMode::Operate);
+  ASSERT_EQ(s.views().size(), 1u) << "the host's views replace the default one";
+  const View v = s.views()[0];
+  EXPECT_EQ(v.id, 1);
+  EXPECT_EQ(v.yaw_deg, -50.0f);
+  EXPECT_EQ(v.y_m, -0.5f);
+  EXPECT_EQ(v.x_m, 0.0f);
+  EXPECT_EQ(v.frustum.left_deg, -20.0f);
+  EXPECT_EQ(v.frustum.right_deg, 20.0f);
+  EXPECT_EQ(v.frustum.top_deg, 15.0f) << "not enabled: the default";
+  // A definition that would cross the view's other fields is refused whole.
+  ViewDefinition bad;
+  bad.view_id = 1;
+  bad.enable = definition_enable::kLeft;
+  bad.left_deg = 40.0f;
+  const auto refused = s.apply(datagram({bad}));
+  ASSERT_EQ(refused.size(), 1u);
+  EXPECT_EQ(refused[0], "View Definition of view 1: with the view's other fields no frustum (left < right, bottom < top, near < far)");
+  EXPECT_EQ(s.views()[0].frustum.left_deg, -20.0f);
+  // At most kMaxViews views.
+  std::vector<HostPacket> many;
+  for (std::uint16_t id = 10; id < 20; ++id) {
+    ViewControl c;
+    c.view_id = id;
+    many.push_back(c);
+  }
+  const auto over = s.apply(datagram(many));
+  EXPECT_EQ(s.views().size(), IgState::kMaxViews);
+  ASSERT_EQ(over.size(), 10u - (IgState::kMaxViews - 1));
+  EXPECT_EQ(over[0], "View Control of view 17: the IG draws at most 8 views");
+}
+
+TEST(CigiIgState, OwnshipTimeAndAtmosphere) {
+  IgState s;
+  EXPECT_FALSE(s.ownship());
+  EntityControl e;
+  e.lat_deg = 47.45;
+  e.lon_deg = 8.56;
+  e.alt_m = 3000.0;
+  e.yaw_deg = 120.0f;
+  CelestialSphereControl c;
+  c.date_valid = true;
+  c.date = 6212026;
+  c.hour = 16;
+  c.minute = 30;
+  AtmosphereControl a;
+  a.visibility_m = 25000.0f;
+  s.apply(datagram({e, c, a}));
+  ASSERT_TRUE(s.ownship());
+  EXPECT_EQ(*s.ownship(), (OwnshipPose{47.45, 8.56, 3000.0, 0.0, 0.0, 120.0}));
+  EXPECT_EQ(s.utc_s(), geo::parse_utc_iso8601("2026-06-21T16:30:00Z"));
+  ASSERT_TRUE(s.atmosphere());
+  EXPECT_EQ(s.atmosphere()->visibility_m, 25000.0f);
+  // A time without a valid date leaves the time as it was.
+  c.date_valid = false;
+  c.hour = 3;
+  s.apply(datagram({c}));
+  EXPECT_EQ(s.utc_s(), geo::parse_utc_iso8601("2026-06-21T16:30:00Z"));
+  EXPECT_EQ(s.datagrams(), 2u);
+}
+
+TEST(CigiIgState, GlobalAndRegionalCloudLayers) {
+  IgState s;
+  const std::uint64_t g0 = s.weather_generation();
+  WeatherControl stratus;
+  stratus.layer_id = 1;
+  stratus.cloud_type = 10;
+  stratus.base_elevation_m = 800.0f;
+  stratus.thickness_m = 400.0f;
+  stratus.coverage_pct = 100.0f;
+  WeatherControl rain;  // layer 4: precipitation, not drawn
+  rain.layer_id = 4;
+  s.apply(datagram({stratus, rain}));
+  ASSERT_TRUE(s.global_layers()[0]);
+  EXPECT_EQ(s.global_layers()[0]->cloud_type, 10);
+  EXPECT_FALSE(s.global_layers()[1]);
+  EXPECT_GT(s.weather_generation(), g0);
+
+  // A regional layer needs its region first.
+  WeatherControl cb = stratus;
+  cb.layer_id = 2;
+  cb.cloud_type = 6;
+  cb.scope = WeatherScope::Regional;
+  cb.entity_or_region_id = 5;
+  auto refused = s.apply(datagram({cb}));
+  ASSERT_EQ(refused.size(), 1u);
+  EXPECT_EQ(refused[0], "Weather Control of layer 2 in region 5: no such region (send its Environmental Region Control first)");
+  EnvironmentalRegionControl r;
+  r.region_id = 5;
+  r.lat_deg = 46.0;
+  r.lon_deg = 7.0;
+  r.size_x_m = 40000.0f;
+  r.size_y_m = 20000.0f;
+  r.transition_perimeter_m = 5000.0f;
+  EXPECT_TRUE(s.apply(datagram({r, cb})).empty());
+  ASSERT_EQ(s.regions().size(), 1u);
+  EXPECT_EQ(s.regions().at(5).layers[1]->cloud_type, 6);
+  EXPECT_FALSE(s.global_layers()[1]) << "a regional layer is not global";
+
+  // Disabling a layer removes it; destroying a region removes it and its layers.
+  stratus.enabled = false;
+  const std::uint64_t g1 = s.weather_generation();
+  r.state = 2;
+  s.apply(datagram({stratus, r}));
+  EXPECT_FALSE(s.global_layers()[0]);
+  EXPECT_TRUE(s.regions().empty());
+  EXPECT_GT(s.weather_generation(), g1);
+}
+
+}  // namespace
+}  // namespace cloudsvc::cigi

@@ -50,14 +50,16 @@ bool AtmosphereLuts::froxels_serve(const ViewKey& a, const FrameContext& c) {
   if (!(std::abs(a.camera_altitude_m - c.camera_altitude_m) < 1.0 && glm::length(a.sun_enu - c.sun_enu) < 1e-4 &&
         std::abs(a.ap_max_distance_m - c.ap_max_distance_m()) < 1.0))
     return false;
-  const double tx = c.tan_half_fov_x, ty = c.tan_half_fov_y;
+  const ImageWindow& w = c.window;
   const ApFrustum& v = a.frustum;
   // not much coarser than a volume built for this camera would be
-  if (v.tan_half_width > (1.0 + 2.0 * kApMargin) * tx || v.tan_half_height > (1.0 + 2.0 * kApMargin) * ty) return false;
+  if (v.tan_half_width > (1.0 + 2.0 * kApMargin) * w.bound_x() || v.tan_half_height > (1.0 + 2.0 * kApMargin) * w.bound_y())
+    return false;
   // the camera's frustum (a convex cone spanned by its four corner rays) inside the volume's
   for (const double sx : {-1.0, 1.0})
     for (const double sy : {-1.0, 1.0}) {
-      const glm::dvec3 d = c.axes.forward + sx * tx * c.axes.right + sy * ty * c.axes.up;
+      const glm::dvec3 d = c.axes.forward + (w.center_x + sx * w.half_x) * c.axes.right +
+                           (w.center_y + sy * w.half_y) * c.axes.up;
       const double z = glm::dot(d, v.forward);
       if (!(z > 0.0) || std::abs(glm::dot(d, v.right)) > v.tan_half_width * z ||
           std::abs(glm::dot(d, v.up)) > v.tan_half_height * z)
@@ -68,9 +70,9 @@ bool AtmosphereLuts::froxels_serve(const ViewKey& a, const FrameContext& c) {
 
 AtmosphereLuts::ViewLutUpdate AtmosphereLuts::plan_view_dependent(FrameContext& c) {
   ViewLutUpdate plan;
-  // a volume built now: the camera's frustum kApMargin wider per axis
-  const ViewKey camera{ApFrustum{c.axes.forward, c.axes.right, c.axes.up, c.tan_half_fov_x * (1.0 + kApMargin),
-                                 c.tan_half_fov_y * (1.0 + kApMargin)},
+  // a volume built now: the symmetric frustum around the camera's, kApMargin wider per axis
+  const ViewKey camera{ApFrustum{c.axes.forward, c.axes.right, c.axes.up, c.window.bound_x() * (1.0 + kApMargin),
+                                 c.window.bound_y() * (1.0 + kApMargin)},
                        c.camera_altitude_m, c.ap_max_distance_m(), c.sun_enu};
   plan.sky_view = !(last_sky_ && same_sky(*last_sky_, camera));
   if (plan.sky_view) last_sky_ = camera;

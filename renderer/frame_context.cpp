@@ -31,8 +31,7 @@ FrameContext make_frame_context(const ViewRequest& view, const weather::Weather&
   c.camera_ecef = geo::geodetic_to_ecef(pos);
   c.enu_to_ecef = geo::enu_to_ecef(pos.lat_deg, pos.lon_deg);
   c.axes = geo::body_axes_enu(view.attitude);
-  c.tan_half_fov_x = std::tan(0.5 * view.fov_deg * kDegToRad);
-  c.tan_half_fov_y = c.tan_half_fov_x * static_cast<double>(view.height) / static_cast<double>(view.width);
+  c.window = image_window(view);
 
   // Shell: osculating sphere at the camera. Ground at altitude 0, or just below a camera
   // that is below the ellipsoid (no terrain or geoid model).
@@ -63,9 +62,9 @@ FrameContext make_frame_context(const ViewRequest& view, const weather::Weather&
     // a fixed map of the world (no camera dependence); here the camera's point of it.
     lf.camera_field_m = lf.field_rotation * (c.camera_ecef + (tr.noise_vertical_scale - 1.0) * pos.alt_m * cam_normal);
   }
-  // The aerial-perspective volume starts as the camera's frustum (plan_view_dependent
-  // widens or keeps it).
-  c.ap = ApFrustum{c.axes.forward, c.axes.right, c.axes.up, c.tan_half_fov_x, c.tan_half_fov_y};
+  // The aerial-perspective volume starts as the symmetric frustum around the camera's
+  // (plan_view_dependent widens or keeps it).
+  c.ap = ApFrustum{c.axes.forward, c.axes.right, c.axes.up, c.window.bound_x(), c.window.bound_y()};
   return c;
 }
 

@@ -53,7 +53,7 @@ struct FrameContext {
   glm::dvec3 camera_ecef{0.0};
   glm::dmat3 enu_to_ecef{1.0};  // columns: local east, north, up in ECEF
   geo::BodyAxes axes;           // camera forward, right, up (local ENU)
-  double tan_half_fov_x = 1.0, tan_half_fov_y = 1.0;
+  ImageWindow window;  // image_window(view): the tangents of the image's centre and half extents
   // Cloud shell and ground: spheres of radius shell_radius_m (the osculating sphere of
   // WGS84 at the camera) centred at (0, 0, -(R + camera_altitude_m)) in the local frame.
   double shell_radius_m = 0.0;

@@ -52,7 +52,7 @@ struct CloudLayerGpu {
 struct FrameUniforms {
   glm::mat4 enu_to_ecef;  // rotation (upper 3x3): local ENU axes -> ECEF axes
   alignas(16) glm::vec3 camera_forward;  // unit, local ENU
-  float tan_half_fov_x;
+  float tan_half_fov_x;  // half extents of the image window (ImageWindow::half_x, half_y)
   alignas(16) glm::vec3 camera_right;
   float tan_half_fov_y;
   alignas(16) glm::vec3 camera_up;
@@ -85,7 +85,9 @@ struct FrameUniforms {
   int frame_index;                // mod 65536: jitter sequences
   int count_density_evaluations;  // 1: add them to the frame counters
   int footprint_jitter;           // 1: rays through a per-frame point of the pixel
-  float pad0 = 0.0f, pad1 = 0.0f, pad2 = 0.0f;  // std140 aligns the next member to a vec4
+  float view_center_tan_x;        // the image window's centre (ImageWindow::center_x, center_y):
+  float view_center_tan_y;        // 0 for a symmetric view
+  float pad0 = 0.0f;              // std140 aligns the next member to a vec4
   glm::vec4 noise_quantiles[4];   // base-noise value below which a fraction i/15 lies, i = 0..15
   glm::vec4 weather_pole_south;   // weather map value at the south pole (row mean)
   glm::vec4 weather_pole_north;   // ... at the north pole

@@ -53,11 +53,13 @@ FrameUniforms pack_frame_uniforms(const FrameContext& c, const RenderQuality& qu
   u.camera_forward = glm::vec3(c.axes.forward);
   u.camera_right = glm::vec3(c.axes.right);
   u.camera_up = glm::vec3(c.axes.up);
-  u.tan_half_fov_x = static_cast<float>(c.tan_half_fov_x);
-  u.tan_half_fov_y = static_cast<float>(c.tan_half_fov_y);
+  u.tan_half_fov_x = static_cast<float>(c.window.half_x);
+  u.tan_half_fov_y = static_cast<float>(c.window.half_y);
+  u.view_center_tan_x = static_cast<float>(c.window.center_x);
+  u.view_center_tan_y = static_cast<float>(c.window.center_y);
   u.image_size_px = glm::vec2(static_cast<float>(c.view.width), static_cast<float>(c.view.height));
   // level of detail compares the angle one cloud pixel subtends with the noise texels
-  u.pixel_angle_rad = static_cast<float>(2.0 * c.tan_half_fov_x / c.view.width *
+  u.pixel_angle_rad = static_cast<float>(2.0 * c.window.half_x / c.view.width *
                                          std::max(1, quality.cloud_resolution_divisor));
 
   u.shell_radius_m = static_cast<float>(c.shell_radius_m);

@@ -52,7 +52,8 @@ MuRange frustum_mu_range(const glm::dvec3& f, const glm::dvec3& r, const glm::dv
 }
 
 FrameRays classify_frame_rays(const FrameContext& c) {
-  const MuRange mu = frustum_mu_range(c.axes.forward, c.axes.right, c.axes.up, c.tan_half_fov_x, c.tan_half_fov_y);
+  // (an off-axis view's symmetric bound: its zenith range can only be wider)
+  const MuRange mu = frustum_mu_range(c.axes.forward, c.axes.right, c.axes.up, c.window.bound_x(), c.window.bound_y());
   // the GPU's axes are these rounded to float: the range is widened by a margin far above
   // their rounding (1e-6), far below a pixel (1e-4 rad)
   const double margin = 1e-5;

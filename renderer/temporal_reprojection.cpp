@@ -6,17 +6,11 @@ namespace cloudsvc {
 
 namespace {
 
-constexpr double kDegToRad = M_PI / 180.0;
 
 // Ordered-dither visiting orders: each prefix of 4 (of 16) covers the 2x2 sub-grid evenly.
 constexpr int kOrder2[4][2] = {{0, 0}, {1, 1}, {1, 0}, {0, 1}};
 constexpr int kOrder4[16][2] = {{0, 0}, {2, 2}, {2, 0}, {0, 2}, {1, 1}, {3, 3}, {3, 1}, {1, 3},
                                 {1, 0}, {3, 2}, {3, 0}, {1, 2}, {0, 1}, {2, 3}, {2, 1}, {0, 3}};
-
-glm::dvec2 tan_half_fov(const ViewRequest& v) {
-  const double th = std::tan(0.5 * v.fov_deg * kDegToRad);
-  return {th, th * static_cast<double>(v.height) / static_cast<double>(v.width)};
-}
 
 bool same_march(const RenderQuality& a, const RenderQuality& b) {
   return a.primary_steps == b.primary_steps && a.light_steps == b.light_steps &&
@@ -75,7 +69,7 @@ glm::ivec2 cloud_buffer_size(int w, int h, int divisor) {
 bool history_usable(const ViewRequest& prev, const RenderQuality& prev_quality, const ViewRequest& cur,
                     const RenderQuality& cur_quality) {
   if (cur.reset_history || !cur_quality.temporal_reuse || !prev_quality.temporal_reuse) return false;
-  if (prev.width != cur.width || prev.height != cur.height || prev.fov_deg != cur.fov_deg) return false;
+  if (prev.width != cur.width || prev.height != cur.height || image_window(prev) != image_window(cur)) return false;
   if (!same_march(prev_quality, cur_quality)) return false;
   const double gap = cur.unix_time_s - prev.unix_time_s;
   if (!(gap >= 0.0 && gap <= kMaxHistoryGapS)) return false;
@@ -119,7 +113,7 @@ double cloud_motion_px(const FrameContext& prev, const FrameContext& cur) {
   }
   const double moved_m = glm::length(cur.camera_ecef - prev.camera_ecef);
   const double parallax = std::atan(moved_m / std::max(nearest_m, 1.0));
-  const double pixel_rad = cur.view.fov_deg * kDegToRad / static_cast<double>(std::max(cur.view.width, 1));
+  const double pixel_rad = 2.0 * std::atan(cur.window.half_x) / static_cast<double>(std::max(cur.view.width, 1));
   return (turn + parallax) / pixel_rad;
 }
 
@@ -158,9 +152,11 @@ TemporalUniforms pack_temporal_uniforms(const TemporalPlan& p, const RenderQuali
     u.prev_forward = glm::vec3(reprojection->prev_axes.forward);
     u.prev_right = glm::vec3(reprojection->prev_axes.right);
     u.prev_up = glm::vec3(reprojection->prev_axes.up);
-    const glm::dvec2 t = tan_half_fov(*prev);
-    u.prev_tan_half_fov_x = static_cast<float>(t.x);
-    u.prev_tan_half_fov_y = static_cast<float>(t.y);
+    const ImageWindow w = image_window(*prev);
+    u.prev_tan_half_fov_x = static_cast<float>(w.half_x);
+    u.prev_tan_half_fov_y = static_cast<float>(w.half_y);
+    u.prev_center_tan_x = static_cast<float>(w.center_x);
+    u.prev_center_tan_y = static_cast<float>(w.center_y);
   }
   return u;
 }

@@ -32,6 +32,8 @@ struct TemporalUniforms {
   int neighbourhood_clamp;  // 1: moved history is limited to the range of fresh neighbours
   int camera_still;         // 1: the camera neither moved nor turned since the last frame
   int footprint_sample;     // footprint_sample_index(): 0 the pixel centre, n the n-th jitter point
+  float prev_center_tan_x;  // the previous image window's centre (ImageWindow::center_x, center_y)
+  float prev_center_tan_y;
 };
 
 static_assert(sizeof(TemporalUniforms) == (gpu::kMaxLayers + 1) * 64 + 6 * 16, "std140 layout");

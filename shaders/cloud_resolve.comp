@@ -31,7 +31,8 @@ bool reproject(vec3 p, int m, out vec2 uv) {
   float z = dot(pp, temporal.prev_forward);
   uv = vec2(-1.0);
   if (z <= 1e-3 * length(pp)) return false;
-  vec2 ndc = vec2(dot(pp, temporal.prev_right) / (z * temporal.prev_tan_half_fov_x), dot(pp, temporal.prev_up) / (z * temporal.prev_tan_half_fov_y));
+  vec2 ndc = vec2((dot(pp, temporal.prev_right) / z - temporal.prev_center_tan_x) / temporal.prev_tan_half_fov_x,
+                  (dot(pp, temporal.prev_up) / z - temporal.prev_center_tan_y) / temporal.prev_tan_half_fov_y);
   vec2 full = vec2(ndc.x * 0.5 + 0.5, 0.5 - ndc.y * 0.5) * frame.image_size_px;  // frame pixels, row 0 at the top
   uv = full / float(temporal.cloud_divisor) / vec2(temporal.cloud_buffer_size);
   return all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0)));

@@ -62,6 +62,8 @@ layout(std140, binding = UBO_FRAME) uniform FrameUniforms {
   int frame_index;
   int count_density_evaluations;
   int footprint_jitter;
+  float view_center_tan_x;
+  float view_center_tan_y;
   vec4 noise_quantiles[4];
   vec4 weather_pole_south;
   vec4 weather_pole_north;

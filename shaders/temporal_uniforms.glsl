@@ -22,6 +22,8 @@ layout(std140, binding = UBO_TEMPORAL) uniform TemporalUniforms {
   int neighbourhood_clamp;
   int camera_still;
   int footprint_sample;
+  float prev_center_tan_x;
+  float prev_center_tan_y;
 } temporal;
 
 // Normalised device coordinates of the centre of cloud pixel q (frame pixels grouped
@@ -33,6 +35,6 @@ vec2 cloud_pixel_ndc(vec2 q) {
 }
 
 vec3 view_ray(vec2 ndc) {
-  return normalize(frame.camera_forward + ndc.x * frame.tan_half_fov_x * frame.camera_right +
-                   ndc.y * frame.tan_half_fov_y * frame.camera_up);
+  return normalize(frame.camera_forward + (frame.view_center_tan_x + ndc.x * frame.tan_half_fov_x) * frame.camera_right +
+                   (frame.view_center_tan_y + ndc.y * frame.tan_half_fov_y) * frame.camera_up);
 }

@@ -99,7 +99,8 @@ SunInFrame sun_in_frame(const RandomScene& s, int w, int h) {
   SunInFrame r;
   const double z = glm::dot(sun, c.forward);
   if (z > 0.0) {
-    const double nx = glm::dot(sun, c.right) / z / c.tan_half_h, ny = glm::dot(sun, c.up) / z / c.tan_half_v;
+    const double nx = (glm::dot(sun, c.right) / z - c.window.center_x) / c.window.half_x,
+                 ny = (glm::dot(sun, c.up) / z - c.window.center_y) / c.window.half_y;
     r.inside = std::abs(nx) <= 1.0 && std::abs(ny) <= 1.0;
   }
   r.border_deg = 180.0;

@@ -70,7 +70,8 @@ Offsets expected_frame_uniforms() {
       MEMBER(FrameUniforms, light_march_cutoff_tau), MEMBER(FrameUniforms, long_step_factor),
       MEMBER(FrameUniforms, detail_noise_mean), MEMBER(FrameUniforms, base_noise_mean), MEMBER(FrameUniforms, level_of_detail),
       MEMBER(FrameUniforms, coverage_pyramid), MEMBER(FrameUniforms, layer_count), MEMBER(FrameUniforms, frame_index),
-      MEMBER(FrameUniforms, count_density_evaluations), MEMBER(FrameUniforms, footprint_jitter),
+      MEMBER(FrameUniforms, count_density_evaluations), MEMBER(FrameUniforms, footprint_jitter), MEMBER(FrameUniforms, view_center_tan_x),
+      MEMBER(FrameUniforms, view_center_tan_y),
       ARRAY_MEMBER(FrameUniforms, noise_quantiles), MEMBER(FrameUniforms, weather_pole_south),
       MEMBER(FrameUniforms, weather_pole_north), MEMBER(FrameUniforms, layer_coverage_pole_south),
       MEMBER(FrameUniforms, layer_coverage_pole_north), MEMBER(FrameUniforms, ground_albedo),
@@ -103,7 +104,8 @@ Offsets expected_temporal_uniforms() {
           MEMBER(TemporalUniforms, fresh_stride), MEMBER(TemporalUniforms, history_valid),
           MEMBER(TemporalUniforms, fresh_offset), MEMBER(TemporalUniforms, cloud_divisor),
           MEMBER(TemporalUniforms, neighbourhood_clamp), MEMBER(TemporalUniforms, camera_still),
-          MEMBER(TemporalUniforms, footprint_sample)};
+          MEMBER(TemporalUniforms, footprint_sample), MEMBER(TemporalUniforms, prev_center_tan_x),
+          MEMBER(TemporalUniforms, prev_center_tan_y)};
 }
 
 Offsets expected_shadow_map_uniforms() {

@@ -62,8 +62,9 @@ TEST(ReferenceScene, CameraRaysAndShellGeometry) {
   const glm::dvec3 top_left = s.camera.ray_at(0.5, 0.5);
   EXPECT_GT(top_left.y, 0.0);        // left of east is north
   EXPECT_GT(top_left.z, 0.0);        // top row looks up
-  EXPECT_NEAR(s.camera.tan_half_h, 1.0, 1e-12);
-  EXPECT_NEAR(s.camera.tan_half_v, 0.5, 1e-12);
+  EXPECT_NEAR(s.camera.window.half_x, 1.0, 1e-12);
+  EXPECT_NEAR(s.camera.window.half_y, 0.5, 1e-12);
+  EXPECT_EQ(s.camera.window.center_x, 0.0);
   // Osculating radius sqrt(M N) at 47.45 deg, camera at 2 km above it, ground at 0.
   EXPECT_NEAR(s.shell.radius_m, std::sqrt(geo::meridional_radius(47.45) * geo::prime_vertical_radius(47.45)), 1e-6);
   EXPECT_NEAR(s.shell.altitude_of(glm::dvec3(0.0)), 2000.0, 1e-6);

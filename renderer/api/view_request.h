@@ -2,11 +2,31 @@
 // the GPU renderer and the CPU reference (no GL).
 #pragma once
 
+#include <cmath>
 #include <cstdint>
+#include <optional>
 
 #include "geodesy/geodetic.h"
 
 namespace cloudsvc {
+
+// The edges of an off-axis view (CIGI View Definition): angles from the view axis, degrees,
+// left < right and bottom < top, each within (-90, 90).
+struct ViewFrustumAngles {
+  double left_deg = -30.0, right_deg = 30.0, bottom_deg = -17.5, top_deg = 17.5;
+  bool operator==(const ViewFrustumAngles&) const = default;
+};
+
+// The image on the plane at unit distance along the view axis: the tangents of its centre
+// (0 for a symmetric view) and of its half width and height, x right, y up. A pixel's ray
+// is forward + (center_x + ndc_x half_x) right + (center_y + ndc_y half_y) up.
+struct ImageWindow {
+  double center_x = 0.0, center_y = 0.0, half_x = 1.0, half_y = 1.0;
+  // The half extents of the smallest symmetric window holding this one.
+  double bound_x() const { return std::abs(center_x) + half_x; }
+  double bound_y() const { return std::abs(center_y) + half_y; }
+  bool operator==(const ImageWindow&) const = default;
+};
 
 // One view: where the camera is, where it looks, when, and the image size.
 struct ViewRequest {
@@ -18,6 +38,21 @@ struct ViewRequest {
   int height = 360;
   std::uint32_t frame_index = 0;  // varies the per-pixel jitter and the temporally marched pixels
   bool reset_history = false;     // a teleport or sim reset: reuse nothing from earlier frames
+  std::optional<ViewFrustumAngles> frustum;  // an off-axis view's edges; else fov_deg, symmetric,
+                                             // its height from the image's aspect
 };
+
+// The view's image window: from its frustum's edges, else symmetric from fov_deg with the
+// vertical extent of the image's aspect (square pixels).
+inline ImageWindow image_window(const ViewRequest& v) {
+  constexpr double kRad = 3.14159265358979323846 / 180.0;
+  if (v.frustum) {
+    const double l = std::tan(v.frustum->left_deg * kRad), r = std::tan(v.frustum->right_deg * kRad);
+    const double b = std::tan(v.frustum->bottom_deg * kRad), t = std::tan(v.frustum->top_deg * kRad);
+    return {0.5 * (l + r), 0.5 * (b + t), 0.5 * (r - l), 0.5 * (t - b)};
+  }
+  const double half_x = std::tan(0.5 * v.fov_deg * kRad);
+  return {0.0, 0.0, half_x, half_x * static_cast<double>(v.height) / static_cast<double>(v.width)};
+}
 
 }  // namespace cloudsvc

@@ -42,7 +42,8 @@ glm::dmat3 field_rotation(const weather::Wind& wind, const WindAnchor& anchor, d
 glm::dvec3 ReferenceCamera::ray_at(double px, double py) const {
   const double ndc_x = px / width * 2.0 - 1.0;
   const double ndc_y = 1.0 - py / height * 2.0;  // row 0 is the top
-  return glm::normalize(forward + ndc_x * tan_half_h * right + ndc_y * tan_half_v * up);
+  return glm::normalize(forward + (window.center_x + ndc_x * window.half_x) * right +
+                        (window.center_y + ndc_y * window.half_y) * up);
 }
 
 double ShellFrame::altitude_of(const glm::dvec3& p) const {
@@ -65,8 +66,7 @@ ReferenceScene make_reference_scene(const ViewRequest& view, const weather::Weat
   s.camera.up = axes.up;
   s.camera.width = view.width;
   s.camera.height = view.height;
-  s.camera.tan_half_h = std::tan(0.5 * view.fov_deg * kDegToRad);
-  s.camera.tan_half_v = s.camera.tan_half_h * view.height / view.width;
+  s.camera.window = image_window(view);
 
   // Shell: osculating sphere of the WGS84 ellipsoid at the camera (radius sqrt(M N)).
   s.shell.radius_m = geo::gaussian_radius(pos.lat_deg);

@@ -41,7 +41,7 @@ glm::dmat3 field_rotation(const weather::Wind& wind, const WindAnchor& anchor, d
 // (y up) is normalise(forward + ndc_x tan(hfov/2) right + ndc_y tan(vfov/2) up), local frame.
 struct ReferenceCamera {
   glm::dvec3 forward{0, 1, 0}, right{1, 0, 0}, up{0, 0, 1};
-  double tan_half_h = 0.0, tan_half_v = 0.0;  // tan(vfov/2) = tan(hfov/2) * height / width
+  ImageWindow window;  // image_window(view): tangents of the image's centre and half extents
   int width = 0, height = 0;
 
   // Ray through the point (px, py) of the image in pixel units from its top-left corner

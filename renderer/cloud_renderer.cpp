@@ -38,7 +38,7 @@ void CloudRenderer::apply_tile(const weather::MapTile& tile, double now_utc_s) {
   if ((tile.channels & weather::kWeatherMapTileChannels) || tile.layer_channels) timeline_.apply(tile, now_utc_s);
   if (tile.channels & weather::kGroundAlbedoTileChannel) {
     ground_albedo_map_.apply(tile);
-    cloud_buffer_.reset_history();  // the clouds' light from the ground changes at once
+    reset_history();  // the clouds' light from the ground changes at once
   }
 }
 
@@ -48,7 +48,7 @@ void CloudRenderer::adopt_weather(const weather::Weather& w) {
   weather_ = w;
   ++weather_generation_;
   wind_anchor_.reset();
-  cloud_buffer_.reset_history();  // new clouds: nothing to reuse
+  reset_history();  // new clouds: nothing to reuse
 }
 
 void CloudRenderer::set_weather(const weather::Weather& w) {
@@ -118,29 +118,34 @@ void CloudRenderer::cull_layers_without_cloud_in_view(FrameContext& frame, const
   culled_layers_ = mask;
 }
 
+void CloudRenderer::reset_history() {
+  for (auto& [id, channel] : channels_) channel.cloud_buffer.reset_history();
+}
+
 TemporalPlan CloudRenderer::march_and_resolve(const FrameContext& frame, const RenderQuality& quality,
-                                              bool meets_a_layer, const CloudPassInputs& inputs) {
-  TemporalPlan plan = cloud_buffer_.start_frame(frame, quality);
+                                              bool meets_a_layer, const CloudPassInputs& inputs,
+                                              CloudBuffer& cloud_buffer) {
+  TemporalPlan plan = cloud_buffer.start_frame(frame, quality);
   if (weather_.layers.empty() || !meets_a_layer) {
     // No cloud layer, or none that any ray of this frame meets (above a deck looking up:
     // renderer/layers_in_view.h): no march and nothing to resolve; the next frame starts
     // a new history, so nothing of this empty buffer is reprojected into a view that meets
     // a layer.
-    cloud_buffer_.clear_current();
+    cloud_buffer.clear_current();
     plan.stride = 0;  // nothing marched
     return plan;
   }
   timer_.begin(kMarchPass);
-  march_.run(inputs, shadow_map_, cloud_buffer_, plan);
+  march_.run(inputs, shadow_map_, cloud_buffer, plan);
   timer_.end();
   if (plan.stride == 1 && !plan.history) {
     // Every pixel marched and no history: the resolve would copy the fresh samples as they
     // are (cloud_resolve.comp, no-history branch).
-    cloud_buffer_.take_fresh_as_current();
+    cloud_buffer.take_fresh_as_current();
     return plan;
   }
   timer_.begin(kResolvePass);
-  resolve_.run(inputs.frame, cloud_buffer_);
+  resolve_.run(inputs.frame, cloud_buffer);
   timer_.end();
   return plan;
 }
@@ -148,8 +153,9 @@ TemporalPlan CloudRenderer::march_and_resolve(const FrameContext& frame, const R
 FrameImage CloudRenderer::render(const ViewRequest& view, const RenderQuality& quality) {
   if (view.width <= 0 || view.height <= 0) throw std::invalid_argument("render: empty image size");
   const auto start = std::chrono::steady_clock::now();
-  cloud_buffer_.ensure_size(view.width, view.height, std::clamp(quality.cloud_resolution_divisor, 1, 8));
-  composite_.ensure_size(view.width, view.height);
+  Channel& channel = channels_[view.channel];
+  channel.cloud_buffer.ensure_size(view.width, view.height, std::clamp(quality.cloud_resolution_divisor, 1, 8));
+  channel.target.ensure_size(view.width, view.height);
   if (!wind_anchor_) wind_anchor_ = WindAnchor{view.position, view.unix_time_s};
   const weather::WeatherTimeline::Blend blend = timeline_.at(view.unix_time_s);
   if (field_.update(blend)) ++weather_generation_;
@@ -193,14 +199,14 @@ FrameImage CloudRenderer::render(const ViewRequest& view, const RenderQuality& q
   const bool shadow_rebuilt = shadow_map_.update(frame, inputs, weather_generation_, quality.light_steps,
                                                  !quality.ground_shadow_map, quality.light_volume, shadow_needed);
   timer_.end();
-  const TemporalPlan plan = march_and_resolve(frame, quality, rays.meets_a_layer, inputs);  // 4., 5.
+  const TemporalPlan plan = march_and_resolve(frame, quality, rays.meets_a_layer, inputs, channel.cloud_buffer);  // 4., 5.
   timer_.begin(kCompositePass);  // 6.
-  composite_.run(inputs, shadow_map_, cloud_buffer_, !quality.ground_shadow_map);
+  composite_.run(inputs, shadow_map_, channel.cloud_buffer, channel.target, !quality.ground_shadow_map);
   timer_.end();
 
   FrameImage img;
   const auto readback_start = std::chrono::steady_clock::now();
-  composite_.read_back(img);
+  channel.target.read_back(img);
   const FrameCounters counters = frame_buffers_.read_counters();
   const auto end = std::chrono::steady_clock::now();
   img.stats = frame_stats(frame, view_luts, plan, shadow_rebuilt, counters);
@@ -229,10 +235,12 @@ FrameStats CloudRenderer::frame_stats(const FrameContext& frame, const Atmospher
   for (int i = 0; i < frame.layer_count; ++i) s.dome_layers += frame.layers[static_cast<std::size_t>(i)].domes ? 1 : 0;
   s.phase_tables_pending = phase_ ? phase_->pending_rows() : 0;
   s.marched_fraction = plan.stride == 0 ? 0.0 : plan.marched_fraction();
+  std::size_t channel_bytes = 0;  // every channel's buffers stay resident
+  for (const auto& [id, channel] : channels_) channel_bytes += channel.target.gpu_bytes() + channel.cloud_buffer.gpu_bytes();
   s.gpu_memory_bytes = static_cast<std::int64_t>(field_.gpu_bytes() + AtmosphereLuts::gpu_bytes() +
                                                  MsSourceTextures::gpu_bytes() + ground_albedo_.gpu_bytes() +
                                                  GroundShadowMap::gpu_bytes() +
-                                                 composite_.gpu_bytes() + cloud_buffer_.gpu_bytes() +
+                                                 channel_bytes +
                                                  (phase_ ? CloudPhaseTexture::gpu_bytes() : 0));
   s.luts_ms = timer_.ms(kLutsPass);
   s.march_ms = timer_.ms(kMarchPass);

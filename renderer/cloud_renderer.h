@@ -12,6 +12,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <optional>
 
@@ -26,6 +27,7 @@
 #include "renderer/cloud_march_pass.h"
 #include "renderer/cloud_resolve_pass.h"
 #include "renderer/composite_pass.h"
+#include "renderer/frame_target.h"
 #include "renderer/frame_buffers.h"
 #include "renderer/frame_context.h"
 #include "renderer/gl/pass_timer.h"
@@ -70,19 +72,28 @@ class CloudRenderer {
   const weather::GroundAlbedoMap& ground_albedo_map() const { return ground_albedo_map_; }
   std::size_t weather_keyframes() const { return timeline_.keyframe_count(); }
 
-  // Renders one view and reads it back (rows from the top). Consecutive views reuse the
-  // cloud buffer of the previous one when quality.temporal_stride > 1 and the history is
-  // usable (renderer/temporal_reprojection.h).
+  // Renders one view and reads it back (rows from the top). Consecutive views of a channel
+  // (ViewRequest::channel) reuse the cloud buffer of that channel's previous one when
+  // quality.temporal_stride > 1 and the history is usable (renderer/temporal_reprojection.h);
+  // the views of several channels at one time and place share the weather field, the ground
+  // shadow map and the sky LUT, so that only their view-dependent passes run per view.
   FrameImage render(const ViewRequest& view, const RenderQuality& quality = {});
 
-  // Drops the temporal history: the next frame marches every cloud pixel.
-  void reset_history() { cloud_buffer_.reset_history(); }
+  // Drops every channel's temporal history: the next frames march every cloud pixel.
+  void reset_history();
+  // Frees a channel's buffers (a view the host removed).
+  void drop_channel(int channel) { channels_.erase(channel); }
 
  private:
   void cull_layers_without_cloud_in_view(FrameContext& frame, const weather::WeatherTimeline::Blend& blend);
   // Steps 4-5; returns the frame's temporal plan (stride 0: nothing marched).
+  // A display channel's own buffers: its temporal history and its frame.
+  struct Channel {
+    CloudBuffer cloud_buffer;
+    FrameTarget target;
+  };
   TemporalPlan march_and_resolve(const FrameContext& frame, const RenderQuality& quality, bool meets_a_layer,
-                                 const CloudPassInputs& inputs);
+                                 const CloudPassInputs& inputs, CloudBuffer& cloud_buffer);
   FrameStats frame_stats(const FrameContext& frame, const AtmosphereLuts::ViewLutUpdate& view_luts,
                          const TemporalPlan& plan, bool shadow_rebuilt, const FrameCounters& counters) const;
 
@@ -107,7 +118,7 @@ class CloudRenderer {
   MsSourceTextures ms_source_;
   GroundAlbedoTexture ground_albedo_;
   GroundShadowMap shadow_map_;
-  CloudBuffer cloud_buffer_;
+  std::map<int, Channel> channels_;  // by ViewRequest::channel
   CloudMarchPass march_;
   CloudResolvePass resolve_;
   CompositePass composite_;

@@ -40,6 +40,8 @@ struct ViewRequest {
   bool reset_history = false;     // a teleport or sim reset: reuse nothing from earlier frames
   std::optional<ViewFrustumAngles> frustum;  // an off-axis view's edges; else fov_deg, symmetric,
                                              // its height from the image's aspect
+  int channel = 0;  // the display channel the view is drawn for: each channel keeps its own
+                    // temporal history and frame; the weather, shadow map and LUTs are shared
 };
 
 // The view's image window: from its frustum's edges, else symmetric from fov_deg with the

@@ -332,6 +332,9 @@ TEST(CigiDatagram, FieldsOutOfRangeRejectTheWholePacket) {
   w.coverage_pct = 120.0f;
   EXPECT_EQ(reason(w), "Weather Control at byte 24: coverage_pct 120 out of range [0, 100]");
   w.coverage_pct = 50.0f;
+  w.cloud_type = 12;  // IG-defined: this IG has none
+  EXPECT_EQ(reason(w), "Weather Control at byte 24: cloud_type 12 out of range [0, 10]");
+  w.cloud_type = 7;
   w.base_elevation_m = 19000.0f;
   w.thickness_m = 2000.0f;
   EXPECT_EQ(reason(w), "Weather Control at byte 24: thickness_m 2000 out of range [0, 1000]");

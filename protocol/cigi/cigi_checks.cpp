@@ -121,6 +121,7 @@ std::string check(const EnvironmentalRegionControl& p) {
 
 std::string check(const WeatherControl& p) {
   CHECK(in_range("humidity_pct", p.humidity_pct, 0, 100));
+  CHECK(in_range("cloud_type", p.cloud_type, 0, 10));  // 11..15 are IG-defined: this IG has none
   CHECK(in_range("scope", static_cast<double>(p.scope), 0, 2));
   CHECK(in_range("severity", p.severity, 0, 5));
   CHECK(in_range("air_temperature_c", p.air_temperature_c, -100.0, 100.0));

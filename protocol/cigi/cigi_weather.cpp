@@ -1,0 +1,197 @@
+// CIGI cloud layers -> the renderer's weather (cigi_weather.h).
+#include "protocol/cigi/cigi_weather.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <utility>
+
+#include "common/parallel_for.h"
+#include "weather/sphere_geometry.h"
+
+namespace cloudsvc::cigi {
+namespace {
+
+constexpr double kMinThickness_m = 10.0;  // as weather::validate
+
+// The layer that defines layer id k's altitudes: global, else the nearest region's.
+std::optional<WeatherControl> defining_layer(const IgState& s, int k, double lat, double lon) {
+  if (s.global_layers()[static_cast<std::size_t>(k)]) return s.global_layers()[static_cast<std::size_t>(k)];
+  std::optional<WeatherControl> best;
+  double best_d = 0.0;
+  for (const auto& [id, region] : s.regions()) {
+    const auto& layer = region.layers[static_cast<std::size_t>(k)];
+    if (!layer || region.control.state != 1) continue;
+    const double d = weather::surface_distance_m(lat, lon, region.control.lat_deg, region.control.lon_deg);
+    if (!best || d < best_d) best = layer, best_d = d;
+  }
+  return best;
+}
+
+weather::CloudLayer renderer_layer(const WeatherControl& w, int slot) {
+  weather::CloudLayer l;
+  l.type = static_cast<weather::CloudType>(w.cloud_type);
+  l.base_m = w.base_elevation_m;
+  l.top_m = static_cast<double>(w.base_elevation_m) + std::max(static_cast<double>(w.thickness_m), kMinThickness_m);
+  l.coverage = std::clamp(w.coverage_pct / 100.0, 0.0, 1.0);  // not read: the layer reads its channel
+  l.coverage_channel = slot;
+  const weather::CloudTypeTraits& traits = weather::cloud_type_traits(l.type);
+  l.density_scale = traits.default_density_scale;
+  l.droplet_diameter_um = traits.default_droplet_diameter_um;
+  // CIGI gives the direction the wind blows from, clockwise from north.
+  const double from = w.wind_direction_deg * weather::kRadPerDeg;
+  l.wind = {-w.wind_horizontal_mps * std::sin(from), -w.wind_horizontal_mps * std::cos(from)};
+  return l;
+}
+
+const char* layer_name(int slot) {
+  static constexpr const char* kNames[] = {"layer 1", "layer 2", "layer 3"};
+  return kNames[slot];
+}
+
+}  // namespace
+
+double region_weight(const EnvironmentalRegionControl& r, double lat_deg, double lon_deg) {
+  if (r.state != 1) return 0.0;
+  const std::array<double, 3> c = weather::unit_vector(r.lat_deg, r.lon_deg), p = weather::unit_vector(lat_deg, lon_deg);
+  const double cos_angle = c[0] * p[0] + c[1] * p[1] + c[2] * p[2];
+  if (cos_angle <= 1e-6) return 0.0;  // the far side: no tangent-plane point
+  // Tangent plane at the centre: east and north unit vectors there, the point projected
+  // through the Earth's centre (gnomonic), m.
+  const double lat0 = r.lat_deg * weather::kRadPerDeg, lon0 = r.lon_deg * weather::kRadPerDeg;
+  const std::array<double, 3> east{-std::sin(lon0), std::cos(lon0), 0.0};
+  const std::array<double, 3> north{-std::sin(lat0) * std::cos(lon0), -std::sin(lat0) * std::sin(lon0), std::cos(lat0)};
+  const double scale = weather::kMeanEarthRadius_m / cos_angle;
+  const double e = scale * (east[0] * p[0] + east[1] * p[1] + east[2] * p[2]);
+  const double n = scale * (north[0] * p[0] + north[1] * p[1] + north[2] * p[2]);
+  // The region's axes: x at rotation_deg clockwise from north, y 90° further.
+  const double rot = r.rotation_deg * weather::kRadPerDeg;
+  const double x = n * std::cos(rot) + e * std::sin(rot), y = -n * std::sin(rot) + e * std::cos(rot);
+  // Signed distance outside the rounded rectangle (negative inside), m.
+  const double radius = std::min<double>(r.corner_radius_m, 0.5 * std::min(r.size_x_m, r.size_y_m));
+  const double qx = std::abs(x) - (0.5 * r.size_x_m - radius), qy = std::abs(y) - (0.5 * r.size_y_m - radius);
+  const double outside = std::hypot(std::max(qx, 0.0), std::max(qy, 0.0)) + std::min(std::max(qx, qy), 0.0) - radius;
+  if (outside <= 0.0) return 1.0;
+  if (!(r.transition_perimeter_m > 0.0f) || outside >= r.transition_perimeter_m) return 0.0;
+  return 1.0 - outside / r.transition_perimeter_m;
+}
+
+CigiWeather cigi_weather(const IgState& state, double near_lat_deg, double near_lon_deg, int width, int height) {
+  CigiWeather out;
+  out.weather.name = "CIGI";
+  // Layers 1..3, each from its defining Weather Control. The thickest keep their altitudes;
+  // a thinner one keeps the largest part of its own that no thicker one holds.
+  std::vector<weather::CloudLayer> candidates;
+  for (int k = 0; k < 3; ++k)
+    if (const auto w = defining_layer(state, k, near_lat_deg, near_lon_deg)) candidates.push_back(renderer_layer(*w, k));
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [](const auto& a, const auto& b) { return a.top_m - a.base_m > b.top_m - b.base_m; });
+  std::vector<weather::CloudLayer> layers;
+  for (weather::CloudLayer l : candidates) {
+    std::vector<std::pair<double, double>> free{{l.base_m, l.top_m}};  // its parts no kept layer holds
+    std::string within;
+    for (const weather::CloudLayer& k : layers) {
+      std::vector<std::pair<double, double>> next;
+      for (const auto& [b, t] : free) {
+        if (k.top_m <= b || k.base_m >= t) {
+          next.push_back({b, t});
+          continue;
+        }
+        within = layer_name(k.coverage_channel);
+        if (b < k.base_m) next.push_back({b, k.base_m});
+        if (k.top_m < t) next.push_back({k.top_m, t});
+      }
+      free = next;
+    }
+    const auto largest = std::max_element(free.begin(), free.end(), [](const auto& a, const auto& b) {
+      return a.second - a.first < b.second - b.first;
+    });
+    if (largest == free.end() || largest->second - largest->first < kMinThickness_m) {
+      out.notes.push_back(std::string(layer_name(l.coverage_channel)) + " lies within " + within + ": not drawn");
+      continue;
+    }
+    if (largest->first != l.base_m || largest->second != l.top_m) {
+      l.base_m = largest->first;
+      l.top_m = largest->second;
+      out.notes.push_back(std::string(layer_name(l.coverage_channel)) + " overlaps " + within + ": drawn from " +
+                          std::to_string(static_cast<int>(std::lround(l.base_m))) + " to " +
+                          std::to_string(static_cast<int>(std::lround(l.top_m))) + " m");
+    }
+    layers.push_back(l);
+  }
+  std::sort(layers.begin(), layers.end(), [](const auto& a, const auto& b) { return a.base_m < b.base_m; });
+  out.weather.layers = layers;
+
+  // The map: each slot's coverage at every texel.
+  weather::WeatherMap& m = out.map;
+  m.width = width;
+  m.height = height;
+  const std::size_t texels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+  m.rgba.assign(texels * 4, 0.5f);
+  for (std::size_t n = 0; n < texels; ++n) m.rgba[4 * n + 3] = 0.0f;
+  m.layer_coverage.assign(texels * 4, 0.0f);
+  std::array<double, 3> global{};
+  for (int k = 0; k < 3; ++k)
+    if (const auto& g = state.global_layers()[static_cast<std::size_t>(k)]) global[static_cast<std::size_t>(k)] = g->coverage_pct / 100.0;
+  // Regions in id order (a later region's weather lies over an earlier one's), each with the
+  // angle beyond which it weighs nothing (half diagonal plus perimeter) widened by a texel.
+  const double dlat = 180.0 / height, dlon = 360.0 / width;
+  const double texel_rad = std::max(dlat, dlon) * weather::kRadPerDeg;  // a texel's reach
+  struct Reach {
+    const Region* region;
+    std::array<double, 3> centre;
+    double cos_near;   // of the angle within which a texel's centre lies when the texel may meet it
+    double feature_m;  // its smaller side: texels near it are sampled finer than this
+  };
+  std::vector<Reach> regions;
+  for (const auto& [id, region] : state.regions()) {
+    const EnvironmentalRegionControl& c = region.control;
+    if (c.state != 1) continue;
+    const double reach_m = 0.5 * std::hypot(c.size_x_m, c.size_y_m) + c.transition_perimeter_m;
+    regions.push_back({&region, weather::unit_vector(c.lat_deg, c.lon_deg),
+                       std::cos(std::min(reach_m / weather::kMeanEarthRadius_m + texel_rad, 3.14159)),
+                       std::max(1.0, static_cast<double>(std::min(c.size_x_m, c.size_y_m)))});
+  }
+  // A texel's cover: the global cover with the regions' laid over it at a point; near a
+  // region, the mean over n x n points of the texel, n such that the region's smaller side
+  // spans at least 32 of them (4 <= n <= 64), so that a region smaller than a few texels
+  // keeps its share of the texels' cover (within a few per cent) though not its shape.
+  const auto cover_at = [&](double lat, double lon) {
+    std::array<double, 3> cover = global;
+    for (const Reach& r : regions) {
+      const double w = region_weight(r.region->control, lat, lon);
+      if (w <= 0.0) continue;
+      for (std::size_t k = 0; k < 3; ++k) {
+        const auto& inside = r.region->layers[k];
+        cover[k] = (1.0 - w) * cover[k] + w * (inside ? inside->coverage_pct / 100.0 : 0.0);
+      }
+    }
+    return cover;
+  };
+  parallel_for(height, kAllThreads, [&](int j) {
+    const double lat = -90.0 + (j + 0.5) * dlat;
+    const double texel_m = weather::kMeanEarthRadius_m * dlat * weather::kRadPerDeg;  // its larger side, m
+    for (int i = 0; i < width; ++i) {
+      const double lon = -180.0 + (i + 0.5) * dlon;
+      const std::array<double, 3> p = weather::unit_vector(lat, lon);
+      int n = 0;  // samples per side; 0: no region near, the global cover
+      for (const Reach& r : regions)
+        if (p[0] * r.centre[0] + p[1] * r.centre[1] + p[2] * r.centre[2] > r.cos_near)
+          n = std::max(n, std::clamp(static_cast<int>(std::ceil(32.0 * texel_m / r.feature_m)), 4, 64));
+      std::array<double, 3> cover = global;
+      if (n > 0) {
+        cover = {0.0, 0.0, 0.0};
+        for (int a = 0; a < n; ++a)
+          for (int b = 0; b < n; ++b) {
+            const std::array<double, 3> c = cover_at(lat + ((a + 0.5) / n - 0.5) * dlat, lon + ((b + 0.5) / n - 0.5) * dlon);
+            for (std::size_t k = 0; k < 3; ++k) cover[k] += c[k] / (n * n);
+          }
+      }
+      float* out_texel = &m.layer_coverage[(static_cast<std::size_t>(j) * width + i) * 4];
+      for (std::size_t k = 0; k < 3; ++k) out_texel[k] = static_cast<float>(std::clamp(cover[k], 0.0, 1.0));
+    }
+  });
+  return out;
+}
+
+}  // namespace cloudsvc::cigi

@@ -1,0 +1,148 @@
+// CIGI cloud layers -> the renderer's weather (protocol/cigi/cigi_weather.h): where a region's
+// weather holds, how its perimeter blends, which altitudes the layers get, and that the
+// result is weather the renderer accepts.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "protocol/cigi/cigi_weather.h"
+#include "weather/sphere_geometry.h"
+
+namespace cloudsvc::cigi {
+namespace {
+
+// The point `north_m` north and `east_m` east of (lat, lon) on the sphere (small offsets).
+std::pair<double, double> offset(double lat, double lon, double north_m, double east_m) {
+  const double r = weather::kMeanEarthRadius_m;
+  return {lat + north_m / r / weather::kRadPerDeg, lon + east_m / (r * std::cos(lat * weather::kRadPerDeg)) / weather::kRadPerDeg};
+}
+
+EnvironmentalRegionControl region(double lat, double lon, float size_x, float size_y, float perimeter, float rotation = 0.0f) {
+  EnvironmentalRegionControl r;
+  r.region_id = 3;
+  r.lat_deg = lat;
+  r.lon_deg = lon;
+  r.size_x_m = size_x;
+  r.size_y_m = size_y;
+  r.corner_radius_m = 0.0f;
+  r.rotation_deg = rotation;
+  r.transition_perimeter_m = perimeter;
+  return r;
+}
+
+double weight_at(const EnvironmentalRegionControl& r, double north_m, double east_m) {
+  const auto [lat, lon] = offset(r.lat_deg, r.lon_deg, north_m, east_m);
+  return region_weight(r, lat, lon);
+}
+
+TEST(CigiWeather, ARegionHoldsInsideAndFadesAcrossItsPerimeter) {
+  const EnvironmentalRegionControl r = region(46.0, 7.0, 40000.0f, 10000.0f, 8000.0f);
+  EXPECT_EQ(weight_at(r, 0.0, 0.0), 1.0);
+  EXPECT_EQ(weight_at(r, 19000.0, 4000.0), 1.0);  // x (north) half 20 km, y (east) half 5 km
+  EXPECT_NEAR(weight_at(r, 24000.0, 0.0), 0.5, 0.01) << "4 km into the 8 km perimeter";
+  EXPECT_NEAR(weight_at(r, 0.0, 7000.0), 0.75, 0.01);
+  EXPECT_EQ(weight_at(r, 0.0, 14000.0), 0.0);
+  // Rotated 90°: x points east.
+  const EnvironmentalRegionControl turned = region(46.0, 7.0, 40000.0f, 10000.0f, 0.0f, 90.0f);
+  EXPECT_EQ(weight_at(turned, 0.0, 15000.0), 1.0);
+  EXPECT_EQ(weight_at(turned, 15000.0, 0.0), 0.0);
+  // Rounded corners: the corner point is outside, the edge midpoint inside.
+  EnvironmentalRegionControl rounded = region(46.0, 7.0, 20000.0f, 20000.0f, 0.0f);
+  rounded.corner_radius_m = 5000.0f;
+  EXPECT_EQ(weight_at(rounded, 9800.0, 9800.0), 0.0);
+  EXPECT_EQ(weight_at(rounded, 9800.0, 0.0), 1.0);
+  // Inactive regions and the far side of the Earth weigh nothing.
+  EnvironmentalRegionControl off = r;
+  off.state = 0;
+  EXPECT_EQ(region_weight(off, 46.0, 7.0), 0.0);
+  EXPECT_EQ(region_weight(r, -46.0, -173.0), 0.0);
+}
+
+WeatherControl layer(std::uint8_t id, std::uint8_t type, float base, float thickness, float coverage_pct) {
+  WeatherControl w;
+  w.layer_id = id;
+  w.cloud_type = type;
+  w.base_elevation_m = base;
+  w.thickness_m = thickness;
+  w.coverage_pct = coverage_pct;
+  return w;
+}
+
+HostDatagram datagram(std::vector<HostPacket> packets) {
+  DatagramWriter w;
+  w.add(IgControl{});
+  for (const HostPacket& p : packets) w.add(p);
+  HostDatagram d = read_host_datagram(w.bytes());
+  EXPECT_TRUE(d.rejections.empty()) << d.rejections.front().reason;
+  return d;
+}
+
+float slot_at(const weather::WeatherMap& m, int slot, double lat, double lon) {
+  float c[4];
+  m.sample_layer_coverage(lat, lon, c);
+  return c[slot];
+}
+
+TEST(CigiWeather, AGlobalDeckWithARegionalHole) {
+  IgState s;
+  WeatherControl deck = layer(1, 10, 800.0f, 600.0f, 100.0f);
+  deck.wind_horizontal_mps = 10.0f;
+  deck.wind_direction_deg = 270.0f;  // from the west
+  EnvironmentalRegionControl hole = region(46.0, 7.0, 200000.0f, 200000.0f, 100000.0f);
+  WeatherControl clear = layer(1, 10, 800.0f, 600.0f, 0.0f);
+  clear.scope = WeatherScope::Regional;
+  clear.entity_or_region_id = hole.region_id;
+  EXPECT_TRUE(s.apply(datagram({deck, hole, clear})).empty());
+  const CigiWeather w = cigi_weather(s, 46.0, 7.0, 1024, 512);
+  EXPECT_EQ(weather::validate(w.weather), "");
+  ASSERT_EQ(w.weather.layers.size(), 1u);
+  const weather::CloudLayer& l = w.weather.layers[0];
+  EXPECT_EQ(l.type, weather::CloudType::Stratus);
+  EXPECT_EQ(l.base_m, 800.0);
+  EXPECT_EQ(l.top_m, 1400.0);
+  EXPECT_EQ(l.coverage_channel, 0);
+  EXPECT_NEAR(l.wind.east_mps, 10.0, 1e-5);
+  EXPECT_NEAR(l.wind.north_mps, 0.0, 1e-5);
+  EXPECT_NEAR(slot_at(w.map, 0, 46.0, 7.0), 0.0, 0.01) << "the hole";
+  EXPECT_NEAR(slot_at(w.map, 0, 30.0, -40.0), 1.0, 1e-6) << "the deck elsewhere";
+  const auto [lat, lon] = offset(46.0, 7.0, 150000.0, 0.0);  // half way through the perimeter
+  EXPECT_NEAR(slot_at(w.map, 0, lat, lon), 0.5, 0.08);
+  EXPECT_EQ(slot_at(w.map, 1, 30.0, -40.0), 0.0f) << "no layer 2";
+  EXPECT_TRUE(w.notes.empty());
+}
+
+TEST(CigiWeather, ALayerOnlyInARegionAndOverlappingLayers) {
+  IgState s;
+  EnvironmentalRegionControl storm = region(10.0, 100.0, 60000.0f, 60000.0f, 0.0f);
+  WeatherControl cb = layer(2, 6, 1200.0f, 9000.0f, 80.0f);  // 1200 .. 10200 m, the thickest
+  cb.scope = WeatherScope::Regional;
+  cb.entity_or_region_id = storm.region_id;
+  WeatherControl sc = layer(1, 9, 600.0f, 1400.0f, 50.0f);    // 600 .. 2000 m: cut to 600 .. 1200
+  WeatherControl ac = layer(3, 1, 4000.0f, 500.0f, 30.0f);    // inside the cumulonimbus: dropped
+  EXPECT_TRUE(s.apply(datagram({storm, cb, sc, ac})).empty());
+  const CigiWeather w = cigi_weather(s, 10.0, 100.0, 512, 256);
+  EXPECT_EQ(weather::validate(w.weather), "");
+  ASSERT_EQ(w.weather.layers.size(), 2u);
+  EXPECT_EQ(w.weather.layers[0].type, weather::CloudType::Stratocumulus);
+  EXPECT_EQ(w.weather.layers[0].top_m, 1200.0);
+  EXPECT_EQ(w.weather.layers[1].type, weather::CloudType::Cumulonimbus);
+  EXPECT_EQ(w.weather.layers[1].coverage_channel, 1);
+  ASSERT_EQ(w.notes.size(), 2u);
+  EXPECT_EQ(w.notes[0], "layer 1 overlaps layer 2: drawn from 600 to 1200 m");
+  EXPECT_EQ(w.notes[1], "layer 3 lies within layer 2: not drawn");
+  // A 60 km region on 0.7° texels (78 km): it keeps its share of the texels' cover.
+  double sum = 0.0;
+  for (int j = 0; j < w.map.height; ++j)
+    for (int i = 0; i < w.map.width; ++i) {
+      const double lat = -90.0 + (j + 0.5) * 180.0 / w.map.height;
+      const double texel_m2 = std::pow(weather::kMeanEarthRadius_m * weather::kRadPerDeg, 2) * (180.0 / w.map.height) *
+                              (360.0 / w.map.width) * std::cos(lat * weather::kRadPerDeg);
+      sum += w.map.layer_coverage[(static_cast<std::size_t>(j) * w.map.width + i) * 4 + 1] * texel_m2;
+    }
+  EXPECT_NEAR(sum / (0.8 * 60000.0 * 60000.0), 1.0, 0.02) << "the storm's cloud area, m2";
+  EXPECT_EQ(slot_at(w.map, 1, 10.0, 110.0), 0.0f) << "and nowhere else";
+  EXPECT_NEAR(slot_at(w.map, 0, 10.0, 110.0), 0.5, 1e-6);
+}
+
+}  // namespace
+}  // namespace cloudsvc::cigi

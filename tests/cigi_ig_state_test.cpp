@@ -59,6 +59,11 @@ TEST(CigiIgState, ViewsAreBuiltFieldByFieldFromTheDefault) {
   ASSERT_EQ(refused.size(), 1u);
   EXPECT_EQ(refused[0], "View Definition of view 1: with the view's other fields no frustum (left < right, bottom < top, near < far)");
   EXPECT_EQ(s.views()[0].frustum.left_deg, -20.0f);
+  // ... also for a view not seen before: it is not created.
+  bad.view_id = 4;
+  bad.left_deg = 45.0f;  // right of the default right edge, 25°
+  EXPECT_EQ(s.apply(datagram({bad})).size(), 1u);
+  EXPECT_EQ(s.views().size(), 1u);
   // At most kMaxViews views.
   std::vector<HostPacket> many;
   for (std::uint16_t id = 10; id < 20; ++id) {

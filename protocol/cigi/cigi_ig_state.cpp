@@ -27,15 +27,6 @@ std::vector<View> IgState::views() const {
   return out;
 }
 
-View* IgState::view(std::uint16_t id) {
-  if (auto it = views_.find(id); it != views_.end()) return &it->second;
-  if (views_.size() >= kMaxViews) return nullptr;
-  View v;
-  v.id = id;
-  v.frustum = default_frustum_;
-  return &views_.emplace(id, v).first->second;
-}
-
 std::optional<std::string> IgState::apply(const HostPacket& packet) {
   return std::visit(
       [this](const auto& p) -> std::optional<std::string> {
@@ -44,23 +35,25 @@ std::optional<std::string> IgState::apply(const HostPacket& packet) {
           // The reader keeps entity 0 only; its state (active, destroyed) does not remove the eye.
           ownship_ = OwnshipPose{p.lat_deg, p.lon_deg, p.alt_m, p.roll_deg, p.pitch_deg, p.yaw_deg};
         } else if constexpr (std::is_same_v<P, ViewControl> || std::is_same_v<P, ViewDefinition>) {
-          View* v = view(p.view_id);
-          if (!v)
+          // The view as the packet leaves it, checked before anything changes.
+          const auto known = views_.find(p.view_id);
+          if (known == views_.end() && views_.size() >= kMaxViews)
             return packet_name(std::is_same_v<P, ViewControl> ? opcode::kViewControl : opcode::kViewDefinition) +
                    " of view " + std::to_string(p.view_id) + ": the IG draws at most " + std::to_string(kMaxViews) +
                    " views";
-          v->group = p.group_id;
+          View v = known != views_.end() ? known->second : View{p.view_id, 0, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, default_frustum_};
+          v.group = p.group_id;
           if constexpr (std::is_same_v<P, ViewControl>) {
             using namespace view_enable;
-            if (p.enable & kX) v->x_m = p.x_m;
-            if (p.enable & kY) v->y_m = p.y_m;
-            if (p.enable & kZ) v->z_m = p.z_m;
-            if (p.enable & kRoll) v->roll_deg = p.roll_deg;
-            if (p.enable & kPitch) v->pitch_deg = p.pitch_deg;
-            if (p.enable & kYaw) v->yaw_deg = p.yaw_deg;
+            if (p.enable & kX) v.x_m = p.x_m;
+            if (p.enable & kY) v.y_m = p.y_m;
+            if (p.enable & kZ) v.z_m = p.z_m;
+            if (p.enable & kRoll) v.roll_deg = p.roll_deg;
+            if (p.enable & kPitch) v.pitch_deg = p.pitch_deg;
+            if (p.enable & kYaw) v.yaw_deg = p.yaw_deg;
           } else {
             using namespace definition_enable;
-            ViewFrustum f = v->frustum;
+            ViewFrustum& f = v.frustum;
             if (p.enable & kNear) f.near_m = p.near_m;
             if (p.enable & kFar) f.far_m = p.far_m;
             if (p.enable & kLeft) f.left_deg = p.left_deg;
@@ -72,8 +65,8 @@ std::optional<std::string> IgState::apply(const HostPacket& packet) {
             if (!(f.right_deg > f.left_deg && f.top_deg > f.bottom_deg && f.far_m > f.near_m))
               return "View Definition of view " + std::to_string(p.view_id) +
                      ": with the view's other fields no frustum (left < right, bottom < top, near < far)";
-            v->frustum = f;
           }
+          views_[p.view_id] = v;
         } else if constexpr (std::is_same_v<P, CelestialSphereControl>) {
           if (p.date_valid)
             utc_s_ = geo::utc_from_civil(static_cast<int>(p.date % 10000), static_cast<int>(p.date / 1000000),

@@ -81,7 +81,6 @@ class IgState {
 
  private:
   std::optional<std::string> apply(const HostPacket& p);
-  View* view(std::uint16_t id);  // the view, created with the default frustum; null beyond kMaxViews
 
   ViewFrustum default_frustum_;
   IgMode mode_ = IgMode::Standby;

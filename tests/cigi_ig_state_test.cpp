@@ -4,23 +4,12 @@
 #include <gtest/gtest.h>
 
 #include "geodesy/utc_time.h"
+#include "cigi_test_support.h"
 #include "protocol/cigi/cigi_ig_state.h"
 
 namespace cloudsvc::cigi {
 namespace {
 
-// A datagram of these packets as a host sends it, read back as the IG reads it.
-HostDatagram datagram(std::vector<HostPacket> packets, std::uint32_t host_frame = 1, IgMode mode = IgMode::Operate) {
-  DatagramWriter w(ByteOrder::Big);
-  IgControl c;
-  c.host_frame = host_frame;
-  c.mode = mode;
-  w.add(c);
-  for (const HostPacket& p : packets) w.add(p);
-  HostDatagram d = read_host_datagram(w.bytes());
-  EXPECT_TRUE(d.rejections.empty()) << d.rejections.front().reason;
-  return d;
-}
 
 TEST(CigiIgState, ViewsAreBuiltFieldByFieldFromTheDefault) {
   const ViewFrustum defaults{-25.0f, 25.0f, 15.0f, -15.0f, 1.0f, 100000.0f};
@@ -38,7 +27,7 @@ TEST(CigiIgState, ViewsAreBuiltFieldByFieldFromTheDefault) {
   narrow.enable = definition_enable::kLeft | definition_enable::kRight;
   narrow.left_deg = -20.0f;
   narrow.right_deg = 20.0f;
-  EXPECT_TRUE(s.apply(datagram({left, narrow}, 7)).empty());
+  EXPECT_TRUE(s.apply(host_datagram({left, narrow}, 7)).empty());
   EXPECT_EQ(s.last_host_frame(), 7u);
   EXPECT_EQ(s.mode(), IgMode::Operate);
   ASSERT_EQ(s.views().size(), 1u) << "the host's views replace the default one";
@@ -55,14 +44,14 @@ TEST(CigiIgState, ViewsAreBuiltFieldByFieldFromTheDefault) {
   bad.view_id = 1;
   bad.enable = definition_enable::kLeft;
   bad.left_deg = 40.0f;
-  const auto refused = s.apply(datagram({bad}));
+  const auto refused = s.apply(host_datagram({bad}));
   ASSERT_EQ(refused.size(), 1u);
   EXPECT_EQ(refused[0], "View Definition of view 1: with the view's other fields no frustum (left < right, bottom < top, near < far)");
   EXPECT_EQ(s.views()[0].frustum.left_deg, -20.0f);
   // ... also for a view not seen before: it is not created.
   bad.view_id = 4;
   bad.left_deg = 45.0f;  // right of the default right edge, 25°
-  EXPECT_EQ(s.apply(datagram({bad})).size(), 1u);
+  EXPECT_EQ(s.apply(host_datagram({bad})).size(), 1u);
   EXPECT_EQ(s.views().size(), 1u);
   // At most kMaxViews views.
   std::vector<HostPacket> many;
@@ -71,7 +60,7 @@ TEST(CigiIgState, ViewsAreBuiltFieldByFieldFromTheDefault) {
     c.view_id = id;
     many.push_back(c);
   }
-  const auto over = s.apply(datagram(many));
+  const auto over = s.apply(host_datagram(many));
   EXPECT_EQ(s.views().size(), IgState::kMaxViews);
   ASSERT_EQ(over.size(), 10u - (IgState::kMaxViews - 1));
   EXPECT_EQ(over[0], "View Control of view 17: the IG draws at most 8 views");
@@ -92,7 +81,7 @@ TEST(CigiIgState, OwnshipTimeAndAtmosphere) {
   c.minute = 30;
   AtmosphereControl a;
   a.visibility_m = 25000.0f;
-  s.apply(datagram({e, c, a}));
+  s.apply(host_datagram({e, c, a}));
   ASSERT_TRUE(s.ownship());
   EXPECT_EQ(*s.ownship(), (OwnshipPose{47.45, 8.56, 3000.0, 0.0, 0.0, 120.0}));
   EXPECT_EQ(s.utc_s(), geo::parse_utc_iso8601("2026-06-21T16:30:00Z"));
@@ -101,7 +90,7 @@ TEST(CigiIgState, OwnshipTimeAndAtmosphere) {
   // A time without a valid date leaves the time as it was.
   c.date_valid = false;
   c.hour = 3;
-  s.apply(datagram({c}));
+  s.apply(host_datagram({c}));
   EXPECT_EQ(s.utc_s(), geo::parse_utc_iso8601("2026-06-21T16:30:00Z"));
   EXPECT_EQ(s.datagrams(), 2u);
 }
@@ -117,7 +106,7 @@ TEST(CigiIgState, GlobalAndRegionalCloudLayers) {
   stratus.coverage_pct = 100.0f;
   WeatherControl rain;  // layer 4: precipitation, not drawn
   rain.layer_id = 4;
-  s.apply(datagram({stratus, rain}));
+  s.apply(host_datagram({stratus, rain}));
   ASSERT_TRUE(s.global_layers()[0]);
   EXPECT_EQ(s.global_layers()[0]->cloud_type, 10);
   EXPECT_FALSE(s.global_layers()[1]);
@@ -129,7 +118,7 @@ TEST(CigiIgState, GlobalAndRegionalCloudLayers) {
   cb.cloud_type = 6;
   cb.scope = WeatherScope::Regional;
   cb.entity_or_region_id = 5;
-  auto refused = s.apply(datagram({cb}));
+  auto refused = s.apply(host_datagram({cb}));
   ASSERT_EQ(refused.size(), 1u);
   EXPECT_EQ(refused[0], "Weather Control of layer 2 in region 5: no such region (send its Environmental Region Control first)");
   EnvironmentalRegionControl r;
@@ -139,7 +128,7 @@ TEST(CigiIgState, GlobalAndRegionalCloudLayers) {
   r.size_x_m = 40000.0f;
   r.size_y_m = 20000.0f;
   r.transition_perimeter_m = 5000.0f;
-  EXPECT_TRUE(s.apply(datagram({r, cb})).empty());
+  EXPECT_TRUE(s.apply(host_datagram({r, cb})).empty());
   ASSERT_EQ(s.regions().size(), 1u);
   EXPECT_EQ(s.regions().at(5).layers[1]->cloud_type, 6);
   EXPECT_FALSE(s.global_layers()[1]) << "a regional layer is not global";
@@ -148,7 +137,7 @@ TEST(CigiIgState, GlobalAndRegionalCloudLayers) {
   stratus.enabled = false;
   const std::uint64_t g1 = s.weather_generation();
   r.state = 2;
-  s.apply(datagram({stratus, r}));
+  s.apply(host_datagram({stratus, r}));
   EXPECT_FALSE(s.global_layers()[0]);
   EXPECT_TRUE(s.regions().empty());
   EXPECT_GT(s.weather_generation(), g1);

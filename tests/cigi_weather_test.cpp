@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "cigi_test_support.h"
 #include "protocol/cigi/cigi_weather.h"
 #include "weather/sphere_geometry.h"
 
@@ -68,14 +69,6 @@ WeatherControl layer(std::uint8_t id, std::uint8_t type, float base, float thick
   return w;
 }
 
-HostDatagram datagram(std::vector<HostPacket> packets) {
-  DatagramWriter w;
-  w.add(IgControl{});
-  for (const HostPacket& p : packets) w.add(p);
-  HostDatagram d = read_host_datagram(w.bytes());
-  EXPECT_TRUE(d.rejections.empty()) << d.rejections.front().reason;
-  return d;
-}
 
 float slot_at(const weather::WeatherMap& m, int slot, double lat, double lon) {
   float c[4];
@@ -92,7 +85,7 @@ TEST(CigiWeather, AGlobalDeckWithARegionalHole) {
   WeatherControl clear = layer(1, 10, 800.0f, 600.0f, 0.0f);
   clear.scope = WeatherScope::Regional;
   clear.entity_or_region_id = hole.region_id;
-  EXPECT_TRUE(s.apply(datagram({deck, hole, clear})).empty());
+  EXPECT_TRUE(s.apply(host_datagram({deck, hole, clear})).empty());
   const CigiWeather w = cigi_weather(s, 46.0, 7.0, 1024, 512);
   EXPECT_EQ(weather::validate(w.weather), "");
   ASSERT_EQ(w.weather.layers.size(), 1u);
@@ -119,7 +112,7 @@ TEST(CigiWeather, ALayerOnlyInARegionAndOverlappingLayers) {
   cb.entity_or_region_id = storm.region_id;
   WeatherControl sc = layer(1, 9, 600.0f, 1400.0f, 50.0f);    // 600 .. 2000 m: cut to 600 .. 1200
   WeatherControl ac = layer(3, 1, 4000.0f, 500.0f, 30.0f);    // inside the cumulonimbus: dropped
-  EXPECT_TRUE(s.apply(datagram({storm, cb, sc, ac})).empty());
+  EXPECT_TRUE(s.apply(host_datagram({storm, cb, sc, ac})).empty());
   const CigiWeather w = cigi_weather(s, 10.0, 100.0, 512, 256);
   EXPECT_EQ(weather::validate(w.weather), "");
   ASSERT_EQ(w.weather.layers.size(), 2u);

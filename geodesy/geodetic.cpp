@@ -5,6 +5,7 @@
 // multiples of 90 deg give exact 0/±1 (exact frames at the poles and meridians).
 #include "geodesy/geodetic.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <GeographicLib/Constants.hpp>
@@ -76,6 +77,21 @@ BodyAxes body_axes_enu(const Attitude& a) {
   // z_body in NED = (cr sp cy + sr sy, cr sp sy - sr cy, cr cp); up = -z_body
   b.up = glm::dvec3(-(cr * sp * sy - sr * cy), -(cr * sp * cy + sr * sy), cr * cp);
   return b;
+}
+
+Attitude attitude_of(const BodyAxes& a) {
+  const double kDeg = 180.0 / Math::pi();
+  Attitude out;
+  out.pitch_deg = std::asin(std::clamp(a.forward.z, -1.0, 1.0)) * kDeg;
+  if (std::hypot(a.forward.x, a.forward.y) > 1e-9) {
+    out.heading_deg = std::atan2(a.forward.x, a.forward.y) * kDeg;
+    // right.z = -sin(roll) cos(pitch), up.z = cos(roll) cos(pitch) (body_axes_enu)
+    out.roll_deg = std::atan2(-a.right.z, a.up.z) * kDeg;
+  } else {  // straight up or down: heading and roll turn about the same axis; roll 0
+    out.heading_deg = std::atan2(-a.right.y, a.right.x) * kDeg;
+  }
+  if (out.heading_deg < 0.0) out.heading_deg += 360.0;
+  return out;
 }
 
 // Radii of curvature of the WGS84 ellipsoid (e.g. Torge & Müller, Geodesy, §4.1):

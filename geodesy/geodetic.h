@@ -38,6 +38,10 @@ struct BodyAxes {
   glm::dvec3 up;
 };
 BodyAxes body_axes_enu(const Attitude& a);
+// The attitude of body axes given in the local ENU frame: the inverse of body_axes_enu
+// (heading in [0, 360)). Looking straight up or down, the heading is that of the right axis
+// and the roll 0.
+Attitude attitude_of(const BodyAxes& axes);
 
 // WGS84 radii of curvature at a geodetic latitude, metres.
 double meridional_radius(double lat_deg);      // M

@@ -15,13 +15,14 @@ namespace cloudsvc {
 ForecastTracker::ForecastTracker(std::shared_ptr<const weather::ForecastWeather> forecast, int map_width,
                                  int map_height, double start_utc_s)
     : forecast_(std::move(forecast)), map_width_(map_width), map_height_(map_height), steps_(forecast_->valid_times()) {
-  std::tie(prepared_first_, std::ignore) =
+  std::size_t count = 0;
+  std::tie(prepared_first_, count) =
       weather::keyframe_steps_around(steps_, start_utc_s, weather::WeatherTimeline::kMaxKeyframes);
-  prepared_ = build_keyframes(start_utc_s);
+  prepared_ = build_keyframes(prepared_first_, count);
 }
 
-std::vector<std::pair<double, weather::WeatherMap>> ForecastTracker::build_keyframes(double utc_s) const {
-  const auto [first, count] = weather::keyframe_steps_around(steps_, utc_s, weather::WeatherTimeline::kMaxKeyframes);
+std::vector<std::pair<double, weather::WeatherMap>> ForecastTracker::build_keyframes(std::size_t first,
+                                                                                      std::size_t count) const {
   std::vector<std::pair<double, weather::WeatherMap>> frames;
   for (std::size_t i = first; i < first + count; ++i)
     frames.emplace_back(steps_[i], weather::forecast_map(*forecast_, steps_[i], map_width_, map_height_));
@@ -35,7 +36,7 @@ void ForecastTracker::update(CloudRenderer& renderer, double lat_deg, double lon
     std::tie(first_, count_) = weather::keyframe_steps_around(steps_, utc_s, weather::WeatherTimeline::kMaxKeyframes);
     // the keyframes made at start-up when they are the ones needed, else new ones
     std::vector<std::pair<double, weather::WeatherMap>> frames =
-        !prepared_.empty() && prepared_first_ == first_ ? std::move(prepared_) : build_keyframes(utc_s);
+        !prepared_.empty() && prepared_first_ == first_ ? std::move(prepared_) : build_keyframes(first_, count_);
     prepared_.clear();
     renderer.set_forecast(weather::forecast_weather_at(*forecast_, lat_deg, lon_deg, utc_s), std::move(frames));
   } else if (weather::surface_distance_m(lat_deg, lon_deg, lat_, lon_) > 0.5 * weather::kForecastRegion_m ||

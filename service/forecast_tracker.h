@@ -34,8 +34,8 @@ class ForecastTracker {
   std::pair<std::size_t, std::size_t> keyframe_steps() const { return {first_, count_}; }
 
  private:
-  // The maps of the steps keyframe_steps_around(utc_s) picks.
-  std::vector<std::pair<double, weather::WeatherMap>> build_keyframes(double utc_s) const;
+  // The maps of steps [first, first + count).
+  std::vector<std::pair<double, weather::WeatherMap>> build_keyframes(std::size_t first, std::size_t count) const;
 
   std::shared_ptr<const weather::ForecastWeather> forecast_;
   int map_width_, map_height_;

@@ -16,12 +16,12 @@ TEST(CigiViewPose, AttitudesSurviveAxesAndBack) {
   std::uniform_real_distribution<double> heading(0.0, 360.0), pitch(-89.0, 89.0), roll(-180.0, 180.0);
   for (int i = 0; i < 1000; ++i) {
     const geo::Attitude a{heading(rng), pitch(rng), roll(rng)};
-    const geo::Attitude b = attitude_of(geo::body_axes_enu(a));
+    const geo::Attitude b = geo::attitude_of(geo::body_axes_enu(a));
     ASSERT_NEAR(angle_diff(b.heading_deg, a.heading_deg), 0.0, 1e-9);
     ASSERT_NEAR(b.pitch_deg, a.pitch_deg, 1e-9);
     ASSERT_NEAR(angle_diff(b.roll_deg, a.roll_deg), 0.0, 1e-9);
   }
-  const geo::Attitude up = attitude_of(geo::body_axes_enu({30.0, 90.0, 0.0}));
+  const geo::Attitude up = geo::attitude_of(geo::body_axes_enu({30.0, 90.0, 0.0}));
   EXPECT_NEAR(up.pitch_deg, 90.0, 1e-9);
   EXPECT_NEAR(up.heading_deg, 30.0, 1e-6);
 }

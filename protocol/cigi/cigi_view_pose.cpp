@@ -1,31 +1,7 @@
 // A CIGI view's eye point and attitude (cigi_view_pose.h).
 #include "protocol/cigi/cigi_view_pose.h"
 
-#include <algorithm>
-#include <cmath>
-
 namespace cloudsvc::cigi {
-namespace {
-
-constexpr double kDeg = 180.0 / 3.14159265358979323846;
-
-}  // namespace
-
-geo::Attitude attitude_of(const geo::BodyAxes& a) {
-  geo::Attitude out;
-  out.pitch_deg = std::asin(std::clamp(a.forward.z, -1.0, 1.0)) * kDeg;
-  const double horizontal = std::hypot(a.forward.x, a.forward.y);
-  if (horizontal > 1e-9) {
-    out.heading_deg = std::atan2(a.forward.x, a.forward.y) * kDeg;
-    // right.z = -sin(roll) cos(pitch), up.z = cos(roll) cos(pitch) (geo::body_axes_enu)
-    out.roll_deg = std::atan2(-a.right.z, a.up.z) * kDeg;
-  } else {  // straight up or down: heading and roll turn about the same axis; roll 0
-    out.heading_deg = std::atan2(-a.right.y, a.right.x) * kDeg;
-  }
-  if (out.heading_deg < 0.0) out.heading_deg += 360.0;
-  return out;
-}
-
 ViewPose view_pose(const OwnshipPose& ownship, const View& view) {
   const geo::Geodetic own{ownship.lat_deg, ownship.lon_deg, ownship.alt_m};
   const geo::BodyAxes body = geo::body_axes_enu({ownship.yaw_deg, ownship.pitch_deg, ownship.roll_deg});
@@ -43,7 +19,7 @@ ViewPose view_pose(const OwnshipPose& ownship, const View& view) {
   // The axes in the eye's own local frame (a few metres away: nearly the same).
   const glm::dmat3 ecef_to_eye = glm::transpose(geo::enu_to_ecef(out.position.lat_deg, out.position.lon_deg));
   const geo::BodyAxes eye{ecef_to_eye * (own_to_ecef * f), ecef_to_eye * (own_to_ecef * r), ecef_to_eye * (own_to_ecef * u)};
-  out.attitude = attitude_of(eye);
+  out.attitude = geo::attitude_of(eye);
   return out;
 }
 

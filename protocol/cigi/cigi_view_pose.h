@@ -16,8 +16,4 @@ struct ViewPose {
 
 ViewPose view_pose(const OwnshipPose& ownship, const View& view);
 
-// The attitude of body axes given in a local ENU frame (the inverse of geo::body_axes_enu).
-// Looking straight up or down the heading is that of the right axis and the roll 0.
-geo::Attitude attitude_of(const geo::BodyAxes& axes);
-
 }  // namespace cloudsvc::cigi

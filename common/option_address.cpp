@@ -15,6 +15,7 @@ static_assert(kMaxUnixPathBytes == sizeof(sockaddr_un{}.sun_path) - 1);
 
 constexpr std::string_view kTcpScheme = "tcp://";
 constexpr std::string_view kUnixScheme = "unix:";
+constexpr std::string_view kUdpScheme = "udp:";
 constexpr int kMaxPort = 65535;
 
 int min_port(PortUse use) { return use == PortUse::Listen ? 0 : 1; }
@@ -111,6 +112,38 @@ std::optional<std::string> endpoint_problem(std::string_view text, PortUse use, 
 Endpoint parse_endpoint(std::string_view flag, const std::string& text, PortUse use) {
   Endpoint endpoint;
   if (auto problem = endpoint_problem(text, use, endpoint)) fail(flag, text, *problem);
+  return endpoint;
+}
+
+std::string UdpEndpoint::text() const {
+  const bool v6 = host.find(':') != std::string::npos;
+  return std::string(kUdpScheme) + (v6 ? "[" + host + "]" : host) + ":" + std::to_string(port);
+}
+
+std::optional<std::string> udp_endpoint_problem(std::string_view text, PortUse use, UdpEndpoint& out) {
+  out = UdpEndpoint{};
+  const std::string expected = "expected udp:HOST:PORT (HOST a numeric IPv4 address, [IPv6 address] or localhost) or "
+                               "udp:PORT (loopback), PORT in " + port_range(use) +
+                               (use == PortUse::Listen ? ", 0 = any free port" : "");
+  if (!text.starts_with(kUdpScheme)) return expected;
+  const std::string_view rest = text.substr(kUdpScheme.size());
+  if (rest.find(':') == std::string_view::npos) {  // udp:PORT
+    if (auto problem = port_problem(rest, use, out.port)) return *problem + "; " + expected;
+    return std::nullopt;
+  }
+  Endpoint tcp;
+  if (auto problem = tcp_problem(rest, use, tcp)) {
+    if (problem->find("tcp://") != std::string::npos) return expected;  // the tcp forms' text does not apply
+    return problem;
+  }
+  out.host = tcp.host;
+  out.port = tcp.port;
+  return std::nullopt;
+}
+
+UdpEndpoint parse_udp_endpoint(std::string_view flag, const std::string& text, PortUse use) {
+  UdpEndpoint endpoint;
+  if (auto problem = udp_endpoint_problem(text, use, endpoint)) fail(flag, text, *problem);
   return endpoint;
 }
 

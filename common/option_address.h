@@ -36,4 +36,17 @@ std::optional<std::string> endpoint_problem(std::string_view text, PortUse use, 
 // The address of `flag`, or FlagError "<flag> <text>: <problem>" (option_values.h).
 Endpoint parse_endpoint(std::string_view flag, const std::string& text, PortUse use);
 
+// A UDP address (CIGI): "udp:HOST:PORT" with HOST as for tcp:// (numeric IPv4, [IPv6] or
+// localhost), or "udp:PORT" for the loopback address 127.0.0.1.
+struct UdpEndpoint {
+  std::string host = "127.0.0.1";  // canonical numeric address
+  std::uint16_t port = 0;
+  std::string text() const;        // udp:HOST:PORT, IPv6 in brackets
+};
+
+// The problem with `text` as a UDP address, or nullopt with `out` filled.
+std::optional<std::string> udp_endpoint_problem(std::string_view text, PortUse use, UdpEndpoint& out);
+// The UDP address of `flag`, or FlagError "<flag> <text>: <problem>".
+UdpEndpoint parse_udp_endpoint(std::string_view flag, const std::string& text, PortUse use);
+
 }  // namespace cloudsvc::cli

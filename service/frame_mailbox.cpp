@@ -1,6 +1,7 @@
 #include "service/frame_mailbox.h"
 
 #include <set>
+#include <utility>
 
 namespace cloudsvc {
 
@@ -60,6 +61,19 @@ void FrameMailbox::tile_applied(const protocol::WeatherMapTile& tile) {
   tile_bytes_ = bytes <= tile_bytes_ ? tile_bytes_ - bytes : 0;
 }
 
+bool FrameMailbox::post_cigi(cigi::HostDatagram d) {
+  {
+    std::lock_guard lock(mutex_);
+    if (pending_.cigi.size() >= kMaxCigiDatagrams) {
+      ++pending_.cigi_refused;
+      return false;
+    }
+    pending_.cigi.push_back(std::move(d));
+  }
+  cv_.notify_one();
+  return true;
+}
+
 void FrameMailbox::request_stop() {
   {
     std::lock_guard lock(mutex_);
@@ -71,13 +85,17 @@ void FrameMailbox::request_stop() {
 MailboxBatch FrameMailbox::take(std::chrono::milliseconds timeout) {
   std::unique_lock lock(mutex_);
   cv_.wait_for(lock, timeout, [&] {
-    return pending_.stop || pending_.pose || !pending_.changes.empty() || !pending_.renders.empty();
+    return pending_.stop || pending_.pose || !pending_.changes.empty() || !pending_.renders.empty() ||
+           !pending_.cigi.empty() || pending_.cigi_refused > 0;
   });
   MailboxBatch out;
   out.pose = std::move(pending_.pose);
   pending_.pose.reset();
   out.changes = std::move(pending_.changes);
   pending_.changes.clear();
+  out.cigi = std::move(pending_.cigi);
+  pending_.cigi.clear();
+  out.cigi_refused = std::exchange(pending_.cigi_refused, 0);
   out.stop = pending_.stop;  // stop is sticky: it stays pending
   // The oldest request of each client; the others wait for the next batch.
   std::set<std::uint64_t> taken;

@@ -20,6 +20,7 @@
 #include <variant>
 #include <vector>
 
+#include "protocol/cigi/cigi_datagram.h"
 #include "protocol/messages.h"
 
 namespace cloudsvc {
@@ -48,6 +49,8 @@ struct MailboxBatch {
   std::optional<PendingPose> pose;        // newest pose since the last batch
   std::vector<StateChange> changes;       // in arrival order
   std::vector<PendingRender> renders;     // one-shot render requests
+  std::vector<cigi::HostDatagram> cigi;   // CIGI host datagrams (usable or not), in arrival order
+  std::uint64_t cigi_refused = 0;         // CIGI datagrams refused since the last batch (kMaxCigiDatagrams)
   bool stop = false;
 };
 
@@ -55,6 +58,10 @@ class FrameMailbox {
  public:
   // Render requests one client may have queued or in progress.
   static constexpr std::size_t kMaxRendersPerClient = 2;
+
+  // CIGI datagrams waiting for the render thread: a host sending faster than the render
+  // thread takes them (it takes all at every batch) loses datagrams beyond this (counted).
+  static constexpr std::size_t kMaxCigiDatagrams = 4096;
 
   explicit FrameMailbox(std::size_t tile_budget_bytes = std::size_t{256} << 20);
 
@@ -64,6 +71,8 @@ class FrameMailbox {
   bool post_change(StateChange c);
   // False (nothing queued) when the client already has kMaxRendersPerClient requests.
   bool post_render(PendingRender r);
+  // False (refused, counted) when kMaxCigiDatagrams are waiting.
+  bool post_cigi(cigi::HostDatagram d);
   void request_stop();
 
   // The render thread reports each request it has finished (or failed) and each tile it

@@ -11,6 +11,7 @@
 #include "renderer/cloud_renderer.h"
 #include "renderer/gl/egl_context.h"
 #include "renderer/quality_presets.h"
+#include "service/cigi_frames.h"
 #include "service/forecast_tracker.h"
 #include "service/frame_sinks.h"
 #include "service/sim_clock.h"
@@ -77,9 +78,9 @@ protocol::SetView initial_view(const ServeOptions& o) {
 }
 
 RenderLoop::RenderLoop(const ServeOptions& options, FrameMailbox& mailbox, Notify notify, StopService stop_service,
-                       ShmFrameWriter* shm, std::mutex& publish_mutex)
+                       ShmFrameWriter* shm, std::mutex& publish_mutex, SendCigi send_cigi, ViewRings* view_rings)
     : options_(options), mailbox_(mailbox), notify_(std::move(notify)), stop_service_(std::move(stop_service)),
-      shm_(shm), publish_mutex_(publish_mutex) {}
+      shm_(shm), publish_mutex_(publish_mutex), send_cigi_(std::move(send_cigi)), view_rings_(view_rings) {}
 
 double RenderLoop::frame_in_progress_ms() const {
   const std::int64_t started = frame_started_ns_.load();
@@ -92,8 +93,9 @@ class RenderLoop::Run {
   // renderer, with the command line's weather, view and time.
   explicit Run(RenderLoop& loop);
 
-  // How long a take() of the mailbox waits: a window needs its events polled.
-  std::chrono::milliseconds wait() const { return std::chrono::milliseconds(window_ ? 30 : 200); }
+  // How long a take() of the mailbox waits: a window needs its events polled, a CIGI host
+  // its frames.
+  std::chrono::milliseconds wait() const;
   // Processes the window's events; its close button stops the service.
   void poll_window();
   void apply_change(StateChange& c);
@@ -101,6 +103,8 @@ class RenderLoop::Run {
   void on_pose(const PendingPose& p);
   // A RenderRequest: the pose on screen rendered again for the requester.
   void on_render_request(const PendingRender& r);
+  // A CIGI host's datagrams, then the CIGI frame that is due, if any.
+  void on_cigi(MailboxBatch& batch);
 
  private:
   void apply_tile(const protocol::WeatherMapTile& tile);
@@ -110,7 +114,10 @@ class RenderLoop::Run {
   void publish_to_sinks(const FrameImage& img, const PendingPose& p, double utc_s, protocol::FrameReady& ready,
                         const FrameAddress& to);
   void announce(protocol::FrameReady& ready, const PendingPose& p, const FrameAddress& to);
+  // One more frame (a client's or an IG frame).
   void count_frame();
+  // After the frame's notices: the last frame --exit-after-frames allows stops the service.
+  void stop_after_last_frame();
 
   RenderLoop& loop_;
   const ServeOptions& options_;
@@ -122,7 +129,9 @@ class RenderLoop::Run {
   SimClock clock_;
   std::unique_ptr<ForecastTracker> forecast_;  // --weather FILE.grib2|.metar, until a client sends layers
   std::optional<PendingPose> pose_;  // the pose on screen
-  std::uint64_t frame_ = 0;          // frames begun, numbering them from 1
+  std::uint64_t frame_ = 0;          // client frames begun, numbering them from 1
+  std::uint64_t frames_done_ = 0;    // client and IG frames rendered
+  std::unique_ptr<CigiFrames> cigi_;  // --cigi
   SteadyClock::time_point fps_window_start_;
   std::uint64_t fps_window_frames_ = 0;
 };
@@ -140,6 +149,29 @@ RenderLoop::Run::Run(RenderLoop& loop)
     renderer_.set_weather(options_.weather);
   clock_.set(options_.unix_time_s);
   fps_window_start_ = SteadyClock::now();
+  if (options_.cigi)
+    cigi_ = std::make_unique<CigiFrames>(options_, renderer_,
+                                         CigiFrames::Outputs{loop_.view_rings_, window_.get(), &loop_.publish_mutex_},
+                                         loop_.send_cigi_, [this] { forecast_.reset(); });
+}
+
+std::chrono::milliseconds RenderLoop::Run::wait() const {
+  std::chrono::milliseconds w(window_ ? 30 : 200);
+  if (cigi_)
+    w = std::min(w, std::chrono::ceil<std::chrono::milliseconds>(cigi_->wait(SteadyClock::now())));
+  return w;
+}
+
+void RenderLoop::Run::on_cigi(MailboxBatch& batch) {
+  if (!cigi_) return;
+  if (!batch.cigi.empty() || batch.cigi_refused > 0) cigi_->receive(std::move(batch.cigi), batch.cigi_refused);
+  loop_.frame_started_ns_.store(steady_ns());
+  const int views = cigi_->step(SteadyClock::now());
+  loop_.frame_started_ns_.store(0);
+  if (views > 0) {
+    count_frame();
+    stop_after_last_frame();
+  }
 }
 
 void RenderLoop::Run::poll_window() {
@@ -255,18 +287,21 @@ void RenderLoop::Run::publish_to_sinks(const FrameImage& img, const PendingPose&
   if ((view_.sinks & protocol::sink::kWindow) && window_) window_->present(img);
 }
 
-// FrameReady to `to`, after the counters; the last frame --exit-after-frames allows stops
-// the service.
+// FrameReady to `to`, after the counters.
 void RenderLoop::Run::announce(protocol::FrameReady& ready, const PendingPose& p, const FrameAddress& to) {
   ready.latency_ms = std::chrono::duration<double, std::milli>(SteadyClock::now() - p.received).count();
   count_frame();
   loop_.notify_(to.reply_to, ready);
-  if (options_.exit_after_frames > 0 && frame_ >= static_cast<std::uint64_t>(options_.exit_after_frames))
+  stop_after_last_frame();
+}
+
+void RenderLoop::Run::stop_after_last_frame() {
+  if (options_.exit_after_frames > 0 && frames_done_ >= static_cast<std::uint64_t>(options_.exit_after_frames))
     loop_.stop_service_();
 }
 
 void RenderLoop::Run::count_frame() {
-  loop_.frames_.store(frame_);
+  loop_.frames_.store(++frames_done_);
   ++fps_window_frames_;
   const auto now = SteadyClock::now();
   const double span = std::chrono::duration<double>(now - fps_window_start_).count();
@@ -286,6 +321,7 @@ void RenderLoop::run() {
     for (StateChange& c : batch.changes) run.apply_change(c);
     if (batch.pose) run.on_pose(*batch.pose);
     for (const PendingRender& r : batch.renders) run.on_render_request(r);
+    run.on_cigi(batch);
   }
 }
 

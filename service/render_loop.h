@@ -9,6 +9,7 @@
 #include <functional>
 #include <mutex>
 #include <optional>
+#include <vector>
 
 #include "protocol/messages.h"
 #include "service/frame_mailbox.h"
@@ -17,6 +18,7 @@
 namespace cloudsvc {
 
 class ShmFrameWriter;
+class ViewRings;
 
 class RenderLoop {
  public:
@@ -29,8 +31,11 @@ class RenderLoop {
   // write to a sink (ring, file, window) happens while `publish_mutex` is held, so whoever
   // holds it knows no frame is half published (serve abandons a frame that way).
   // options.out_dir must be canonical: the file sink's directories are checked against it.
+  // With --cigi: `send_cigi` hands an IG -> host datagram to the network thread, and
+  // `view_rings` (may be null: no --shm) holds the CIGI views' rings (service/cigi_frames.h).
+  using SendCigi = std::function<void(std::vector<std::uint8_t>)>;
   RenderLoop(const ServeOptions& options, FrameMailbox& mailbox, Notify notify, StopService stop_service,
-             ShmFrameWriter* shm, std::mutex& publish_mutex);
+             ShmFrameWriter* shm, std::mutex& publish_mutex, SendCigi send_cigi = {}, ViewRings* view_rings = nullptr);
 
   // Runs until the mailbox says stop; a pose or request still pending then is not
   // rendered. Throws std::runtime_error when the GL context or the window cannot be made.
@@ -52,6 +57,8 @@ class RenderLoop {
   StopService stop_service_;
   ShmFrameWriter* shm_;
   std::mutex& publish_mutex_;
+  SendCigi send_cigi_;
+  ViewRings* view_rings_;
   std::atomic<std::uint64_t> frames_{0};
   std::atomic<double> fps_{0.0};
   std::atomic<std::int64_t> frame_started_ns_{0};  // steady clock; 0 = idle

@@ -20,11 +20,13 @@
 #include "protocol/limits.h"
 #include "protocol/shm/shm_frame_writer.h"
 #include "renderer/quality_presets.h"
+#include "service/cigi_endpoint.h"
 #include "service/commands.h"
 #include "service/frame_mailbox.h"
 #include "service/network_server.h"
 #include "service/output_directory.h"
 #include "service/render_loop.h"
+#include "service/view_rings.h"
 
 namespace cloudsvc {
 
@@ -112,11 +114,15 @@ int run_serve(const ServeOptions& command_line) {
   std::unique_ptr<ShmFrameWriter> shm;
   if (!opt.shm_name.empty())
     shm = std::make_unique<ShmFrameWriter>(opt.shm_name, opt.shm_max_width, opt.shm_max_height, opt.shm_mode);
+  std::unique_ptr<ViewRings> view_rings;  // the CIGI views' rings, made as views are drawn
+  if (opt.cigi && !opt.shm_name.empty())
+    view_rings = std::make_unique<ViewRings>(opt.shm_name, opt.shm_max_width, opt.shm_max_height, opt.shm_mode);
 
   asio::io_context io;
   auto work = asio::make_work_guard(io);
   FrameMailbox mailbox(static_cast<std::size_t>(opt.tile_budget_mib) << 20);
   std::unique_ptr<NetworkServer> server;
+  std::unique_ptr<CigiEndpoint> cigi_endpoint;
   std::atomic<bool> stopping{false};
   std::unique_ptr<RenderLoop> loop;
   std::mutex publish_mutex;  // held by the render thread while it writes to a sink
@@ -141,7 +147,9 @@ int run_serve(const ServeOptions& command_line) {
     grace_timer.async_wait([&](const asio::error_code&) {
       publish_mutex.lock();  // a sink write in progress ends first; none starts after
       server->stop();
+      if (cigi_endpoint) cigi_endpoint->stop();
       if (shm) shm->unlink_name();
+      if (view_rings) view_rings->unlink_names();
       std::printf("cloudsvc serve: stopped after %llu frames (one abandoned), %.0f ms after the stop\n",
                   static_cast<unsigned long long>(loop ? loop->frames_rendered() : 0), ms_since_stop());
       std::fflush(stdout);
@@ -214,7 +222,14 @@ int run_serve(const ServeOptions& command_line) {
   cfg.socket_mode = opt.socket_mode;
   server = std::make_unique<NetworkServer>(io, cfg, handler);
   const std::vector<std::string> bound = server->bound_addresses();
-  if (!opt.ready_file.empty()) write_ready_file(opt.ready_file, bound);  // throws: exit 1, sockets removed
+  std::vector<std::string> ready = bound;  // the --ready-file lines: the listeners, then the CIGI address
+  if (opt.cigi) {
+    cigi_endpoint = std::make_unique<CigiEndpoint>(io, *opt.cigi, [&](cigi::HostDatagram d) {
+      if (!stopping) mailbox.post_cigi(std::move(d));
+    });
+    ready.push_back(cigi_endpoint->bound_address());
+  }
+  if (!opt.ready_file.empty()) write_ready_file(opt.ready_file, ready);  // throws: exit 1, sockets removed
 
   signals.async_wait([&](const asio::error_code& ec, int sig) {
     if (!ec) {
@@ -235,7 +250,13 @@ int run_serve(const ServeOptions& command_line) {
           else server->broadcast(m);
         });
       },
-      stop_service, shm.get(), publish_mutex);
+      stop_service, shm.get(), publish_mutex,
+      [&](std::vector<std::uint8_t> bytes) {
+        asio::post(io, [&, bytes = std::move(bytes)]() mutable {
+          if (cigi_endpoint && !stopping) cigi_endpoint->send(std::move(bytes));
+        });
+      },
+      view_rings.get());
 
   std::string render_error;
   std::thread render_thread([&] {
@@ -248,12 +269,16 @@ int run_serve(const ServeOptions& command_line) {
     asio::post(io, [&] {  // after stop_service's own post: everything is in place to close
       grace_timer.cancel();
       server->stop();
+      if (cigi_endpoint) cigi_endpoint->stop();
       signals.cancel();
       work.reset();
     });
   });
 
   for (const std::string& a : bound) std::printf("cloudsvc serve: listening on %s\n", a.c_str());
+  if (cigi_endpoint)
+    std::printf("cloudsvc serve: CIGI 3.3 image generator on %s (%s)\n", cigi_endpoint->bound_address().c_str(),
+                opt.cigi->pacing == CigiPacing::Synchronous ? "synchronous" : "asynchronous");
   if (!opt.shm_name.empty()) std::printf("cloudsvc serve: frames in shared memory /%s\n", opt.shm_name.c_str());
   std::fflush(stdout);
   io.run();
@@ -263,6 +288,10 @@ int run_serve(const ServeOptions& command_line) {
     std::fprintf(stderr, "cloudsvc serve: error: %s\n", render_error.c_str());
     return 1;
   }
+  if (cigi_endpoint)
+    std::printf("cloudsvc serve: CIGI: %llu datagrams received, %llu sent\n",
+                static_cast<unsigned long long>(cigi_endpoint->datagrams_received()),
+                static_cast<unsigned long long>(cigi_endpoint->datagrams_sent()));
   std::printf("cloudsvc serve: stopped after %llu frames\n", static_cast<unsigned long long>(loop->frames_rendered()));
   return 0;
 }

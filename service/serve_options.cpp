@@ -144,6 +144,7 @@ std::string size_text(int width, int height) {
 struct ServeCommandLine::Args {
   CLI::App* command = nullptr;
   std::vector<std::string> listen;
+  std::string cigi, cigi_host, cigi_mode, cigi_rate;
   std::string shm, shm_max_size, out_dir, time, size, fov, max_clients, exit_after_frames;
   std::vector<std::string> weather;  // --weather: one preset or file, or several forecast files
   std::string socket_mode, shm_mode, idle_timeout, max_view_size, tile_budget, ready_file;
@@ -197,6 +198,30 @@ void add_endpoint_flags(CLI::App& cmd, ServeCommandLine::Args& args, const Serve
                      std::to_string(kMinClients) + ", " + std::to_string(kMaxClients) +
                      "] (clients); default " + std::to_string(defaults.max_clients))
       ->type_name("N");
+}
+
+constexpr double kMaxCigiRate_hz = 1000.0;
+
+void add_cigi_flags(CLI::App& cmd, ServeCommandLine::Args& args) {
+  const CigiOptions defaults;
+  cmd.add_option("--cigi", args.cigi,
+                 "Also be the image generator of a CIGI 3.3 host (docs/CIGI.md): receive its datagrams on this UDP "
+                 "address, udp:PORT (loopback) or udp:HOST:PORT (HOST a numeric address; 0.0.0.0 exposes the IG to "
+                 "the network), PORT 0: any free port (see --ready-file); each CIGI view is rendered at --size to "
+                 "its own ring NAME-view<ID> (--shm NAME) and files (--out-dir DIR/view<ID>/); default none")
+      ->type_name("ADDR");
+  cmd.add_option("--cigi-host", args.cigi_host,
+                 "With --cigi: send Start of Frame and IG Messages to this UDP address, udp:HOST:PORT; default the "
+                 "address and port the host's datagrams come from")
+      ->type_name("ADDR");
+  cmd.add_option("--cigi-mode", args.cigi_mode,
+                 "With --cigi: sync (one frame and one Start of Frame per host frame) or async (frames at "
+                 "--cigi-rate from the newest state, a Start of Frame each); default sync")
+      ->type_name("MODE");
+  cmd.add_option("--cigi-rate", args.cigi_rate,
+                 numeric_help("With --cigi-mode async: most frames per second (Hz)",
+                              Range{0.0, kMaxCigiRate_hz, true, "Hz"}, defaults.rate_hz))
+      ->type_name("HZ");
 }
 
 void add_sink_flags(CLI::App& cmd, ServeCommandLine::Args& args, const ServeOptions& defaults) {
@@ -302,6 +327,32 @@ void apply_scene(const ServeCommandLine::Args& a, ServeOptions& opt) {
   }
 }
 
+// --cigi, --cigi-host, --cigi-mode, --cigi-rate; after apply_sinks (the views' ring names).
+void apply_cigi(const ServeCommandLine::Args& a, ServeOptions& opt) {
+  const CLI::App& cmd = *a.command;
+  if (!given(cmd, "--cigi")) {
+    for (const char* flag : {"--cigi-host", "--cigi-mode", "--cigi-rate"})
+      if (given(cmd, flag)) fail(flag, cmd.get_option(flag)->as<std::string>(), "only valid together with --cigi");
+    return;
+  }
+  CigiOptions c;
+  c.listen = parse_udp_endpoint("--cigi", a.cigi, PortUse::Listen);
+  if (given(cmd, "--cigi-host")) c.host = parse_udp_endpoint("--cigi-host", a.cigi_host, PortUse::Connect);
+  if (given(cmd, "--cigi-mode")) {
+    if (a.cigi_mode == "sync") c.pacing = CigiPacing::Synchronous;
+    else if (a.cigi_mode == "async") c.pacing = CigiPacing::Asynchronous;
+    else fail("--cigi-mode", a.cigi_mode, "expected sync or async");
+  }
+  if (given(cmd, "--cigi-rate")) {
+    c.rate_hz = parse_number("--cigi-rate", a.cigi_rate, Range{0.0, kMaxCigiRate_hz, true, "Hz"});
+    if (c.pacing != CigiPacing::Asynchronous) fail("--cigi-rate", a.cigi_rate, "only valid with --cigi-mode async");
+  }
+  if (opt.shm_name.size() > kMaxCigiShmBaseChars)
+    fail("--shm", opt.shm_name,
+         "with --cigi at most " + std::to_string(kMaxCigiShmBaseChars) + " characters (the views' rings add -view<ID>)");
+  opt.cigi = c;
+}
+
 // --shm, --shm-max-size, --window, --out-dir; after apply_scene (the view must fit the ring).
 void apply_sinks(const ServeCommandLine::Args& a, ServeOptions& opt) {
   const CLI::App& cmd = *a.command;
@@ -355,6 +406,7 @@ ServeCommandLine::ServeCommandLine(CLI::App& app) : args_(std::make_unique<Args>
   cmd.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
   add_endpoint_flags(cmd, *args_, defaults);
   add_sink_flags(cmd, *args_, defaults);
+  add_cigi_flags(cmd, *args_);
   add_scene_flags(cmd, *args_, defaults);
   cmd.footer(
       "Example:\n  cloudsvc serve --listen tcp://127.0.0.1:7420 --listen unix:/tmp/cloudsvc.sock "
@@ -372,6 +424,7 @@ ServeOptions ServeCommandLine::validate() const {
   apply_endpoints(*args_, opt);
   apply_scene(*args_, opt);
   apply_sinks(*args_, opt);
+  apply_cigi(*args_, opt);
   return opt;
 }
 

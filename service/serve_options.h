@@ -4,9 +4,12 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "common/option_address.h"
 #include "renderer/model/mie_phase_table.h"
 #include "weather/cloud_layer.h"
 #include "weather/forecast_weather.h"
@@ -23,8 +26,26 @@ struct ListenAddress {
   std::string text;                // as given, for logs
 };
 
+// How a CIGI host paces the IG (docs/CIGI.md, "Synchronous and asynchronous operation").
+enum class CigiPacing {
+  Synchronous,   // one frame, and one Start of Frame, per host frame (IG Control) received
+  Asynchronous,  // frames at the IG's own rate (--cigi-rate) from the newest state
+};
+
+// --cigi and its companions: the CIGI 3.3 endpoint (service/cigi_endpoint.h).
+struct CigiOptions {
+  cli::UdpEndpoint listen;                  // --cigi udp:[HOST:]PORT (host -> IG datagrams)
+  std::optional<cli::UdpEndpoint> host;     // --cigi-host: where IG -> host datagrams go; default the sender
+  CigiPacing pacing = CigiPacing::Synchronous;  // --cigi-mode sync|async
+  double rate_hz = 60.0;                    // --cigi-rate: asynchronous frame rate cap, Hz
+};
+
+// Longest ring name with --cigi: each view's ring is NAME-view<ID> (ID up to 65535).
+inline constexpr std::size_t kMaxCigiShmBaseChars = 200 - 10;
+
 struct ServeOptions {
   std::vector<ListenAddress> listen;  // --listen, repeatable; default tcp://127.0.0.1:7420 (loopback only)
+  std::optional<CigiOptions> cigi;    // --cigi: also an image generator for a CIGI 3.3 host
   std::string shm_name;               // --shm NAME: shared-memory frame ring "/NAME"; empty = none
   int shm_max_width = 1920;           // --shm-max-size WxH: largest frame the ring holds
   int shm_max_height = 1080;

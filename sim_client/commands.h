@@ -25,6 +25,7 @@ Command add_sweep_command(CLI::App& app);    // cmd_sweep.cpp
 Command add_weather_command(CLI::App& app);  // cmd_weather.cpp
 Command add_watch_command(CLI::App& app);    // cmd_watch.cpp
 Command add_soak_command(CLI::App& app);     // cmd_soak.cpp
+Command add_cigi_command(CLI::App& app);     // cmd_cigi.cpp
 
 // Shared flag text and checks of the commands (cmd_common.cpp).
 inline constexpr const char* kDefaultAddress = "tcp://127.0.0.1:7420";

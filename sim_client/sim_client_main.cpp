@@ -40,7 +40,8 @@ int main(int argc, char** argv) {
   CLI::App app("sim_client: a simulator-side client of the cloudsvc service (docs/SIM_CLIENT.md)", "sim_client");
   app.require_subcommand(1);
   std::vector<Command> commands = {add_replay_command(app), add_sweep_command(app), add_weather_command(app),
-                                   add_watch_command(app), add_soak_command(app)};
+                                   add_watch_command(app), add_soak_command(app),
+                                   add_cigi_command(app)};
   app.footer(std::string(kExitCodesHelp) +
              "\nExample: sim_client replay sim_client/demo_flight.csv --connect unix:/tmp/cloudsvc.sock "
              "--out frames/ --size 320x180");

@@ -159,6 +159,28 @@ TEST(OptionAddresses, TcpAndUnixForms) {
   }
 }
 
+TEST(OptionAddresses, UdpFormsForCigi) {
+  UdpEndpoint u = parse_udp_endpoint("--cigi", "udp:8000", PortUse::Listen);
+  EXPECT_EQ(u.host, "127.0.0.1");  // loopback unless an address is given
+  EXPECT_EQ(u.port, 8000);
+  EXPECT_EQ(u.text(), "udp:127.0.0.1:8000");
+  u = parse_udp_endpoint("--cigi", "udp:0.0.0.0:0", PortUse::Listen);
+  EXPECT_EQ(u.host, "0.0.0.0");
+  EXPECT_EQ(u.port, 0);
+  u = parse_udp_endpoint("--cigi-host", "udp:[0::1]:8001", PortUse::Connect);
+  EXPECT_EQ(u.host, "::1");
+  EXPECT_EQ(u.text(), "udp:[::1]:8001");
+  EXPECT_EQ(parse_udp_endpoint("--cigi", "udp:localhost:9", PortUse::Listen).host, "127.0.0.1");
+  EXPECT_NE(flag_error([] { parse_udp_endpoint("--cigi-host", "udp:0", PortUse::Connect); }).find("out of range [1, 65535]"),
+            std::string::npos);
+  for (const char* bad : {"8000", "udp:", "udp:x", "udp:127.0.0.1:", "udp:127.0.0.1:70000", "udp:example.com:8000",
+                          "udp:::1:8000", "udp:[::1]", "tcp://127.0.0.1:8000", "udp://127.0.0.1:8000", ""}) {
+    const std::string e = flag_error([&] { parse_udp_endpoint("--cigi", bad, PortUse::Listen); });
+    EXPECT_EQ(e.rfind("--cigi ", 0), 0u) << bad;
+    EXPECT_EQ(e.find('\n'), std::string::npos) << e;
+  }
+}
+
 // ---- paths ------------------------------------------------------------------------------
 
 class OptionPaths : public ::testing::Test {

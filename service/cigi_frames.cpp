@@ -26,8 +26,8 @@ using namespace std::chrono_literals;
 constexpr auto kResendAfter = std::chrono::duration_cast<CigiFrames::Clock::duration>(1s);
 // ... and how soon when IG Messages wait (at most 10 such datagrams a second).
 constexpr auto kMessagesAfter = std::chrono::duration_cast<CigiFrames::Clock::duration>(100ms);
-// Rejections also printed on stdout, for the operator: the first this many.
-constexpr std::uint64_t kRejectionsPrinted = 20;
+// Problems also printed on stdout, for the operator: the first this many.
+constexpr std::uint64_t kReportsPrinted = 20;
 // Start of Frame timestamps: ticks of 10 µs (wrapping after 11.9 hours).
 constexpr double kTicksPerSecond = 1e5;
 
@@ -51,9 +51,14 @@ double CigiFrames::image_window_half_angle_deg(const ServeOptions& o) {
 
 void CigiFrames::reject(const std::string& line) {
   ++rejected_;
-  if (rejected_ <= kRejectionsPrinted) {
+  report(line);
+}
+
+void CigiFrames::report(const std::string& line) {
+  ++reported_;
+  if (reported_ <= kReportsPrinted) {
     std::printf("cloudsvc serve: CIGI: %s%s\n", line.c_str(),
-                rejected_ == kRejectionsPrinted ? " (further ones go to the host only)" : "");
+                reported_ == kReportsPrinted ? " (further ones go to the host only)" : "");
     std::fflush(stdout);
   }
   outbox_.add(line);
@@ -82,9 +87,9 @@ void CigiFrames::receive(std::vector<cigi::HostDatagram> datagrams, std::uint64_
       apply(waiting_.front());
       waiting_.pop_front();
       ++merged_;
-      outbox_.add("host frame " + std::to_string(state_.last_host_frame()) +
-                  " applied without a frame of its own: more than " + std::to_string(kMaxHostFramesWaiting) +
-                  " host frames waited (synchronous mode: send the next after its Start of Frame)");
+      report("host frame " + std::to_string(state_.last_host_frame()) +
+             " applied without a frame of its own: more than " + std::to_string(kMaxHostFramesWaiting) +
+             " host frames waited (synchronous mode: send the next after its Start of Frame)");
     }
   }
 }
@@ -108,7 +113,7 @@ int CigiFrames::step(Clock::time_point now) {
     return frame(now);
   }
   if (!waiting_.empty()) {
-    const cigi::HostDatagram d = std::move(waiting_.front());
+    cigi::HostDatagram d = std::move(waiting_.front());
     waiting_.pop_front();
     apply(d);
     return frame(now);
@@ -138,7 +143,7 @@ int CigiFrames::frame(Clock::time_point now) {
   update_weather();
   const bool draws = state_.mode() == cigi::IgMode::Operate || state_.mode() == cigi::IgMode::Debug;
   if (draws && !state_.ownship() && !told_no_ownship_) {
-    outbox_.add("no Entity Control of the ownship (entity 0) yet: nothing is drawn");
+    report("no Entity Control of the ownship (entity 0) yet: nothing is drawn");
     told_no_ownship_ = true;
   }
   send_start_of_frame(now);
@@ -154,11 +159,11 @@ void CigiFrames::update_weather() {
   try {
     cigi::CigiWeather w =
         cigi::cigi_weather(state_, lat, lon, renderer_.weather_map_width(), renderer_.weather_map_height());
-    for (std::string& note : w.notes) outbox_.add(std::move(note));
+    for (const std::string& note : w.notes) report(note);
     renderer_.set_forecast(w.weather, std::move(w.map));
     weather_taken_();
   } catch (const std::exception& e) {
-    reject(std::string("the cloud layers cannot be drawn: ") + e.what());
+    report(std::string("the cloud layers cannot be drawn: ") + e.what());
   }
 }
 
@@ -183,7 +188,7 @@ int CigiFrames::render_views(double utc_s) {
       publish(v, pose, img, utc_s, &v == &views.front());
       ++rendered;
     } catch (const std::exception& e) {
-      reject("IG frame " + std::to_string(ig_frame_) + ", view " + std::to_string(v.id) + ": " + e.what());
+      report("IG frame " + std::to_string(ig_frame_) + ", view " + std::to_string(v.id) + ": " + e.what());
     }
   }
   return rendered;
@@ -205,7 +210,7 @@ void CigiFrames::publish(const cigi::View& v, const cigi::ViewPose& pose, const 
                      protocol::SetView{}.shm_format);
     } catch (const std::exception& e) {
       ring_failed_.insert(v.id);
-      reject("view " + std::to_string(v.id) + ": no shared-memory ring: " + e.what());
+      report("view " + std::to_string(v.id) + ": no shared-memory ring: " + e.what());
     }
   }
   if (!options_.out_dir.empty()) {
@@ -218,7 +223,7 @@ void CigiFrames::publish(const cigi::View& v, const cigi::ViewPose& pose, const 
       publish_to_file(img, ig_frame_, file_view, options_.out_dir);
     } catch (const std::exception& e) {
       if (file_failed_.insert(v.id).second)
-        reject("view " + std::to_string(v.id) + ": frame files: " + e.what() + " (said once per view)");
+        report("view " + std::to_string(v.id) + ": frame files: " + e.what() + " (said once per view)");
     }
   }
   if (outputs_.window && first_view) outputs_.window->present(img);

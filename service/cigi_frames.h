@@ -70,13 +70,17 @@ class CigiFrames {
   int step(Clock::time_point now);
 
   std::uint32_t ig_frame() const { return ig_frame_; }
+  // Packets and datagrams of the host not used (lost to the mailbox's bound included).
   std::uint64_t packets_rejected() const { return rejected_; }
   std::uint64_t host_frames_merged() const { return merged_; }
   const cigi::IgState& state() const { return state_; }
 
  private:
   void apply(const cigi::HostDatagram& d);
+  // A packet or datagram not used: counted, then reported.
   void reject(const std::string& line);
+  // An IG Message for the host (and, the first 20, a line on stdout).
+  void report(const std::string& line);
   // One IG frame: Start of Frame, then every view.
   int frame(Clock::time_point now);
   cigi::StartOfFrame start_of_frame() const;
@@ -101,7 +105,7 @@ class CigiFrames {
   std::uint32_t ig_frame_ = 0;              // of the last Start of Frame sent
   Clock::time_point start_, last_sent_, next_async_frame_;
   std::uint64_t weather_generation_ = 0;    // of the state, drawn
-  std::uint64_t rejected_ = 0, merged_ = 0;
+  std::uint64_t rejected_ = 0, reported_ = 0, merged_ = 0;
   bool told_no_ownship_ = false;
   std::set<std::uint16_t> ring_failed_;     // views whose ring could not be made (said once)
   std::set<std::uint16_t> file_failed_;     // views whose file could not be written (said once)

@@ -168,6 +168,7 @@ void RenderLoop::Run::on_cigi(MailboxBatch& batch) {
   loop_.frame_started_ns_.store(steady_ns());
   const int views = cigi_->step(SteadyClock::now());
   loop_.frame_started_ns_.store(0);
+  loop_.cigi_rejections_.store(cigi_->packets_rejected());
   if (views > 0) {
     count_frame();
     stop_after_last_frame();

@@ -43,6 +43,8 @@ class RenderLoop {
 
   std::uint64_t frames_rendered() const { return frames_.load(); }
   double fps() const { return fps_.load(); }
+  // With --cigi: packets and datagrams of the host not used (each answered with an IG Message).
+  std::uint64_t cigi_rejections() const { return cigi_rejections_.load(); }
   // Milliseconds spent so far on the frame being rendered, 0 when none is.
   double frame_in_progress_ms() const;
 
@@ -61,6 +63,7 @@ class RenderLoop {
   ViewRings* view_rings_;
   std::atomic<std::uint64_t> frames_{0};
   std::atomic<double> fps_{0.0};
+  std::atomic<std::uint64_t> cigi_rejections_{0};
   std::atomic<std::int64_t> frame_started_ns_{0};  // steady clock; 0 = idle
 };
 

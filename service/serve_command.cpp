@@ -289,8 +289,9 @@ int run_serve(const ServeOptions& command_line) {
     return 1;
   }
   if (cigi_endpoint)
-    std::printf("cloudsvc serve: CIGI: %llu datagrams received, %llu sent\n",
+    std::printf("cloudsvc serve: CIGI: %llu datagrams received, %llu packets or datagrams not used, %llu datagrams sent\n",
                 static_cast<unsigned long long>(cigi_endpoint->datagrams_received()),
+                static_cast<unsigned long long>(loop->cigi_rejections()),
                 static_cast<unsigned long long>(cigi_endpoint->datagrams_sent()));
   std::printf("cloudsvc serve: stopped after %llu frames\n", static_cast<unsigned long long>(loop->frames_rendered()));
   return 0;

@@ -168,7 +168,8 @@ TEST_F(CliServeOptionsTest, HelpDocumentsEveryFlagWithUnitsRangesDefaultsAndExam
   EXPECT_TRUE(r.err.empty()) << r.err;
   for (const char* text :
        {"--listen", "--shm", "--shm-max-size", "--window", "--out-dir", "--weather", "--cumulus-domes", "--noise-tiling", "--cloud-phase", "--time",
-        "--size", "--fov", "--max-clients", "--exit-after-frames", "tcp://HOST:PORT",
+        "--size", "--fov", "--max-clients", "--exit-after-frames", "tcp://HOST:PORT", "--cigi", "--cigi-host",
+        "--cigi-mode", "--cigi-rate", "udp:HOST:PORT", "NAME-view<ID>",
         "unix:PATH", "[0, 65535]", "107 bytes", "--socket-mode", "--shm-mode", "0600", "--idle-timeout",
         "--max-view-size", "default 3840x2160", "--tile-budget", "Overloaded", "--ready-file", "localhost", "[::1]", "not resolved",
         "exposes the service", "default tcp://127.0.0.1:7420", "1..200", "default 1920x1080",
@@ -355,6 +356,37 @@ TEST_F(CliServeOptionsTest, BadShmNames) {
                                  std::string("x*"), std::string(201, 'n')}) {
     expect_serve_rejected({"--shm", name}, "--shm", name.empty() ? "\"\"" : name);
   }
+}
+
+// --cigi and its companions (docs/CIGI.md): a UDP address (loopback when only a port is
+// given), where answers go, the pacing; the companions only with --cigi.
+TEST_F(CliServeOptionsTest, CigiFlags) {
+  EXPECT_FALSE(serve_with({}).cigi);
+  const ServeOptions o = serve_with({"--cigi", "udp:8000"});
+  ASSERT_TRUE(o.cigi);
+  EXPECT_EQ(o.cigi->listen.host, "127.0.0.1");
+  EXPECT_EQ(o.cigi->listen.port, 8000);
+  EXPECT_FALSE(o.cigi->host);
+  EXPECT_EQ(o.cigi->pacing, CigiPacing::Synchronous);
+  const ServeOptions a = serve_with({"--cigi", "udp:0.0.0.0:0", "--cigi-host", "udp:[::1]:8001", "--cigi-mode", "async",
+                                     "--cigi-rate", "30", "--listen", "tcp://127.0.0.1:0"});
+  ASSERT_TRUE(a.cigi);
+  EXPECT_EQ(a.cigi->listen.host, "0.0.0.0");
+  ASSERT_TRUE(a.cigi->host);
+  EXPECT_EQ(a.cigi->host->text(), "udp:[::1]:8001");
+  EXPECT_EQ(a.cigi->pacing, CigiPacing::Asynchronous);
+  EXPECT_DOUBLE_EQ(a.cigi->rate_hz, 30.0);
+  EXPECT_EQ(a.listen.size(), 1u) << "--cigi goes with --listen";
+
+  expect_serve_rejected({"--cigi", "tcp://127.0.0.1:8000"}, "--cigi", "tcp://127.0.0.1:8000");
+  expect_serve_rejected({"--cigi", "udp:70000"}, "--cigi", "udp:70000");
+  expect_serve_rejected({"--cigi", "udp:8000", "--cigi-host", "udp:0"}, "--cigi-host", "udp:0");
+  expect_serve_rejected({"--cigi", "udp:8000", "--cigi-mode", "lockstep"}, "--cigi-mode", "lockstep");
+  expect_serve_rejected({"--cigi", "udp:8000", "--cigi-rate", "30"}, "--cigi-rate", "only valid with --cigi-mode async");
+  expect_serve_rejected({"--cigi", "udp:8000", "--cigi-mode", "async", "--cigi-rate", "0"}, "--cigi-rate", "0");
+  expect_serve_rejected({"--cigi-mode", "async"}, "--cigi-mode", "only valid together with --cigi");
+  expect_serve_rejected({"--cigi-host", "udp:1.2.3.4:5"}, "--cigi-host", "only valid together with --cigi");
+  expect_serve_rejected({"--cigi", "udp:8000", "--shm", std::string(195, 'n')}, "--shm", "-view<ID>");
 }
 
 TEST_F(CliServeOptionsTest, BadShmSizes) {

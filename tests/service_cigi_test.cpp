@@ -177,6 +177,42 @@ TEST(CigiService, BadDatagramsAreAnsweredWithIgMessagesAndTheIgGoesOn) {
   EXPECT_NE(read_text_file(svc.log_path()).find("cloudsvc serve: CIGI: "), std::string::npos);
 }
 
+// A host that floods a synchronous IG (it should wait for each Start of Frame) neither
+// stalls it nor grows its queue: beyond 64 waiting host frames the oldest are applied
+// without a frame of their own, and an IG Message says so.
+TEST(CigiService, AFloodOfHostFramesIsAppliedWithoutStallingTheIg) {
+  ServiceProcess svc("cigi_flood", {"--cigi", "udp:0"}, ServiceProcess::Tcp::No, ServiceProcess::OutDir::Yes);
+  ASSERT_TRUE(svc.running());
+  cli::UdpEndpoint ig;
+  ASSERT_FALSE(cli::udp_endpoint_problem(cigi_address(svc), cli::PortUse::Connect, ig));
+  sim::CigiHostLink link(ig);
+  cigi::EntityControl ownship;
+  ownship.lat_deg = 47.45;
+  ownship.lon_deg = 8.56;
+  ownship.alt_m = 3000.0;
+  constexpr std::uint32_t kFrames = 200;  // within a socket's receive buffer
+  for (std::uint32_t n = 1; n <= kFrames; ++n) {
+    cigi::IgControl control;
+    control.host_frame = n;
+    cigi::DatagramWriter w;
+    w.add(control);
+    w.add(ownship);
+    link.send(w.bytes());
+  }
+  std::string seen;
+  EXPECT_TRUE(message_arrives(link, "applied without a frame of its own", seen)) << seen;
+  // The IG goes on: a Start of Frame for the newest host frame that arrived comes, well
+  // before the 200 frames could have been drawn one by one.
+  std::uint32_t last_host_frame = 0;
+  const auto deadline = std::chrono::steady_clock::now() + 120s;
+  while (auto d = link.receive(deadline)) {
+    if (d->usable) last_host_frame = std::max(last_host_frame, d->start_of_frame.last_host_frame);
+    if (last_host_frame >= kFrames - 64) break;
+  }
+  EXPECT_GE(last_host_frame, kFrames - 64);
+  EXPECT_EQ(svc.stop(), 0);
+}
+
 TEST(CigiService, AnAsynchronousIgRendersAtItsOwnRateFromTheNewestState) {
   ServiceProcess svc("cigi_async", {"--cigi", "udp:0", "--cigi-mode", "async", "--cigi-rate", "20"},
                      ServiceProcess::Tcp::No, ServiceProcess::OutDir::Yes);

@@ -117,7 +117,13 @@ Endpoint parse_endpoint(std::string_view flag, const std::string& text, PortUse 
 
 std::string UdpEndpoint::text() const {
   const bool v6 = host.find(':') != std::string::npos;
-  return std::string(kUdpScheme) + (v6 ? "[" + host + "]" : host) + ":" + std::to_string(port);
+  std::string t(kUdpScheme);  // appended piecewise: GCC 12 warns (-Wrestrict) on a + chain here
+  if (v6) t += '[';
+  t += host;
+  if (v6) t += ']';
+  t += ':';
+  t += std::to_string(port);
+  return t;
 }
 
 std::optional<std::string> udp_endpoint_problem(std::string_view text, PortUse use, UdpEndpoint& out) {

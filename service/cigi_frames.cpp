@@ -28,8 +28,6 @@ constexpr auto kResendAfter = std::chrono::duration_cast<CigiFrames::Clock::dura
 constexpr auto kMessagesAfter = std::chrono::duration_cast<CigiFrames::Clock::duration>(100ms);
 // Problems also printed on stdout, for the operator: the first this many.
 constexpr std::uint64_t kReportsPrinted = 20;
-// Start of Frame timestamps: ticks of 10 µs (wrapping after 11.9 hours).
-constexpr double kTicksPerSecond = 1e5;
 
 }  // namespace
 
@@ -129,7 +127,7 @@ cigi::StartOfFrame CigiFrames::start_of_frame() const {
   sof.last_host_frame = state_.last_host_frame();
   sof.timestamp_valid = true;
   const double seconds = std::chrono::duration<double>(Clock::now() - start_).count();
-  sof.timestamp = static_cast<std::uint32_t>(static_cast<std::uint64_t>(seconds * kTicksPerSecond));
+  sof.timestamp = static_cast<std::uint32_t>(static_cast<std::uint64_t>(seconds * cigi::kTimestampTicksPerSecond));
   return sof;
 }
 
@@ -198,15 +196,11 @@ void CigiFrames::publish(const cigi::View& v, const cigi::ViewPose& pose, const 
                          bool first_view) {
   const std::lock_guard publishing(*outputs_.publish_mutex);
   if (outputs_.rings && !ring_failed_.contains(v.id)) {
-    protocol::Pose p;
-    p.lat_deg = pose.position.lat_deg;
-    p.lon_deg = pose.position.lon_deg;
-    p.alt_m = pose.position.alt_m;
-    p.heading_deg = pose.attitude.heading_deg;
-    p.pitch_deg = pose.attitude.pitch_deg;
-    p.roll_deg = pose.attitude.roll_deg;
     try {
-      publish_to_shm(outputs_.rings->ring(v.id), img, shm_frame_meta(ig_frame_, p, utc_s, img),
+      // sim time: the host's timestamp of the frame, 0 when it gave none
+      const double sim_time_s = state_.host_timestamp_s().value_or(0.0);
+      publish_to_shm(outputs_.rings->ring(v.id), img,
+                     shm_frame_meta(ig_frame_, sim_time_s, utc_s, pose.position, pose.attitude, img),
                      protocol::SetView{}.shm_format);
     } catch (const std::exception& e) {
       ring_failed_.insert(v.id);

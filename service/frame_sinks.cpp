@@ -10,10 +10,16 @@
 namespace cloudsvc {
 
 ShmFrameMeta shm_frame_meta(std::uint64_t frame, const protocol::Pose& pose, double utc_s, const FrameImage& img) {
+  return shm_frame_meta(frame, pose.sim_time_s, utc_s, {pose.lat_deg, pose.lon_deg, pose.alt_m},
+                        {pose.heading_deg, pose.pitch_deg, pose.roll_deg}, img);
+}
+
+ShmFrameMeta shm_frame_meta(std::uint64_t frame, double sim_time_s, double utc_s, const geo::Geodetic& position,
+                            const geo::Attitude& attitude, const FrameImage& img) {
   return ShmFrameMeta{frame,
-                      pose.sim_time_s,  utc_s,
-                      pose.lat_deg,     pose.lon_deg,   pose.alt_m,
-                      pose.heading_deg, pose.pitch_deg, pose.roll_deg,
+                      sim_time_s,           utc_s,
+                      position.lat_deg,     position.lon_deg,   position.alt_m,
+                      attitude.heading_deg, attitude.pitch_deg, attitude.roll_deg,
                       img.stats.render_ms};
 }
 

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <string>
 
+#include "geodesy/geodetic.h"
 #include "protocol/messages.h"
 #include "renderer/api/frame_image.h"
 #include "protocol/shm/shm_frame_writer.h"
@@ -13,6 +14,9 @@ namespace cloudsvc {
 
 // The slot header of a frame rendered for `pose` at `utc_s`.
 ShmFrameMeta shm_frame_meta(std::uint64_t frame, const protocol::Pose& pose, double utc_s, const FrameImage& img);
+// ... for an eye at `position` with `attitude` (a CIGI view), at sim time `sim_time_s`.
+ShmFrameMeta shm_frame_meta(std::uint64_t frame, double sim_time_s, double utc_s, const geo::Geodetic& position,
+                            const geo::Attitude& attitude, const FrameImage& img);
 
 // Encodes the frame in `format` (RGBA16F linear or RGBA8 sRGB) and writes it to the next
 // slot of the ring; returns the slot. Throws what ShmFrameWriter::write throws.

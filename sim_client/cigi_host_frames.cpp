@@ -93,7 +93,7 @@ std::vector<std::uint8_t> host_datagram(const HostFrame& f, cigi::ByteOrder orde
   ig.host_frame = f.host_frame;
   ig.last_ig_frame = f.last_ig_frame;
   ig.timestamp_valid = true;
-  ig.timestamp = static_cast<std::uint32_t>(static_cast<std::uint64_t>(std::llround(f.pose.sim_time_s * 1e5)));
+  ig.timestamp = static_cast<std::uint32_t>(static_cast<std::uint64_t>(std::llround(f.pose.sim_time_s * cigi::kTimestampTicksPerSecond)));
   w.add(ig);
   if (f.views)
     for (const cigi::ViewDefinition& d : *f.views) {

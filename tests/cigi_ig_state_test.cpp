@@ -95,6 +95,26 @@ TEST(CigiIgState, OwnshipTimeAndAtmosphere) {
   EXPECT_EQ(s.datagrams(), 2u);
 }
 
+// The host's frame number and timestamp (the shared-memory slot's sim time) follow its last
+// IG Control; a timestamp it marks invalid is none.
+TEST(CigiIgState, HostFrameAndTimestamp) {
+  IgState s;
+  EXPECT_FALSE(s.host_timestamp_s());
+  DatagramWriter w;
+  IgControl c;
+  c.host_frame = 41;
+  c.timestamp_valid = true;
+  c.timestamp = 1234567;  // 12.34567 s
+  w.add(c);
+  s.apply(read_host_datagram(w.bytes()));
+  EXPECT_EQ(s.last_host_frame(), 41u);
+  ASSERT_TRUE(s.host_timestamp_s());
+  EXPECT_DOUBLE_EQ(*s.host_timestamp_s(), 12.34567);
+  s.apply(host_datagram({}, 42));  // timestamp not valid
+  EXPECT_EQ(s.last_host_frame(), 42u);
+  EXPECT_FALSE(s.host_timestamp_s());
+}
+
 TEST(CigiIgState, GlobalAndRegionalCloudLayers) {
   IgState s;
   const std::uint64_t g0 = s.weather_generation();

@@ -29,6 +29,12 @@ std::string cigi_address(const ServiceProcess& svc) {
   return "";
 }
 
+cli::UdpEndpoint cigi_endpoint(const ServiceProcess& svc) {
+  cli::UdpEndpoint ig;
+  EXPECT_FALSE(cli::udp_endpoint_problem(cigi_address(svc), cli::PortUse::Connect, ig));
+  return ig;
+}
+
 // A short log above scattered cumulus: 3000 m, level (a view yawed in the body axes of a
 // pitched aircraft would not be a level view turned).
 fs::path write_log(const fs::path& dir, double heading_deg) {
@@ -134,9 +140,7 @@ bool message_arrives(sim::CigiHostLink& link, const std::string& needle, std::st
 TEST(CigiService, BadDatagramsAreAnsweredWithIgMessagesAndTheIgGoesOn) {
   ServiceProcess svc("cigi_bad", {"--cigi", "udp:0"}, ServiceProcess::Tcp::No, ServiceProcess::OutDir::Yes);
   ASSERT_TRUE(svc.running());
-  cli::UdpEndpoint ig;
-  ASSERT_FALSE(cli::udp_endpoint_problem(cigi_address(svc), cli::PortUse::Connect, ig));
-  sim::CigiHostLink link(ig);
+  sim::CigiHostLink link(cigi_endpoint(svc));
   std::string seen;
 
   link.send({1, 2, 3, 4, 5});  // shorter than an IG Control
@@ -183,9 +187,7 @@ TEST(CigiService, BadDatagramsAreAnsweredWithIgMessagesAndTheIgGoesOn) {
 TEST(CigiService, AFloodOfHostFramesIsAppliedWithoutStallingTheIg) {
   ServiceProcess svc("cigi_flood", {"--cigi", "udp:0"}, ServiceProcess::Tcp::No, ServiceProcess::OutDir::Yes);
   ASSERT_TRUE(svc.running());
-  cli::UdpEndpoint ig;
-  ASSERT_FALSE(cli::udp_endpoint_problem(cigi_address(svc), cli::PortUse::Connect, ig));
-  sim::CigiHostLink link(ig);
+  sim::CigiHostLink link(cigi_endpoint(svc));
   cigi::EntityControl ownship;
   ownship.lat_deg = 47.45;
   ownship.lon_deg = 8.56;

@@ -15,6 +15,8 @@ std::vector<std::string> IgState::apply(const HostDatagram& d) {
   ++datagrams_;
   mode_ = d.ig_control.mode;
   last_host_frame_ = d.ig_control.host_frame;
+  host_timestamp_s_.reset();
+  if (d.ig_control.timestamp_valid) host_timestamp_s_ = d.ig_control.timestamp / kTimestampTicksPerSecond;
   for (const HostPacket& p : d.packets)
     if (std::optional<std::string> problem = apply(p)) refused.push_back(*problem);
   return refused;

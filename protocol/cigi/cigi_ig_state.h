@@ -67,6 +67,8 @@ class IgState {
 
   IgMode mode() const { return mode_; }
   std::uint32_t last_host_frame() const { return last_host_frame_; }
+  // The last IG Control's timestamp, s (its ticks of 10 µs), when it said it was valid.
+  const std::optional<double>& host_timestamp_s() const { return host_timestamp_s_; }
   std::uint64_t datagrams() const { return datagrams_; }
   const std::optional<OwnshipPose>& ownship() const { return ownship_; }
   // The views by id; view 0 with the default frustum when the host has defined none.
@@ -85,6 +87,7 @@ class IgState {
   ViewFrustum default_frustum_;
   IgMode mode_ = IgMode::Standby;
   std::uint32_t last_host_frame_ = 0;
+  std::optional<double> host_timestamp_s_;
   std::uint64_t datagrams_ = 0;
   std::optional<OwnshipPose> ownship_;
   std::map<std::uint16_t, View> views_;

@@ -16,6 +16,8 @@ inline constexpr std::uint8_t kMajorVersion = 3;
 inline constexpr std::uint8_t kMinorVersion = 3;       // what this IG sends (CIGI 3.3)
 inline constexpr std::uint8_t kOldestMinorVersion = 2;  // 3.2 has the same IG Control and SOF
 inline constexpr std::uint16_t kByteSwapMagic = 0x8000;
+// IG Control and Start of Frame timestamps count ticks of 10 µs (a u32: 11.9 hours, then wraps).
+inline constexpr double kTimestampTicksPerSecond = 1e5;
 
 // Opcodes (the first byte of every packet; the second is the packet's size in bytes).
 namespace opcode {

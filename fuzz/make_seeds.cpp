@@ -9,7 +9,8 @@
 //                      bytes are a valid input; these give it a start beyond the empty one);
 //   simclient_map_image  small images (seed_images.h);
 //   cigi_datagram      CIGI host datagrams (IG Control with every honoured packet, in
-//                      both byte orders, and one cut short) and an IG datagram.
+//                      both byte orders, and one cut short) and an IG datagram;
+//   cigi_state         sequences of host datagrams with an ownship, views and layers.
 // The build runs it into build-san/fuzz/seeds (fuzz/CMakeLists.txt).
 #include <cstdint>
 #include <cstdio>
@@ -151,6 +152,43 @@ void write_cigi_seeds(const fs::path& root) {
   }
 }
 
+// cigi_state: sequences of host datagrams (one after another, as the IG receives them)
+// that give an ownship, three views, global layers and a region with its own layers.
+void write_cigi_state_seeds(const fs::path& root) {
+  using namespace cloudsvc::cigi;
+  const fs::path dir = fresh_dir(root, "cigi_state");
+  for (ByteOrder order : {ByteOrder::Big, ByteOrder::Little}) {
+    const std::string suffix = order == ByteOrder::Big ? "-big" : "-little";
+    Bytes sequence;
+    for (std::uint32_t frame = 1; frame <= 2; ++frame) {
+      DatagramWriter w(order);
+      IgControl c;
+      c.host_frame = frame;
+      w.add(c);
+      EntityControl e;
+      e.lat_deg = 47.45 + 0.01 * frame, e.lon_deg = 8.56, e.alt_m = 3000.0, e.yaw_deg = 90.0f, e.pitch_deg = -5.0f;
+      w.add(e);
+      for (std::uint16_t id = 0; id < 3; ++id) {
+        ViewControl vc;
+        vc.view_id = id, vc.enable = view_enable::kYaw | view_enable::kY, vc.yaw_deg = 60.0f * (id - 1), vc.y_m = id;
+        w.add(vc);
+      }
+      EnvironmentalRegionControl r;
+      r.region_id = 7, r.lat_deg = 47.5, r.lon_deg = 8.6, r.size_x_m = 20000.0f, r.size_y_m = 10000.0f;
+      r.corner_radius_m = 2000.0f, r.rotation_deg = 30.0f, r.transition_perimeter_m = 5000.0f;
+      w.add(r);
+      WeatherControl global;
+      w.add(global);
+      WeatherControl regional = global;
+      regional.scope = WeatherScope::Regional, regional.entity_or_region_id = 7, regional.layer_id = 2;
+      regional.base_elevation_m = 1500.0f, regional.coverage_pct = 90.0f;
+      w.add(regional);
+      sequence.insert(sequence.end(), w.bytes().begin(), w.bytes().end());
+    }
+    write_file(dir / ("sequence" + suffix), sequence);
+  }
+}
+
 int main(int argc, char** argv) {
   if (argc != 2) {
     std::fprintf(stderr, "usage: %s <seed-dir>\n", argv[0]);
@@ -162,6 +200,7 @@ int main(int argc, char** argv) {
     write_framing_seeds(root);
     write_session_seeds(root);
     write_cigi_seeds(root);
+    write_cigi_state_seeds(root);
     write_random_seeds(root, "protocol_validate", 0x2545f491u);
     write_random_seeds(root, "weather_timeline", 0x9e3779b9u);
     fuzz::write_seed_images(fresh_dir(root, "simclient_map_image"));

@@ -150,10 +150,15 @@ int CigiFrames::frame(Clock::time_point now) {
 }
 
 void CigiFrames::update_weather() {
-  if (state_.weather_generation() == weather_generation_) return;
-  weather_generation_ = state_.weather_generation();
+  if (state_.weather_generation() == 0) return;  // no cloud layers from the host: --weather's
   const double lat = state_.ownship() ? state_.ownship()->lat_deg : 0.0;
   const double lon = state_.ownship() ? state_.ownship()->lon_deg : 0.0;
+  // Made again when the layers change, or when the ownship comes nearer another region
+  // that defines a layer (the layers' types and altitudes are the nearest region's).
+  cigi::CloudLayerSet defining = cigi::defining_layers(state_, lat, lon);
+  if (state_.weather_generation() == weather_generation_ && defining == defining_layers_) return;
+  weather_generation_ = state_.weather_generation();
+  defining_layers_ = std::move(defining);
   try {
     cigi::CigiWeather w =
         cigi::cigi_weather(state_, lat, lon, renderer_.weather_map_width(), renderer_.weather_map_height());

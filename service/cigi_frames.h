@@ -105,6 +105,7 @@ class CigiFrames {
   std::uint32_t ig_frame_ = 0;              // of the last Start of Frame sent
   Clock::time_point start_, last_sent_, next_async_frame_;
   std::uint64_t weather_generation_ = 0;    // of the state, drawn
+  cigi::CloudLayerSet defining_layers_;     // near the ownship, drawn (cigi::defining_layers)
   std::uint64_t rejected_ = 0, reported_ = 0, merged_ = 0;
   bool told_no_ownship_ = false;
   std::set<std::uint16_t> ring_failed_;     // views whose ring could not be made (said once)

@@ -137,5 +137,34 @@ TEST(CigiWeather, ALayerOnlyInARegionAndOverlappingLayers) {
   EXPECT_NEAR(slot_at(w.map, 0, 10.0, 110.0), 0.5, 1e-6);
 }
 
+// Two regions define layer 1 differently (stratocumulus in the west, cumulus in the east): the
+// layer's type and altitudes are the nearer region's, so the weather drawn must change as
+// the ownship flies from one to the other; a global layer 1 wins everywhere.
+TEST(CigiWeather, TheDefiningLayerIsTheNearerRegionsUnlessAGlobalOneIsGiven) {
+  IgState s;
+  EnvironmentalRegionControl west = region(46.0, 6.0, 30000.0f, 30000.0f, 0.0f);
+  west.region_id = 1;
+  EnvironmentalRegionControl east = region(46.0, 8.0, 30000.0f, 30000.0f, 0.0f);
+  east.region_id = 2;
+  WeatherControl stratocumulus = layer(1, 9, 400.0f, 500.0f, 100.0f);
+  stratocumulus.scope = WeatherScope::Regional;
+  stratocumulus.entity_or_region_id = west.region_id;
+  WeatherControl cumulus = layer(1, 7, 1200.0f, 1500.0f, 40.0f);
+  cumulus.scope = WeatherScope::Regional;
+  cumulus.entity_or_region_id = east.region_id;
+  EXPECT_TRUE(s.apply(host_datagram({west, east, stratocumulus, cumulus})).empty());
+  const CloudLayerSet near_west = defining_layers(s, 46.0, 6.2), near_east = defining_layers(s, 46.0, 7.9);
+  ASSERT_TRUE(near_west[0] && near_east[0]);
+  EXPECT_EQ(near_west[0]->cloud_type, 9);
+  EXPECT_EQ(near_east[0]->cloud_type, 7);
+  EXPECT_FALSE(near_west[1] || near_west[2]);
+  EXPECT_EQ(cigi_weather(s, 46.0, 6.2, 64, 32).weather.layers.at(0).base_m, 400.0);
+  EXPECT_EQ(cigi_weather(s, 46.0, 7.9, 64, 32).weather.layers.at(0).base_m, 1200.0);
+  const WeatherControl global = layer(1, 5, 3000.0f, 800.0f, 60.0f);
+  EXPECT_TRUE(s.apply(host_datagram({global})).empty());
+  EXPECT_EQ(defining_layers(s, 46.0, 6.2), defining_layers(s, 46.0, 7.9));
+  EXPECT_EQ(defining_layers(s, 46.0, 7.9)[0]->cloud_type, 5);
+}
+
 }  // namespace
 }  // namespace cloudsvc::cigi

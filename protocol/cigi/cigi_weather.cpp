@@ -76,14 +76,21 @@ double region_weight(const EnvironmentalRegionControl& r, double lat_deg, double
   return 1.0 - outside / r.transition_perimeter_m;
 }
 
+CloudLayerSet defining_layers(const IgState& state, double near_lat_deg, double near_lon_deg) {
+  CloudLayerSet out;
+  for (int k = 0; k < 3; ++k) out[static_cast<std::size_t>(k)] = defining_layer(state, k, near_lat_deg, near_lon_deg);
+  return out;
+}
+
 CigiWeather cigi_weather(const IgState& state, double near_lat_deg, double near_lon_deg, int width, int height) {
   CigiWeather out;
   out.weather.name = "CIGI";
   // Layers 1..3, each from its defining Weather Control. The thickest keep their altitudes;
   // a thinner one keeps the largest part of its own that no thicker one holds.
   std::vector<weather::CloudLayer> candidates;
+  const CloudLayerSet defining = defining_layers(state, near_lat_deg, near_lon_deg);
   for (int k = 0; k < 3; ++k)
-    if (const auto w = defining_layer(state, k, near_lat_deg, near_lon_deg)) candidates.push_back(renderer_layer(*w, k));
+    if (const auto& w = defining[static_cast<std::size_t>(k)]) candidates.push_back(renderer_layer(*w, k));
   std::stable_sort(candidates.begin(), candidates.end(),
                    [](const auto& a, const auto& b) { return a.top_m - a.base_m > b.top_m - b.base_m; });
   std::vector<weather::CloudLayer> layers;

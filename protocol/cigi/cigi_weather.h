@@ -38,4 +38,9 @@ struct CigiWeather {
 // outside it, or dropped when less than 10 m is left (a note says which).
 CigiWeather cigi_weather(const IgState& state, double near_lat_deg, double near_lon_deg, int width, int height);
 
+// The Weather Control that gives layer id k + 1 its type, altitudes and wind near a point:
+// the global one, else the nearest region's that has the layer, else none. The weather drawn
+// near the ownship must be made again when this changes (it flew nearer another region).
+CloudLayerSet defining_layers(const IgState& state, double near_lat_deg, double near_lon_deg);
+
 }  // namespace cloudsvc::cigi

@@ -191,7 +191,8 @@ void add_endpoint_flags(CLI::App& cmd, ServeCommandLine::Args& args, const Serve
       ->type_name("MIB");
   cmd.add_option("--ready-file", args.ready_file,
                  "Once every listener is bound, write the bound addresses (one per line, with the "
-                 "port the kernel chose for tcp://HOST:0) to this file, atomically; default none")
+                 "port the kernel chose for tcp://HOST:0; with --cigi its udp:HOST:PORT last) to this file, "
+                 "atomically; default none")
       ->type_name("PATH");
   cmd.add_option("--max-clients", args.max_clients,
                  "Most clients connected at the same time, integer in [" +

@@ -9,6 +9,7 @@
 
 #include "protocol/cigi/cigi_view_pose.h"
 #include "protocol/cigi/cigi_weather.h"
+#include "renderer/api/view_request.h"
 #include "renderer/cloud_renderer.h"
 #include "renderer/quality_presets.h"
 #include "service/frame_mailbox.h"
@@ -35,16 +36,20 @@ CigiFrames::CigiFrames(const ServeOptions& options, CloudRenderer& renderer, Out
                        std::function<void()> weather_taken)
     : options_(options), renderer_(renderer), outputs_(outputs), send_(std::move(send)),
       weather_taken_(std::move(weather_taken)),
-      state_(cigi::ViewFrustum{static_cast<float>(-0.5 * options.fov_deg), static_cast<float>(0.5 * options.fov_deg),
-                               static_cast<float>(image_window_half_angle_deg(options)),
-                               static_cast<float>(-image_window_half_angle_deg(options))}),
+      state_(default_frustum(options)),
       host_known_(options.cigi && options.cigi->host), start_(Clock::now()), last_sent_(start_),
       next_async_frame_(start_) {}
 
-double CigiFrames::image_window_half_angle_deg(const ServeOptions& o) {
+cigi::ViewFrustum CigiFrames::default_frustum(const ServeOptions& o) {
+  // The symmetric view of --fov and --size the renderer draws without a frustum.
+  ViewRequest r;
+  r.fov_deg = o.fov_deg;
+  r.width = o.width;
+  r.height = o.height;
+  const ImageWindow w = image_window(r);
   constexpr double kDeg = 180.0 / 3.14159265358979323846;
-  const double half_x = std::tan(0.5 * o.fov_deg / kDeg);
-  return std::atan(half_x * o.height / o.width) * kDeg;
+  const auto half_x = static_cast<float>(std::atan(w.half_x) * kDeg), half_y = static_cast<float>(std::atan(w.half_y) * kDeg);
+  return cigi::ViewFrustum{-half_x, half_x, half_y, -half_y};
 }
 
 void CigiFrames::reject(const std::string& line) {

@@ -88,9 +88,8 @@ class CigiFrames {
   void update_weather();
   int render_views(double utc_s);
   void publish(const cigi::View& v, const cigi::ViewPose& pose, const FrameImage& img, double utc_s, bool first_view);
-  // The vertical half-angle of a --fov wide view of --size's aspect (square pixels), degrees:
-  // the frustum of a view the host has not defined.
-  static double image_window_half_angle_deg(const ServeOptions& o);
+  // The frustum of a view the host has not defined: --fov wide, --size's aspect (square pixels).
+  static cigi::ViewFrustum default_frustum(const ServeOptions& o);
 
   const ServeOptions& options_;
   CloudRenderer& renderer_;

@@ -34,7 +34,7 @@ struct CigiArgs {
   bool skip_out_of_order = false;
 };
 
-struct CigiOptions {
+struct HostOptions {
   cli::UdpEndpoint ig;
   cigi::ByteOrder order = cigi::kNativeOrder;
   bool synchronous = true;
@@ -46,10 +46,10 @@ struct CigiOptions {
   std::chrono::milliseconds frame_timeout{120000};
 };
 
-CigiOptions validate(const CigiArgs& a) {
+HostOptions validate(const CigiArgs& a) {
   if (a.log.empty() == a.sweep.empty())
     throw UsageError(a.log.empty() ? "give a flight log (LOG) or --sweep FILE" : "give a flight log or --sweep, not both");
-  CigiOptions o;
+  HostOptions o;
   if (a.ig.empty()) cli::fail("--ig", a.ig, "required: the IG's address, udp:HOST:PORT (cloudsvc serve --cigi)");
   o.ig = cli::parse_udp_endpoint("--ig", a.ig, cli::PortUse::Connect);
   if (a.byte_order == "big") o.order = cigi::ByteOrder::Big;
@@ -94,7 +94,7 @@ std::string order_name(cigi::ByteOrder o) { return o == cigi::ByteOrder::Big ? "
 
 class CigiHost {
  public:
-  CigiHost(const CigiOptions& o, std::vector<protocol::Pose> poses, std::vector<const weather::Weather*> weathers)
+  CigiHost(const HostOptions& o, std::vector<protocol::Pose> poses, std::vector<const weather::Weather*> weathers)
       : o_(o), poses_(std::move(poses)), weathers_(std::move(weathers)), link_(o.ig),
         views_(side_by_side_views(o.views, o.fov_deg, o.aspect)) {
     if (o_.weather) weathers_.assign(poses_.size(), &*o_.weather);  // --weather: every frame's
@@ -133,7 +133,7 @@ class CigiHost {
       f.view_hfov_deg = o_.fov_deg;
     }
     const weather::Weather* w = i < weathers_.size() ? weathers_[i] : nullptr;
-    if (w && (i == 0 || w != weather_sent_)) {
+    if (w && w != weather_sent_) {  // the first frame's, then each change
       f.weather = w;
       weather_sent_ = w;
     }
@@ -167,7 +167,7 @@ class CigiHost {
   // of an older host frame (the IG sent its last again: it has not had ours) sends ours again.
   void wait_start_of_frame(std::uint32_t n, const std::vector<std::uint8_t>& datagram) {
     const auto deadline = Clock::now() + o_.frame_timeout;
-    while (last_host_frame_seen_ < n || sofs_ == 0) {
+    while (last_host_frame_seen_ < n) {
       const std::size_t before = sofs_;
       if (!take(deadline))
         throw RunError("no Start of Frame for host frame " + std::to_string(n) + " within --frame-timeout (is "
@@ -187,7 +187,7 @@ class CigiHost {
       if (!take(due)) break;
   }
 
-  const CigiOptions& o_;
+  const HostOptions& o_;
   std::vector<protocol::Pose> poses_;
   std::vector<const weather::Weather*> weathers_;
   CigiHostLink link_;
@@ -242,7 +242,7 @@ Command add_cigi_command(CLI::App& app) {
               "\nExample: cloudsvc serve --cigi udp:8000 --out-dir frames/ & sim_client cigi flight.igc --ig "
               "udp:127.0.0.1:8000 --views 3 --byte-order big");
   return {cmd, [args]() -> int {
-            const CigiOptions o = validate(*args);
+            const HostOptions o = validate(*args);
             std::vector<protocol::Pose> poses;
             std::vector<const weather::Weather*> weathers;
             std::optional<SweepPlan> plan;

@@ -7,7 +7,7 @@
 // settings so that estimator changes can be compared on the scenes that need them.
 //
 // Usage: truth_scene_probe [--scenes random:2026:32] [--scene 8] [--size 16x9] [--spp 32]
-//          [--max-collisions 20000] [--guiding 0.3] [--max-copies 64] [--seed 1]
+//          [--max-collisions 20000] [--guiding 0.3] [--max-copies 64] [--twilight-floor 2e-4] [--seed 1]
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -41,6 +41,9 @@ int main(int argc, char** argv) {
   app.add_option("--guide-depth", settings.tracer.guide_depth,
                  "copies only where the cloud optical depth towards the sun is below this (inf = anywhere)")
       ->check(CLI::Range(0.0, std::numeric_limits<double>::infinity()));
+  app.add_option("--twilight-floor", settings.tracer.twilight_air_floor,
+                 "least air majorant of a path's flights at twilight, 1/m (0 = off)")
+      ->check(CLI::NonNegativeNumber);
   app.add_option("--guide-cell", settings.tracer.guide_cell_m, "cell size of the sun-depth gate, m")
       ->check(CLI::PositiveNumber);
   CLI11_PARSE(app, argc, argv);

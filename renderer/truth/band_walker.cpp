@@ -8,8 +8,9 @@
 
 namespace cloudsvc::truth {
 
-BandWalker::BandWalker(const TruthWorld& world, const glm::dvec3& x0, const glm::dvec3& w, double air_scale)
-    : world_(world), x0_(x0), w_(w), air_scale_(air_scale) {
+BandWalker::BandWalker(const TruthWorld& world, const glm::dvec3& x0, const glm::dvec3& w, double air_scale,
+                       double air_floor)
+    : world_(world), x0_(x0), w_(w), air_scale_(air_scale), air_floor_(air_floor) {
   const double r = glm::length(x0);
   h0_ = r - world.radius_m;
   mu_ = std::clamp(glm::dot(x0, w) / r, -1.0, 1.0);
@@ -52,7 +53,7 @@ void BandWalker::find_segment() {
     next_band_ = band_ - 1;
   }
   const std::size_t b = static_cast<std::size_t>(band_);
-  const double air = air_scale_ * world_.band_air_majorant[b];
+  const double air = std::max(air_floor_, air_scale_ * world_.band_air_majorant[b]);
   double cloud = world_.band_majorant[b] - world_.band_air_majorant[b];
   if (world_.local && world_.band_local[b] && cloud > 0.0) {
     if (seg_end_ - t_ > world_.local_stretch_m) {

@@ -27,9 +27,12 @@ class BandWalker {
  public:
   enum class End { None, Ground, Top };
 
-  // majorant_scale multiplies the air's part of each band's majorant (>= 1; more
-  // tentative collisions on camera rays, where they carry next-event estimates).
-  BandWalker(const TruthWorld& world, const glm::dvec3& x0, const glm::dvec3& w, double air_scale = 1.0);
+  // air_scale multiplies the air's part of each band's majorant (>= 1; more tentative
+  // collisions on camera rays, where they carry next-event estimates); air_floor (1/m,
+  // >= 0) is the least value of that part in every band (next events in the thin, sunlit
+  // upper air at twilight).
+  BandWalker(const TruthWorld& world, const glm::dvec3& x0, const glm::dvec3& w, double air_scale = 1.0,
+             double air_floor = 0.0);
 
   // Moves to the next tentative collision at majorant optical depth tau (> 0) ahead;
   // returns its distance and sets majorant, or returns infinity once the ray has hit the
@@ -46,7 +49,7 @@ class BandWalker {
   glm::dvec3 x0_, w_;           // the ray
   double h0_ = 0.0, mu_ = 0.0;  // start altitude and zenith cosine of the ray
   double seg_majorant_ = 0.0;
-  double air_scale_ = 1.0;
+  double air_scale_ = 1.0, air_floor_ = 0.0;
   int band_ = 0;                 // current band; -1 = ground, size = above the top
   double t_ = 0.0;               // current distance
   double seg_end_ = 0.0;         // where the ray leaves band_

@@ -37,6 +37,7 @@ PathTracer::PathTracer(const TruthWorld& world, const TracerSettings& settings, 
   disk_ = sun_on_ && sun_solid_angle_ > 0.0;
   if (disk_) sun_radiance_ = world.sun_irradiance / sun_solid_angle_;
   for (const model::JdDParams& p : world.cloud_phase) guide_g_ = std::max(guide_g_, p.g_hg);
+  if (sun_on_ && world.sun.z < 0.0) air_floor_ = settings.twilight_air_floor;
   for (std::size_t b = 0; b < world.band_majorant.size(); ++b)
     if (world.band_majorant[b] > world.band_air_majorant[b]) cloud_top_m_ = world.band_edges[b + 1];
 }
@@ -122,19 +123,28 @@ bool PathTracer::copies_allowed() const {
   return disk_ && guide_g_ > 0.0 && settings_.sun_guiding > 0.0 && copies_made_ < settings_.max_copies;
 }
 
+bool PathTracer::meets_ground(const glm::dvec3& x, const glm::dvec3& w) const {
+  const double ground_r = world_.radius_m + world_.ground_alt_m;
+  const double xw = glm::dot(x, w);
+  return xw < 0.0 && glm::dot(x, x) - xw * xw < ground_r * ground_r;
+}
+
 bool PathTracer::sun_shallow(const glm::dvec3& y) const {
+  if (meets_ground(y, world_.sun)) return false;  // the planet's shadow (twilight): no cell needed
   return !std::isfinite(settings_.guide_depth) || sun_depth_.depth(y) < settings_.guide_depth;
 }
 
 double PathTracer::guiding_at(const glm::dvec3& y, double altitude_m, const MediumPoint& m) const {
   // A function of the vertex and of the path's history (the copies made so far), as the
   // MIS weights at a vertex may be: while the camera path has made fewer than max_copies
-  // copies; in cloud where the sun is not buried under more than guide_depth of cloud; in
-  // air below the highest cloud top (a path scattered there by air towards the sun may
+  // copies; in cloud where the sun is not buried under more than guide_depth of cloud or
+  // behind the planet; in air below the highest cloud top where the sun is above the
+  // planet's horizon (a path scattered there by air towards the sun may
   // meet cloud on its way, where the forward peak would multiply its next events; above
   // the clouds the sun's next event alone is smooth in the air's broad phase functions).
   if (!copies_allowed()) return 0.0;
-  if (m.cloud_total() <= 0.0) return altitude_m < cloud_top_m_ ? settings_.sun_guiding : 0.0;
+  if (m.cloud_total() <= 0.0)
+    return altitude_m < cloud_top_m_ && !meets_ground(y, world_.sun) ? settings_.sun_guiding : 0.0;
   return sun_shallow(y) ? settings_.sun_guiding : 0.0;
 }
 
@@ -191,6 +201,7 @@ glm::dvec3 PathTracer::sun_at_ground(const glm::dvec3& n, const glm::dvec3& y, d
 }
 
 glm::dvec3 PathTracer::transmittance(const glm::dvec3& x, const glm::dvec3& w) {
+  if (meets_ground(x, w)) return glm::dvec3(0.0);  // as the walk below would end, without tracking to it
   BandWalker walk(world_, x, w);
   glm::dvec3 T(1.0);
   MediumPoint m;
@@ -255,7 +266,7 @@ glm::dvec3 PathTracer::trace(PathState s, std::vector<PathState>& copies, std::u
   glm::dvec3 L(0.0);
   MediumPoint m;
   for (;;) {
-    BandWalker walk(world_, s.x, s.w, s.order == 0 ? settings_.camera_air_scale : 1.0);
+    BandWalker walk(world_, s.x, s.w, s.order == 0 ? settings_.camera_air_scale : 1.0, air_floor_);
     bool scattered = false;
     double majorant = 0.0;
     const bool continues = s.order + 1 < settings_.max_order;  // a real collision here is not the last
@@ -268,7 +279,8 @@ glm::dvec3 PathTracer::trace(PathState s, std::vector<PathState>& copies, std::u
       medium_at(y, altitude, majorant, m);
       const glm::dvec3 scattering = m.scattering();
       const double s_max = max3(scattering);
-      const double q = s_max > 0.0 ? std::min(1.0, settings_.nee_boost * s_max / majorant) : 0.0;
+      const double q =
+          s_max > 0.0 ? std::min(1.0, std::max(settings_.nee_boost * s_max, air_floor_) / majorant) : 0.0;
       const double guiding = guiding_at(y, altitude, m);  // at this point, were it a real scattering
       if (sun_on_ && s.order + 1 <= settings_.max_order && q > 0.0 && (q >= 1.0 || uniform() < q)) {
         const Contribution kind = q < 1.0                 ? Contribution::NextEventThin

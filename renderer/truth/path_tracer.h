@@ -44,9 +44,14 @@
 //     measured on a slab of optical depth 4 (sun 60 deg, view up from below) the
 //     per-path standard deviation falls from 2.6 to 0.21 at 1.8x the work;
 //   - camera rays multiply the air's part of the majorant by camera_air_scale: more
-//     tentative collisions, hence more next-event estimates of the thin sky;
+//     tentative collisions, hence more next-event estimates of the thin sky; at twilight
+//     every flight's air majorant is at least twilight_air_floor and q at least
+//     floor / m, so the sunlit upper air, the only light then, is sampled on every ray
+//     that crosses it (any majorant >= the extinction keeps delta tracking unbiased;
+//     Novak et al. 2018, §4);
 //   - sun transmittance by ratio tracking (Novak et al. 2018, §4.3), 0 when the ray hits
-//     the ground (the planet's shadow), with Russian roulette below shadow_roulette;
+//     the ground (the planet's shadow, found before any tracking), with Russian roulette
+//     below shadow_roulette;
 //   - ground: Lambertian; next event albedo / pi (n . w_sun) L_sun T_sun over the disk
 //     (MIS against the bounce), then a cosine-weighted bounce with beta *= albedo, and where
 //     the sun is above the ground's horizon and not buried in cloud a sun-guided copy as at
@@ -76,11 +81,17 @@ namespace cloudsvc::truth {
 // Revision of the estimator's sampling rules (not of its settings): raised whenever a change
 // makes the same settings and seed draw other paths, so that caches of truth images
 // (bench/image_cache.h) are recomputed.
-inline constexpr int kEstimatorRevision = 3;  // 3: sun-guided copies gated by sun depth, and from air below the clouds and the ground
+inline constexpr int kEstimatorRevision = 4;  // 4: the twilight air floor; shadow rays into the planet end before tracking
 
 struct TracerSettings {
   double camera_air_scale = 8.0;  // >= 1
   double nee_boost = 16.0;        // > 0
+  // Twilight (the sun below the horizon of the frame's +z axis, the point under the camera
+  // in a scene world): the least air majorant on a path's flights, 1/m, and next events
+  // at every tentative collision there. Only the thin upper air sees the sun then, where
+  // the air's own majorant would draw a tentative collision on ~1 % of the rays; at this
+  // floor a ray through it draws one every 5 km (0 = off).
+  double twilight_air_floor = 2e-4;
   double sun_guiding = 0.3;       // probability of a sun-guided copy at a scattering that may guide, [0, 1)
   int max_copies = 1024;          // per camera path; beyond it no vertex makes copies (a bound on the work)
   // Copies only where the cloud optical depth towards the sun (SunDepthCache, cells of
@@ -220,7 +231,8 @@ class PathTracer {
   glm::dvec3 sample_phase(const MediumPoint& m, const glm::dvec3& beta, double s_bar, const glm::dvec3& w);
   glm::dvec3 sample_sun_direction();  // uniform over the sun's disk
   bool copies_allowed() const;                 // a disk sun, cloud phases, copies left
-  bool sun_shallow(const glm::dvec3& y) const;  // y's cloud depth towards the sun < guide_depth
+  bool meets_ground(const glm::dvec3& x, const glm::dvec3& w) const;  // the ray x + t w, t > 0, hits the ground sphere
+  bool sun_shallow(const glm::dvec3& y) const;  // the sun above y's horizon and y's cloud depth towards it < guide_depth
   double guiding_at(const glm::dvec3& y, double altitude_m, const MediumPoint& m) const;
   // Next-event estimate (A) at a tentative collision (the caller has drawn it with
   // probability q): the sun's contribution scattered at y towards -w, MIS-weighted
@@ -245,6 +257,7 @@ class PathTracer {
   glm::dvec3 sun_radiance_{0.0};  // E_sun / Omega
   double sun_cos_radius_ = 1.0, sun_solid_angle_ = 0.0;
   double guide_g_ = 0.0;
+  double air_floor_ = 0.0;  // twilight_air_floor at twilight, else 0
   double cloud_top_m_ = -std::numeric_limits<double>::infinity();  // top of the highest band with a cloud part in its majorant
   int copies_made_ = 0;  // by the current camera path
 };

@@ -173,14 +173,13 @@ inline void add_batch(bench::CachedImage& sum, const bench::CachedImage& b, int 
 // as 1/sqrt(paths)) if that is at most max_spp paths per pixel (else one batch: the time
 // would not resolve it). The count is fixed by the first batch, not by testing after each
 // batch, which would favour stopping on batches whose heavy tail happened to be missing. A
-// scene without cloud pixels or with the sun below the horizon
-// (docs/TRUTH.md, "Limits") gets one batch.
+// scene without cloud pixels gets one batch.
 inline bench::CachedImage adaptive_truth(const bench::BenchScene& s, const std::filesystem::path& dir, int w, int h,
                                          int spp, int max_spp, std::uint64_t max_collisions, int& spp_used) {
   bench::CachedImage t = bench::truth_image(s, dir, w, h, spp, max_collisions, 1);
   const double noise = truth_noise(t.img, complete_pixels(t)).cloud_rel_se;
   int batches = 1;
-  if (noise > kResolvedNoise && s.sun_elevation_deg > 0.0) {
+  if (noise > kResolvedNoise) {
     const double ratio = noise / (0.8 * kResolvedNoise);
     const int needed = static_cast<int>(std::min(1e6, std::ceil(ratio * ratio)));
     if (needed <= max_spp / spp) batches = needed;  // else max_spp cannot resolve it: one batch
@@ -292,7 +291,7 @@ inline int run(int argc, char** argv) {
   int resolved_count = 0;
   for (size_t i = 0; i < scenes.size(); ++i) {
     floor_rel.push_back(noises[i].cloud_rel_se);
-    resolved[scenes[i].name] = noises[i].cloud_rel_se <= kResolvedNoise && scenes[i].sun_elevation_deg > 0.0;
+    resolved[scenes[i].name] = noises[i].cloud_rel_se <= kResolvedNoise;
     resolved_count += resolved[scenes[i].name] ? 1 : 0;
   }
   std::ostringstream md;
@@ -308,9 +307,7 @@ inline int run(int argc, char** argv) {
         "squared errors. The truth's own relative noise on cloud pixels (sqrt(mean se^2) / mean radiance): mean "
      << num("%.4f", bench::finite_mean(floor_rel)) << ", p90 " << num("%.4f", bench::percentile(floor_rel, 90))
      << " over the scenes with cloud. Truth columns aggregate the " << resolved_count << " scenes where it is at most "
-     << num("%.2f", kResolvedNoise) << " and the sun is above the horizon (the others: no cloud, or a truth too noisy at "
-        "this spp; at twilight the sun lights only the upper atmosphere, few paths find it, and the truth's error "
-        "estimate itself is unreliable). Pixels whose truth is incomplete (a path exceeded "
+     << num("%.2f", kResolvedNoise) << " (the others: no cloud, or a truth too noisy at this spp). Pixels whose truth is incomplete (a path exceeded "
      << max_collisions << " tentative collisions: deep inside optically thick cloud) are left out of every metric: "
      << num("%.1f", 100.0 * bench::finite_mean(incomplete_share)) << " % of the pixels on average, "
      << num("%.1f", 100.0 * bench::percentile(incomplete_share, 90)) << " % at the 90th percentile of the scenes.\n\n"

@@ -177,7 +177,6 @@ void CigiFrames::update_weather() {
 
 int CigiFrames::render_views(double utc_s) {
   const cigi::OwnshipPose& ownship = *state_.ownship();
-  const RenderQuality quality = *quality_preset("default");
   const std::vector<cigi::View> views = state_.views();
   int rendered = 0;
   for (const cigi::View& v : views) {
@@ -192,7 +191,8 @@ int CigiFrames::render_views(double utc_s) {
     r.channel = kChannelBase + v.id;
     r.frame_index = ig_frame_;
     try {
-      const FrameImage img = renderer_.render(r, quality);
+      // --cigi-quality / --cigi-view-quality (names checked when the options were parsed)
+      const FrameImage img = renderer_.render(r, *quality_preset(options_.cigi->quality_of(v.id)));
       publish(v, pose, img, utc_s, &v == &views.front());
       ++rendered;
     } catch (const std::exception& e) {

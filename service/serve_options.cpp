@@ -3,6 +3,7 @@
 // contract as render and demo (common/option_values.h).
 #include <CLI/CLI.hpp>
 #include <chrono>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
@@ -20,6 +21,7 @@
 #include "common/option_weather.h"
 #include "weather/forecast_weather.h"
 #include "protocol/shm/shm_name.h"
+#include "renderer/quality_presets.h"
 #include "service/cloud_phase_option.h"
 #include "service/serve_command_line.h"
 
@@ -144,7 +146,8 @@ std::string size_text(int width, int height) {
 struct ServeCommandLine::Args {
   CLI::App* command = nullptr;
   std::vector<std::string> listen;
-  std::string cigi, cigi_host, cigi_mode, cigi_rate;
+  std::string cigi, cigi_host, cigi_mode, cigi_rate, cigi_quality;
+  std::vector<std::string> cigi_view_quality;
   std::string shm, shm_max_size, out_dir, time, size, fov, max_clients, exit_after_frames;
   std::vector<std::string> weather;  // --weather: one preset or file, or several forecast files
   std::string socket_mode, shm_mode, idle_timeout, max_view_size, tile_budget, ready_file;
@@ -223,6 +226,16 @@ void add_cigi_flags(CLI::App& cmd, ServeCommandLine::Args& args) {
                  numeric_help("With --cigi-mode async: most frames per second (Hz)",
                               Range{0.0, kMaxCigiRate_hz, true, "Hz"}, defaults.rate_hz))
       ->type_name("HZ");
+  const std::string presets = join(quality_preset_names(), ", ");
+  cmd.add_option("--cigi-quality", args.cigi_quality,
+                 "With --cigi: the ray-march quality preset of every view, one of " + presets + "; default " +
+                     defaults.quality)
+      ->type_name("PRESET");
+  cmd.add_option("--cigi-view-quality", args.cigi_view_quality,
+                 "With --cigi: the preset of one CIGI view, ID=PRESET (ID 0..65535), over --cigi-quality; "
+                 "repeatable. Side channels at low cost about half a default view (docs/CIGI.md, \"Cost of "
+                 "several views\")")
+      ->type_name("ID=PRESET");
 }
 
 void add_sink_flags(CLI::App& cmd, ServeCommandLine::Args& args, const ServeOptions& defaults) {
@@ -332,7 +345,7 @@ void apply_scene(const ServeCommandLine::Args& a, ServeOptions& opt) {
 void apply_cigi(const ServeCommandLine::Args& a, ServeOptions& opt) {
   const CLI::App& cmd = *a.command;
   if (!given(cmd, "--cigi")) {
-    for (const char* flag : {"--cigi-host", "--cigi-mode", "--cigi-rate"})
+    for (const char* flag : {"--cigi-host", "--cigi-mode", "--cigi-rate", "--cigi-quality", "--cigi-view-quality"})
       if (given(cmd, flag)) fail(flag, cmd.get_option(flag)->as<std::string>(), "only valid together with --cigi");
     return;
   }
@@ -347,6 +360,21 @@ void apply_cigi(const ServeCommandLine::Args& a, ServeOptions& opt) {
   if (given(cmd, "--cigi-rate")) {
     c.rate_hz = parse_number("--cigi-rate", a.cigi_rate, Range{0.0, kMaxCigiRate_hz, true, "Hz"});
     if (c.pacing != CigiPacing::Asynchronous) fail("--cigi-rate", a.cigi_rate, "only valid with --cigi-mode async");
+  }
+  const std::string presets = "expected one of " + join(quality_preset_names(), ", ");
+  if (given(cmd, "--cigi-quality")) {
+    if (!quality_preset(a.cigi_quality)) fail("--cigi-quality", a.cigi_quality, presets);
+    c.quality = a.cigi_quality;
+  }
+  for (const std::string& item : a.cigi_view_quality) {
+    const std::size_t eq = item.find('=');
+    if (eq == std::string::npos) fail("--cigi-view-quality", item, "expected ID=PRESET, e.g. 1=low");
+    const double id = parse_number("--cigi-view-quality", item.substr(0, eq), Range{0.0, 65535.0, false, "view ID"});
+    if (id != std::floor(id)) fail("--cigi-view-quality", item, "the view ID is an integer 0..65535");
+    const std::string preset = item.substr(eq + 1);
+    if (!quality_preset(preset)) fail("--cigi-view-quality", item, presets);
+    if (!c.view_quality.emplace(static_cast<int>(id), preset).second)
+      fail("--cigi-view-quality", item, "view " + item.substr(0, eq) + " is given twice");
   }
   if (opt.shm_name.size() > kMaxCigiShmBaseChars)
     fail("--shm", opt.shm_name,

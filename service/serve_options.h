@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -38,6 +39,14 @@ struct CigiOptions {
   std::optional<cli::UdpEndpoint> host;     // --cigi-host: where IG -> host datagrams go; default the sender
   CigiPacing pacing = CigiPacing::Synchronous;  // --cigi-mode sync|async
   double rate_hz = 60.0;                    // --cigi-rate: asynchronous frame rate cap, Hz
+  std::string quality = "default";          // --cigi-quality: preset of every view (renderer/quality_presets.h)
+  std::map<int, std::string> view_quality;  // --cigi-view-quality ID=PRESET: per CIGI view ID, over `quality`
+
+  // The quality preset name of CIGI view `view_id`.
+  const std::string& quality_of(int view_id) const {
+    const auto it = view_quality.find(view_id);
+    return it == view_quality.end() ? quality : it->second;
+  }
 };
 
 // Longest ring name with --cigi: each view's ring is NAME-view<ID> (ID up to 65535).

@@ -389,6 +389,33 @@ TEST_F(CliServeOptionsTest, CigiFlags) {
   expect_serve_rejected({"--cigi", "udp:8000", "--shm", std::string(195, 'n')}, "--shm", "-view<ID>");
 }
 
+// Quality per CIGI view: one preset for every view, overridden per view ID.
+TEST_F(CliServeOptionsTest, CigiQualityFlags) {
+  const ServeOptions d = serve_with({"--cigi", "udp:8000"});
+  ASSERT_TRUE(d.cigi);
+  EXPECT_EQ(d.cigi->quality_of(0), "default");
+  EXPECT_EQ(d.cigi->quality_of(7), "default");
+  const ServeOptions o = serve_with({"--cigi", "udp:8000", "--cigi-quality", "high", "--cigi-view-quality", "1=low",
+                                     "--cigi-view-quality", "65535=naive"});
+  ASSERT_TRUE(o.cigi);
+  EXPECT_EQ(o.cigi->quality_of(0), "high");
+  EXPECT_EQ(o.cigi->quality_of(1), "low");
+  EXPECT_EQ(o.cigi->quality_of(2), "high");
+  EXPECT_EQ(o.cigi->quality_of(65535), "naive");
+
+  expect_serve_rejected({"--cigi", "udp:8000", "--cigi-quality", "best"}, "--cigi-quality", "expected one of");
+  expect_serve_rejected({"--cigi", "udp:8000", "--cigi-quality", "truth"}, "--cigi-quality", "truth");
+  expect_serve_rejected({"--cigi", "udp:8000", "--cigi-view-quality", "1"}, "--cigi-view-quality", "ID=PRESET");
+  expect_serve_rejected({"--cigi", "udp:8000", "--cigi-view-quality", "1=fast"}, "--cigi-view-quality", "1=fast");
+  expect_serve_rejected({"--cigi", "udp:8000", "--cigi-view-quality", "65536=low"}, "--cigi-view-quality", "65536");
+  expect_serve_rejected({"--cigi", "udp:8000", "--cigi-view-quality", "1.5=low"}, "--cigi-view-quality", "integer");
+  expect_serve_rejected({"--cigi", "udp:8000", "--cigi-view-quality", "-1=low"}, "--cigi-view-quality", "-1");
+  expect_serve_rejected({"--cigi", "udp:8000", "--cigi-view-quality", "1=low", "--cigi-view-quality", "1=high"},
+                        "--cigi-view-quality", "given twice");
+  expect_serve_rejected({"--cigi-quality", "low"}, "--cigi-quality", "only valid together with --cigi");
+  expect_serve_rejected({"--cigi-view-quality", "1=low"}, "--cigi-view-quality", "only valid together with --cigi");
+}
+
 TEST_F(CliServeOptionsTest, BadShmSizes) {
   for (const char* value : {"0x0", "8193x100", "100x8193", "640", "axb", "-5x5", "1.5x2"}) {
     expect_serve_rejected({"--shm", "ring", "--shm-max-size", value}, "--shm-max-size", value);

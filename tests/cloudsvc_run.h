@@ -29,9 +29,16 @@ inline std::string shell_quote(const std::string& s) {
 inline RunResult run_program(const std::string& program, const std::vector<std::string>& args,
                              const std::filesystem::path& dir) {
   std::string cmd = shell_quote(std::string(CLOUDSVC_BIN_DIR) + "/" + program);
-  for (const auto& a : args) cmd += " " + shell_quote(a);
+  // appended piecewise: GCC 12's -Wrestrict misfires on "literal" + std::string&& here
+  for (const auto& a : args) {
+    cmd += ' ';
+    cmd += shell_quote(a);
+  }
   const std::filesystem::path out = dir / "stdout.txt", err = dir / "stderr.txt";
-  cmd += " >" + shell_quote(out.string()) + " 2>" + shell_quote(err.string());
+  cmd += " >";
+  cmd += shell_quote(out.string());
+  cmd += " 2>";
+  cmd += shell_quote(err.string());
   const int status = std::system(cmd.c_str());
   RunResult r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

@@ -124,6 +124,32 @@ TEST(CigiService, AViewTurnedRightOfTheNoseSeesWhatTheTurnedAircraftSees) {
   EXPECT_GT(left_vs_right, std::max(0.01, 5.0 * same)) << "the comparison tells the views apart";
 }
 
+// --cigi-view-quality: a view drawn at another preset differs from its default image while
+// the other views, at the default, are the same images as in a run without the flag.
+TEST(CigiService, AViewGivenItsOwnQualityIsDrawnWithIt) {
+  std::vector<std::vector<float>> plain(3), side(3);
+  for (const bool cheap : {false, true}) {
+    std::vector<std::string> args = {"--cigi", "udp:0", "--exit-after-frames", "1"};
+    if (cheap) {
+      args.emplace_back("--cigi-view-quality");
+      args.emplace_back("2=low");
+    }
+    ServiceProcess svc(cheap ? "cigi_view_quality" : "cigi_all_default", args, ServiceProcess::Tcp::No,
+                       ServiceProcess::OutDir::Yes);
+    ASSERT_TRUE(svc.running()) << read_text_file(svc.log_path());
+    const RunResult r = run_sim_client({"cigi", write_log(svc.dir(), 0.0).string(), "--ig", cigi_address(svc), "--views",
+                                        "3", "--size", "64x36", "--max-frames", "1"},
+                                       svc.dir());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    ASSERT_EQ(svc.wait_exit(120s), 0);
+    for (int v = 0; v < 3; ++v) (cheap ? side : plain)[v] = read_png(frame_file(svc, v, 1));
+  }
+  const double nose = mean_abs_difference(plain[0], side[0]), right = mean_abs_difference(plain[2], side[2]);
+  std::printf("default vs --cigi-view-quality 2=low: view 0 %.5f, view 2 %.5f (8-bit sRGB, 0..1)\n", nose, right);
+  EXPECT_LT(nose, 0.0005) << "view 0 keeps the default";
+  EXPECT_GT(right, std::max(0.001, 5.0 * nose)) << "view 2 is drawn at half the cloud resolution";
+}
+
 // Reads the IG's datagrams until one carries an IG Message containing `needle`.
 bool message_arrives(sim::CigiHostLink& link, const std::string& needle, std::string& seen) {
   const auto deadline = std::chrono::steady_clock::now() + 60s;

@@ -307,7 +307,8 @@ inline int run(int argc, char** argv) {
         "squared errors. The truth's own relative noise on cloud pixels (sqrt(mean se^2) / mean radiance): mean "
      << num("%.4f", bench::finite_mean(floor_rel)) << ", p90 " << num("%.4f", bench::percentile(floor_rel, 90))
      << " over the scenes with cloud. Truth columns aggregate the " << resolved_count << " scenes where it is at most "
-     << num("%.2f", kResolvedNoise) << " (the others: no cloud, or a truth too noisy at this spp). Pixels whose truth is incomplete (a path exceeded "
+     << num("%.2f", kResolvedNoise)
+     << " (the others: no cloud, or a truth too noisy at this spp). Pixels whose truth is incomplete (a path exceeded "
      << max_collisions << " tentative collisions: deep inside optically thick cloud) are left out of every metric: "
      << num("%.1f", 100.0 * bench::finite_mean(incomplete_share)) << " % of the pixels on average, "
      << num("%.1f", 100.0 * bench::percentile(incomplete_share, 90)) << " % at the 90th percentile of the scenes.\n\n"

@@ -566,10 +566,10 @@ TEST(TruthTracer, TwilightClearSkySingleScatteringIsResolved) {
 // of optical depth 3 at 2000-2300 m over a ground of albedo 0.3, seen from 500 m looking up
 // 10 deg towards the sun's azimuth and straight up. Only light scattered in the air above
 // the planet's shadow (from ~35 km up overhead) reaches it. The floor's estimate from
-// 20 000 paths agrees with transport at the air's own majorant (both unbiased) from
-// 640 000, whose standard error is 0.5-1.1 times the floor's (measured): per path the
-// floor's variance is 7-40 times lower. (At 20 000 paths the plain estimate's own error
-// is unreliable: a few paths carry it, and it fell 4 standard errors below this.)
+// 10 000 paths agrees with transport at the air's own majorant (both unbiased) from
+// 320 000, whose standard error is 0.6-2 times smaller than the floor's (measured): per
+// path the floor's variance is 10-140 times lower. (At 20 000 paths the plain estimate's
+// own error is unreliable: a few paths carry it, and it fell 4 standard errors below this.)
 TEST(TruthTracer, TwilightFloorAgreesWithPlainTransportAtEveryOrder) {
   namespace atmo = reference::atmo;
   struct CloudInClearAir final : TruthMedium {
@@ -599,8 +599,8 @@ TEST(TruthTracer, TwilightFloorAgreesWithPlainTransportAtEveryOrder) {
   TracerSettings plain;
   plain.twilight_air_floor = 0.0;
   for (const glm::dvec3& d : {glm::normalize(glm::dvec3(0.0, 1.0, 0.18)), glm::dvec3(0.0, 0.0, 1.0)}) {
-    const RadianceEstimate f = estimate_radiance(w, {}, x, d, 20000, 41);
-    const RadianceEstimate p = estimate_radiance(w, plain, x, d, 640000, 43);
+    const RadianceEstimate f = estimate_radiance(w, {}, x, d, 10000, 41);
+    const RadianceEstimate p = estimate_radiance(w, plain, x, d, 320000, 43);
     for (int c = 0; c < 3; ++c) {
       char what[96];
       std::snprintf(what, sizeof what, "twilight cloud, floor vs plain, view (%.2f %.2f %.2f) ch %d", d.x, d.y, d.z, c);

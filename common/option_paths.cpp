@@ -67,7 +67,7 @@ void check_output_file(std::string_view flag, const std::string& path) {
   const std::string name = fs::path(path).filename().string();
   const bool known_extension = ends_with_ci(name, ".png") || ends_with_ci(name, ".exr");
   if (!known_extension || name.size() <= 4) {
-    fail(flag, path, "expected a file name ending in .png (8-bit sRGB) or .exr (linear half float)");
+    fail(flag, path, "expected a file name ending in .png (8-bit sRGB) or .exr (linear 32-bit float)");
   }
   check_writable_file(flag, path);
 }

@@ -61,7 +61,7 @@ enum class ShmPixelFormat : std::uint8_t {
 
 enum class FileFormat : std::uint8_t {
   Png = 0,  // 8-bit sRGB, tone-mapped
-  Exr = 1,  // half float, linear radiance
+  Exr = 1,  // 32-bit float, linear radiance
 };
 
 // What a service can take: advertised in Welcome.

@@ -37,7 +37,9 @@ std::vector<unsigned char> encode_image(const std::string& path, const std::stri
     // A Monte Carlo image (the path-traced truth) adds its standard error as se.R/G/B.
     const bool with_error = img.std_error.size() == img.rgba.size() / 4 * 3 && !img.std_error.empty();
     const int channels = with_error ? 7 : 4;
-    OIIO::ImageSpec spec(img.width, img.height, channels, OIIO::TypeDesc::HALF);
+    // 32-bit float: a night sky (~2e-9) is below half float's smallest value and twilight radiance
+    // (1e-6) has a few bits in it
+    OIIO::ImageSpec spec(img.width, img.height, channels, OIIO::TypeDesc::FLOAT);
     spec.channelnames = {"R", "G", "B", "A"};
     spec.attribute("compression", "zip");
     spec.attribute("cloudsvc:radiance_units", "W m^-2 sr^-1 nm^-1 at 680/550/440 nm; A = cloud opacity");

@@ -1,4 +1,4 @@
-// Writing frames to files with OpenImageIO: EXR = linear radiance as half float RGBA
+// Writing frames to files with OpenImageIO: EXR = linear radiance as 32-bit float RGBA
 // (A = cloud opacity), plus se.R, se.G, se.B (the standard error of R, G, B) when the
 // frame carries one (FrameImage::std_error: the path-traced truth); PNG = tone-mapped 8-bit sRGB for people (common/tone_map.h, which
 // also gives luminance()). The image is encoded in

@@ -150,7 +150,7 @@ void add_view_flags(CLI::App& cmd, RenderArgs& args, const RenderOptions& defaul
 
 void add_output_flags(CLI::App& cmd, RenderArgs& args, const RenderOptions& defaults) {
   cmd.add_option("--out", args.out,
-                 "Output image: .png (8-bit sRGB, tone mapped) or .exr (linear half float), "
+                 "Output image: .png (8-bit sRGB, tone mapped) or .exr (linear 32-bit float), "
                  "extension case-insensitive; its directory must exist and be writable; "
                  "default " + defaults.out_path + " (none with --window)")
       ->type_name("FILE");

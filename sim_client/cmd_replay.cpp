@@ -59,7 +59,7 @@ ReplayOptions validate(const ReplayArgs& a) {
     o.max_frames = static_cast<std::size_t>(cli::parse_integer("--max-frames", a.max_frames, 1, 50000000, "frames"));
   if (a.format == "png") o.format = protocol::FileFormat::Png;
   else if (a.format == "exr") o.format = protocol::FileFormat::Exr;
-  else cli::fail("--format", a.format, "expected png (8-bit sRGB) or exr (linear half float)");
+  else cli::fail("--format", a.format, "expected png (8-bit sRGB) or exr (linear 32-bit float)");
   if (!a.out.empty()) {
     cli::check_output_directory("--out", a.out);  // created when the run starts
     std::error_code ec;
@@ -225,7 +225,7 @@ Command add_replay_command(CLI::App& app) {
                 "the newest pose (latest wins), so there may be fewer frames than poses");
   cmd->add_option("--max-frames", args->max_frames, "Send at most the first N poses, integer >= 1; default all")
       ->type_name("N");
-  cmd->add_option("--format", args->format, "Frame file format with --out: png (8-bit sRGB) or exr (linear half float); default png")
+  cmd->add_option("--format", args->format, "Frame file format with --out: png (8-bit sRGB) or exr (linear 32-bit float); default png")
       ->type_name("png|exr");
   cmd->add_option("--contact-sheet", args->contact_sheet,
                   "Also write a PNG mosaic of up to 16 evenly spaced frames (needs --out)")

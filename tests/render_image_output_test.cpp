@@ -7,11 +7,14 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <OpenImageIO/imageio.h>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <limits>
 #include <sstream>
+#include <vector>
 
 #include "renderer/image_output.h"
 #include "sim_client/tone_map.h"
@@ -85,9 +88,32 @@ TEST_F(ImageOutputSafety, NoTemporaryIsLeftAndTheFrameIsReadableByOthers) {
   EXPECT_THROW(write_image((dir_ / "missing" / "f.png").string(), small_frame()), std::runtime_error);
 }
 
+// EXR frames keep the radiance of a night (the night sky, 2e-9 W m^-2 sr^-1 nm^-1, and
+// twilight values of 1e-6) as written: half floats made the first 0 and kept 1-6 % of the
+// second; 32-bit floats are exact.
+TEST_F(ImageOutputSafety, ExrKeepsNightRadiance) {
+  FrameImage img;
+  img.width = 4;
+  img.height = 1;
+  img.rgba = {2.0e-9f, 3.3e-9f, 7.1e-9f, 0.0f, 1.234e-6f, 2.345e-6f, 9.876e-6f, 0.5f,
+              0.05f, 0.06f, 0.07f, 1.0f, 123.4f, 234.5f, 345.6f, 0.25f};
+  img.std_error = {1e-10f, 2e-10f, 3e-10f, 1e-7f, 2e-7f, 3e-7f, 1e-3f, 2e-3f, 3e-3f, 1.0f, 2.0f, 3.0f};
+  const fs::path exr = dir_ / "out" / "night.exr";
+  write_image(exr.string(), img);
+  auto in = OIIO::ImageInput::open(exr.string());
+  ASSERT_TRUE(in);
+  ASSERT_EQ(in->spec().nchannels, 7);
+  std::vector<float> px(4 * 7);
+  ASSERT_TRUE(in->read_image(0, 0, 0, 7, OIIO::TypeDesc::FLOAT, px.data()));
+  for (int i = 0; i < 4; ++i) {
+    for (int c = 0; c < 4; ++c) EXPECT_EQ(px[i * 7 + c], img.rgba[i * 4 + c]) << "pixel " << i << " channel " << c;
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(px[i * 7 + 4 + c], img.std_error[i * 3 + c]) << "pixel " << i << " se " << c;
+  }
+}
+
 // The service's PNG of a frame and sim_client's display conversion of the same frame
-// written as EXR (sweep --png, contact sheets) agree to 1 step of 255 (the EXR holds half
-// floats, relative step 2^-11); non-finite and negative radiance is black in both.
+// written as EXR (sweep --png, contact sheets) agree to 1 step of 255; non-finite and
+// negative radiance is black in both.
 TEST_F(ImageOutputSafety, ServicePngAndSimClientConversionOfTheExrAgree) {
   FrameImage img;
   img.width = 32;

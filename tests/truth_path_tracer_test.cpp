@@ -493,16 +493,11 @@ TEST(TruthSunDepth, IsTheSlantOpticalDepthFromTheCellsSunwardCorner) {
 // Single scattering of the clear sky against the reference's integration
 // (reference::atmo::integrate_inscatter with the multiple-scattering term off) in the
 // atmosphere's own geometry (ground sphere 6360 km, top 100 km above it).
-// Single scattering of the clear sky from 1000 m: the truth (max_order 1) against the
-// reference's integration of the same atmosphere (reference_atmosphere.h, the planet's
-// shadow included), for the sun at sun_elev_deg in the y-z plane, of angular radius
-// sun_radius_rad (the reference's is 0). Returns the largest relative standard error of the
-// truth over views and channels.
-double expect_clear_sky_single_scattering(double sun_elev_deg, double sun_radius_rad,
-                                          const std::vector<glm::dvec3>& views,
-                                          const TracerSettings& settings, long long paths, const char* what) {
+// The clear atmosphere of reference_atmosphere.h in 40 bands (500 m up to 10 km, then
+// 4.5 km), each band's majorant its largest extinction, under a sun of irradiance 1 at
+// sun_elev_deg in the y-z plane; the caller sets the medium.
+TruthWorld clear_air_world(double sun_elev_deg, double sun_radius_rad) {
   namespace atmo = reference::atmo;
-  const ClearAir medium;
   TruthWorld w;
   w.radius_m = atmo::kBottomRadius;
   w.ground_alt_m = 0.0;
@@ -517,6 +512,20 @@ double expect_clear_sky_single_scattering(double sun_elev_deg, double sun_radius
   w.sun = glm::dvec3(0.0, std::cos(sun_elev), std::sin(sun_elev));
   w.sun_irradiance = glm::dvec3(1.0);
   w.sun_angular_radius_rad = sun_radius_rad;
+  return w;
+}
+
+// Single scattering of the clear sky from 1000 m: the truth (max_order 1) against the
+// reference's integration of the same atmosphere (reference_atmosphere.h, the planet's
+// shadow included), for the sun at sun_elev_deg in the y-z plane, of angular radius
+// sun_radius_rad (the reference's is 0). Returns the largest relative standard error of the
+// truth over views and channels.
+double expect_clear_sky_single_scattering(double sun_elev_deg, double sun_radius_rad,
+                                          const std::vector<glm::dvec3>& views,
+                                          const TracerSettings& settings, long long paths, const char* what) {
+  namespace atmo = reference::atmo;
+  const ClearAir medium;
+  TruthWorld w = clear_air_world(sun_elev_deg, sun_radius_rad);
   w.medium = &medium;
   const double alt = 1000.0;
   const double r0 = atmo::kBottomRadius + alt;
@@ -571,7 +580,6 @@ TEST(TruthTracer, TwilightClearSkySingleScatteringIsResolved) {
 // path the floor's variance is 10-140 times lower. (At 20 000 paths the plain estimate's
 // own error is unreliable: a few paths carry it, and it fell 4 standard errors below this.)
 TEST(TruthTracer, TwilightFloorAgreesWithPlainTransportAtEveryOrder) {
-  namespace atmo = reference::atmo;
   struct CloudInClearAir final : TruthMedium {
     void at(const glm::dvec3& x, double alt, MediumPoint& out) const override {
       air.at(x, alt, out);
@@ -579,19 +587,9 @@ TEST(TruthTracer, TwilightFloorAgreesWithPlainTransportAtEveryOrder) {
     }
     ClearAir air;
   } medium;
-  TruthWorld w;
-  w.radius_m = atmo::kBottomRadius;
-  w.top_alt_m = atmo::kThickness;
-  for (int b = 0; b <= 40; ++b) w.band_edges.push_back(b < 20 ? 500.0 * b : 10000.0 + 4500.0 * (b - 20));
-  for (std::size_t i = 0; i + 1 < w.band_edges.size(); ++i) {
-    const glm::dvec3 m = atmo::max_extinction(w.band_edges[i], w.band_edges[i + 1]);
-    w.band_air_majorant.push_back(std::max({m.r, m.g, m.b}) * (1.0 + 1e-9));
-    w.band_majorant.push_back(w.band_air_majorant.back() + (w.band_edges[i] == 2000.0 ? 0.01 * (1.0 + 1e-9) : 0.0));
-  }
-  const double sun_elev = -6.0 * kPi / 180.0;
-  w.sun = glm::dvec3(0.0, std::cos(sun_elev), std::sin(sun_elev));
-  w.sun_irradiance = glm::dvec3(1.0);
-  w.sun_angular_radius_rad = kSunRadius;
+  TruthWorld w = clear_air_world(-6.0, kSunRadius);
+  for (std::size_t i = 0; i + 1 < w.band_edges.size(); ++i)
+    if (w.band_edges[i] == 2000.0) w.band_majorant[i] += 0.01 * (1.0 + 1e-9);  // the cloud's band
   w.ground_albedo = glm::dvec3(0.3);
   w.cloud_phase[0] = model::jdd_params(14.0);
   w.medium = &medium;

@@ -70,6 +70,7 @@ bool history_usable(const ViewRequest& prev, const RenderQuality& prev_quality, 
                     const RenderQuality& cur_quality) {
   if (cur.reset_history || !cur_quality.temporal_reuse || !prev_quality.temporal_reuse) return false;
   if (prev.width != cur.width || prev.height != cur.height || image_window(prev) != image_window(cur)) return false;
+  if (prev.near_m != cur.near_m || prev.far_m != cur.far_m) return false;  // other clouds clipped
   if (!same_march(prev_quality, cur_quality)) return false;
   const double gap = cur.unix_time_s - prev.unix_time_s;
   if (!(gap >= 0.0 && gap <= kMaxHistoryGapS)) return false;

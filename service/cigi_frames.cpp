@@ -188,6 +188,8 @@ int CigiFrames::render_views(double utc_s) {
     r.width = options_.width;
     r.height = options_.height;
     r.frustum = ViewFrustumAngles{v.frustum.left_deg, v.frustum.right_deg, v.frustum.bottom_deg, v.frustum.top_deg};
+    r.near_m = v.frustum.near_m;  // clouds between the host's planes (0: not given)
+    r.far_m = v.frustum.far_m;
     r.channel = kChannelBase + v.id;
     r.frame_index = ig_frame_;
     try {

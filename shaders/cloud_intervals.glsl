@@ -11,14 +11,14 @@ float march_coordinate(float t, float t_ref) { return t_ref > 0.0 ? log(1.0 + t 
 float march_distance(float u, float t_ref) { return t_ref > 0.0 ? t_ref * (exp(u) - 1.0) : u; }
 
 // The part of the ray inside layer li, as up to two intervals [entry, exit] clipped to
-// [0, t_limit]: inside the top sphere and outside the base sphere.
-int layer_intervals(int li, float mu, float t_limit, out Interval a, out Interval b) {
+// [t_start, t_limit]: inside the top sphere and outside the base sphere.
+int layer_intervals(int li, float mu, float t_start, float t_limit, out Interval a, out Interval b) {
   float R = frame.shell_radius_m, h = frame.camera_altitude_m;
   vec2 top = intersect_shell(R, h, frame.layers[li].top_m, mu);
   vec2 base = intersect_shell(R, h, frame.layers[li].base_m, mu);
   int n = 0;
   if (top.y < 0.0) return 0;
-  float A0 = max(top.x, 0.0), A1 = min(top.y, t_limit);
+  float A0 = max(top.x, t_start), A1 = min(top.y, t_limit);
   if (A0 >= A1) return 0;
   if (base.y < 0.0 || base.y <= A0 || max(base.x, 0.0) >= A1) {
     a = Interval(A0, A1, li);
@@ -33,14 +33,15 @@ int layer_intervals(int li, float mu, float t_limit, out Interval a, out Interva
   return n;
 }
 
-// All layer intervals of the ray with zenith cosine mu up to t_limit, sorted by entry
-// distance; total_len is their summed length in march coordinates.
-int ray_intervals(float mu, float t_limit, float t_ref, out Interval iv[MAX_INTERVALS], out float total_len) {
+// All layer intervals of the ray with zenith cosine mu between t_start and t_limit, sorted
+// by entry distance; total_len is their summed length in march coordinates.
+int ray_intervals(float mu, float t_start, float t_limit, float t_ref, out Interval iv[MAX_INTERVALS],
+                  out float total_len) {
   int n_iv = 0;
   total_len = 0.0;
   for (int li = 0; li < frame.layer_count; ++li) {
     Interval a, b;
-    int n = layer_intervals(li, mu, t_limit, a, b);
+    int n = layer_intervals(li, mu, t_start, t_limit, a, b);
     if (n >= 1) total_len += march_coordinate(a.t1, t_ref) - march_coordinate(a.t0, t_ref);
     if (n == 2) total_len += march_coordinate(b.t1, t_ref) - march_coordinate(b.t0, t_ref);
     // coverage 0: no cloud anywhere (a clear layer, or none within reach of this frame,

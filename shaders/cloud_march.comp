@@ -108,7 +108,11 @@ RaySample march_ray(ivec2 q, vec3 dir) {
   vec2 g = intersect_shell(R, h, ground_alt, mu);
   bool hits_ground = g.x >= 0.0;
   float t_ground = hits_ground ? g.x : 1e30;
+  // the view's near and far planes (cloud_clip in view_request.h)
+  float cos_axis = max(dot(dir, frame.camera_forward), 1e-6);
+  float t_start = frame.view_near_m / cos_axis;
   float t_limit = min(t_ground, frame.march_reach_m);
+  float t_clip_end = min(t_limit, frame.view_far_m / cos_axis);
 
   // Steps are uniform in u = ln(1 + t / t_ref) (t_ref = ms_params.w > 0) or in t (0: the
   // naive march). In empty air the march probes with steps long_step times longer
@@ -119,7 +123,7 @@ RaySample march_ray(ivec2 q, vec3 dir) {
   float t_ref = frame.step_growth_ref_m;
   Interval iv[MAX_INTERVALS];
   float total_len;
-  int n_iv = ray_intervals(mu, t_limit, t_ref, iv, total_len);
+  int n_iv = ray_intervals(mu, t_start, t_clip_end, t_ref, iv, total_len);
   int long_step = max(1, int(frame.long_step_factor));
 
   vec3 C = vec3(0.0);  // in-scattered radiance from clouds

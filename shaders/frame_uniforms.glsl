@@ -64,6 +64,8 @@ layout(std140, binding = UBO_FRAME) uniform FrameUniforms {
   int footprint_jitter;
   float view_center_tan_x;
   float view_center_tan_y;
+  float view_near_m;  // clouds drawn between the near and far planes (cloud_clip)
+  float view_far_m;
   vec4 noise_quantiles[4];
   vec4 weather_pole_south;
   vec4 weather_pole_north;

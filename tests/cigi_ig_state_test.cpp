@@ -66,6 +66,34 @@ TEST(CigiIgState, ViewsAreBuiltFieldByFieldFromTheDefault) {
   EXPECT_EQ(over[0], "View Control of view 17: the IG draws at most 8 views");
 }
 
+// Near and far planes: not given, none (0); given one at a time; a far plane must lie
+// beyond the near one.
+TEST(CigiIgState, NearAndFarPlanes) {
+  IgState s;
+  EXPECT_EQ(s.views()[0].frustum.near_m, 0.0f);
+  EXPECT_EQ(s.views()[0].frustum.far_m, 0.0f) << "no plane until the host gives one";
+  ViewDefinition near_only;
+  near_only.view_id = 0;
+  near_only.enable = definition_enable::kNear;
+  near_only.near_m = 600000.0f;
+  EXPECT_TRUE(s.apply(host_datagram({near_only})).empty()) << "a near plane with no far plane";
+  EXPECT_EQ(s.views()[0].frustum.near_m, 600000.0f);
+  ViewDefinition far_before_near;
+  far_before_near.view_id = 0;
+  far_before_near.enable = definition_enable::kFar;
+  far_before_near.far_m = 1000.0f;
+  EXPECT_EQ(s.apply(host_datagram({far_before_near})).size(), 1u) << "far within the view's near plane";
+  EXPECT_EQ(s.views()[0].frustum.far_m, 0.0f);
+  ViewDefinition both;
+  both.view_id = 0;
+  both.enable = definition_enable::kNear | definition_enable::kFar;
+  both.near_m = 0.5f;
+  both.far_m = 80000.0f;
+  EXPECT_TRUE(s.apply(host_datagram({both})).empty());
+  EXPECT_EQ(s.views()[0].frustum.near_m, 0.5f);
+  EXPECT_EQ(s.views()[0].frustum.far_m, 80000.0f);
+}
+
 TEST(CigiIgState, OwnshipTimeAndAtmosphere) {
   IgState s;
   EXPECT_FALSE(s.ownship());

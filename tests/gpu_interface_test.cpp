@@ -72,6 +72,8 @@ Offsets expected_frame_uniforms() {
       MEMBER(FrameUniforms, coverage_pyramid), MEMBER(FrameUniforms, layer_count), MEMBER(FrameUniforms, frame_index),
       MEMBER(FrameUniforms, count_density_evaluations), MEMBER(FrameUniforms, footprint_jitter), MEMBER(FrameUniforms, view_center_tan_x),
       MEMBER(FrameUniforms, view_center_tan_y),
+      MEMBER(FrameUniforms, view_near_m),
+      MEMBER(FrameUniforms, view_far_m),
       ARRAY_MEMBER(FrameUniforms, noise_quantiles), MEMBER(FrameUniforms, weather_pole_south),
       MEMBER(FrameUniforms, weather_pole_north), MEMBER(FrameUniforms, layer_coverage_pole_south),
       MEMBER(FrameUniforms, layer_coverage_pole_north), MEMBER(FrameUniforms, ground_albedo),

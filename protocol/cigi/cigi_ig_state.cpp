@@ -64,7 +64,7 @@ std::optional<std::string> IgState::apply(const HostPacket& packet) {
             if (p.enable & kBottom) f.bottom_deg = p.bottom_deg;
             // The packet's own fields passed their checks; together with the view's others
             // they must still make a frustum.
-            if (!(f.right_deg > f.left_deg && f.top_deg > f.bottom_deg && f.far_m > f.near_m))
+            if (!(f.right_deg > f.left_deg && f.top_deg > f.bottom_deg && (f.far_m <= 0.0f || f.far_m > f.near_m)))
               return "View Definition of view " + std::to_string(p.view_id) +
                      ": with the view's other fields no frustum (left < right, bottom < top, near < far)";
           }

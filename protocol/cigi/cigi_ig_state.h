@@ -16,10 +16,11 @@
 namespace cloudsvc::cigi {
 
 // A view's frustum: half-angles from its axis (degrees; left and bottom usually negative)
-// and clipping planes (m).
+// and clipping planes (m along the view axis; 0 = not given, no plane). Clouds outside the
+// planes are not drawn (ViewRequest::near_m, far_m).
 struct ViewFrustum {
   float left_deg = -30.0f, right_deg = 30.0f, top_deg = 17.5f, bottom_deg = -17.5f;
-  float near_m = 1.0f, far_m = 500000.0f;
+  float near_m = 0.0f, far_m = 0.0f;
   bool operator==(const ViewFrustum&) const = default;
 };
 

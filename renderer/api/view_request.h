@@ -42,7 +42,25 @@ struct ViewRequest {
                                              // its height from the image's aspect
   int channel = 0;  // the display channel the view is drawn for: each channel keeps its own
                     // temporal history and frame; the weather, shadow map and LUTs are shared
+  // Near and far planes (CIGI View Definition), m along the view axis: clouds closer than
+  // near_m or beyond far_m are not drawn (they still shade and shadow the rest); the sky,
+  // the ground and the air are drawn whole. 0 = no plane.
+  double near_m = 0.0, far_m = 0.0;
 };
+
+// The distances along a unit ray between which clouds are drawn, for planes near_m and
+// far_m (ViewRequest; 0 = none) and the ray's cosine with the view axis (> 0 inside any
+// frustum): [near_m / cos_axis, far_m / cos_axis]; no far plane: 1e300.
+struct CloudClip {
+  double t0 = 0.0, t1 = 1e300;
+};
+inline CloudClip cloud_clip(double near_m, double far_m, double cos_axis) {
+  CloudClip c;
+  if (!(cos_axis > 0.0)) return c;
+  if (near_m > 0.0) c.t0 = near_m / cos_axis;
+  if (far_m > 0.0) c.t1 = far_m / cos_axis;
+  return c;
+}
 
 // The view's image window: from its frustum's edges, else symmetric from fov_deg with the
 // vertical extent of the image's aspect (square pixels).

@@ -24,13 +24,13 @@ struct Interval {
 };
 
 // The parts of the ray (from the camera, altitude h, zenith cosine mu) inside layer L,
-// clipped to [0, t_limit]: inside the top sphere and outside the base sphere. The
+// clipped to [t_start, t_limit]: inside the top sphere and outside the base sphere. The
 // distance to a sphere is convex along a line, so each sphere's inside is one interval.
-void layer_intervals(const ShellFrame& s, const ReferenceLayer& L, int li, double mu, double t_limit,
+void layer_intervals(const ShellFrame& s, const ReferenceLayer& L, int li, double mu, double t_start, double t_limit,
                      std::vector<Interval>& out) {
   const auto top = sphere_crossings(s.radius_m, s.camera_alt_m, L.top_m, mu);
   if (!top) return;
-  const double a0 = std::max(top->t0, 0.0), a1 = std::min(top->t1, t_limit);
+  const double a0 = std::max(top->t0, t_start), a1 = std::min(top->t1, t_limit);
   if (a0 >= a1) return;
   const auto base = sphere_crossings(s.radius_m, s.camera_alt_m, L.base_m, mu);
   if (!base || base->t1 <= a0 || base->t0 >= a1) {
@@ -97,8 +97,11 @@ PixelIntegrator::CloudMarch PixelIntegrator::march_clouds(const glm::dvec3& dir,
                                                           std::uint64_t& evals) const {
   CloudMarch m;
   std::vector<Interval> intervals;
+  const ReferenceCamera& cam = scene_.camera;
+  const CloudClip clip = cloud_clip(cam.near_m, cam.far_m, glm::dot(dir, cam.forward));
   for (std::size_t li = 0; li < scene_.layers.size(); ++li)
-    layer_intervals(scene_.shell, scene_.layers[li], static_cast<int>(li), dir.z, t_limit, intervals);
+    layer_intervals(scene_.shell, scene_.layers[li], static_cast<int>(li), dir.z, clip.t0,
+                    std::min(t_limit, clip.t1), intervals);
   std::sort(intervals.begin(), intervals.end(), [](const Interval& a, const Interval& b) { return a.t0 < b.t0; });
   for (const Interval& iv : intervals) {
     if (m.transmittance <= settings_.min_transmittance) break;

@@ -67,6 +67,8 @@ ReferenceScene make_reference_scene(const ViewRequest& view, const weather::Weat
   s.camera.width = view.width;
   s.camera.height = view.height;
   s.camera.window = image_window(view);
+  s.camera.near_m = view.near_m;
+  s.camera.far_m = view.far_m;
 
   // Shell: osculating sphere of the WGS84 ellipsoid at the camera (radius sqrt(M N)).
   s.shell.radius_m = geo::gaussian_radius(pos.lat_deg);

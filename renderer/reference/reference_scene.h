@@ -43,6 +43,7 @@ struct ReferenceCamera {
   glm::dvec3 forward{0, 1, 0}, right{1, 0, 0}, up{0, 0, 1};
   ImageWindow window;  // image_window(view): tangents of the image's centre and half extents
   int width = 0, height = 0;
+  double near_m = 0.0, far_m = 0.0;  // ViewRequest's planes: clouds drawn between them (cloud_clip)
 
   // Ray through the point (px, py) of the image in pixel units from its top-left corner
   // (the centre of pixel (x, y) is (x + 0.5, y + 0.5)).

@@ -150,6 +150,11 @@ struct Weather {
   // Lambertian albedo of the ground, grey, [0, 1] (fresh snow ~0.8, sea ~0.06-0.1); unset:
   // the renderer's default spectrum (model::kGroundAlbedo, 0.14 / 0.12 / 0.08 in rgb).
   std::optional<double> ground_albedo;
+  // Horizontal visibility at sea level, m: the meteorological optical range (the distance at
+  // which a black object's contrast against the horizon sky falls to 5 %, WMO-No. 8), which
+  // sets the haze (aerosol) of the atmosphere (model::atmosphere::aerosol_scale_for_visibility),
+  // in [kMinVisibility_m, kMaxVisibility_m]; unset: the model's default aerosol (166 km).
+  std::optional<double> visibility_m;
 };
 
 // Checks ranges and ordering; returns an empty string when valid, else a one-line
@@ -158,7 +163,8 @@ struct Weather {
 // [-500, 20000], top_m in (base_m, 20000] with top_m - base_m >= 10, coverage [0, 1],
 // density_scale [0, 10], droplet_diameter_um [5, 50], |wind| <= 150 m/s, type not None;
 // layers sorted by base_m and not overlapping in altitude (touching is allowed);
-// coverage_channel in [-1, 3]; ground_albedo, when set, finite and in [0, 1].
+// coverage_channel in [-1, 3]; ground_albedo, when set, finite and in [0, 1]; visibility_m,
+// when set, in [kMinVisibility_m, kMaxVisibility_m].
 std::string validate(const Weather& w);
 
 // The same checks, with the field ("layers[1].coverage") and the problem ("1.5 out of range
@@ -178,5 +184,10 @@ constexpr double kMaxDensityScale = 10.0;
 constexpr double kMinDropletDiameter_um = 5.0;
 constexpr double kMaxDropletDiameter_um = 50.0;
 constexpr double kMaxWindSpeed_mps = 150.0;
+// Visibility: below 1 km is fog, which the haze of the atmosphere model does not draw (a
+// shallow layer, not an exponential aerosol profile); above ~220 km the air is clearer than
+// its molecules allow and the aerosol is simply 0.
+constexpr double kMinVisibility_m = 1000.0;
+constexpr double kMaxVisibility_m = 1.0e6;
 
 }  // namespace cloudsvc::weather

@@ -8,37 +8,17 @@
 namespace cloudsvc {
 
 AtmosphereLuts::AtmosphereLuts()
-    : sky_view_prog_(gl::ShaderProgram::compute("sky_view_lut.comp")),
+    : transmittance_prog_(gl::ShaderProgram::compute("transmittance_lut.comp")),
+      multiscatter_prog_(gl::ShaderProgram::compute("multiscatter_lut.comp")),
+      irradiance_prog_(gl::ShaderProgram::compute("sky_irradiance_lut.comp")),
+      sky_view_prog_(gl::ShaderProgram::compute("sky_view_lut.comp")),
       ap_prog_(gl::ShaderProgram::compute("aerial_perspective.comp")),
       transmittance_(gl::make_texture_2d(GL_RGBA32F, kTransmittanceW, kTransmittanceH, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE)),
       multiscatter_(gl::make_texture_2d(GL_RGBA32F, kSunLutMuNodes, kSunLutAltNodes, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE)),
       irradiance_(gl::make_texture_2d(GL_RGBA32F, kSunLutMuNodes, kSunLutAltNodes, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE)),
       sky_view_(gl::make_texture_2d(GL_RGBA32F, kSkyViewW, kSkyViewH, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE)),
       ap_inscatter_(gl::make_texture_3d(GL_RGBA32F, kApSize, kApSize, kApSize, GL_CLAMP_TO_EDGE)),
-      ap_transmittance_(gl::make_texture_3d(GL_RGBA32F, kApSize, kApSize, kApSize, GL_CLAMP_TO_EDGE)) {
-  // Static LUTs, in dependency order: transmittance -> multiple scattering -> irradiance.
-  {
-    auto prog = gl::ShaderProgram::compute("transmittance_lut.comp");
-    prog.use();
-    glBindImageTexture(gpu::img::LUT_OUT, transmittance_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    gl::dispatch_2d(kTransmittanceW, kTransmittanceH);
-  }
-  {
-    auto prog = gl::ShaderProgram::compute("multiscatter_lut.comp");
-    prog.use();
-    glBindTextureUnit(gpu::tex::TRANSMITTANCE_LUT, transmittance_.id());
-    glBindImageTexture(gpu::img::LUT_OUT, multiscatter_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    gl::dispatch_2d(kSunLutMuNodes, kSunLutAltNodes);
-  }
-  {
-    auto prog = gl::ShaderProgram::compute("sky_irradiance_lut.comp");
-    prog.use();
-    glBindTextureUnit(gpu::tex::TRANSMITTANCE_LUT, transmittance_.id());
-    glBindTextureUnit(gpu::tex::MULTISCATTER_LUT, multiscatter_.id());
-    glBindImageTexture(gpu::img::LUT_OUT, irradiance_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    gl::dispatch_2d(kSunLutMuNodes, kSunLutAltNodes);
-  }
-}
+      ap_transmittance_(gl::make_texture_3d(GL_RGBA32F, kApSize, kApSize, kApSize, GL_CLAMP_TO_EDGE)) {}
 
 bool AtmosphereLuts::same_sky(const ViewKey& a, const ViewKey& b) {
   const double zenith_a = std::acos(std::clamp(a.sun_enu.z, -1.0, 1.0));
@@ -70,6 +50,12 @@ bool AtmosphereLuts::froxels_serve(const ViewKey& a, const FrameContext& c) {
 
 AtmosphereLuts::ViewLutUpdate AtmosphereLuts::plan_view_dependent(FrameContext& c) {
   ViewLutUpdate plan;
+  plan.atmosphere = last_aerosol_scale_ != c.aerosol_scale;
+  if (plan.atmosphere) {  // every LUT reads the air
+    last_aerosol_scale_ = c.aerosol_scale;
+    last_sky_.reset();
+    last_froxels_.reset();
+  }
   // a volume built now: the symmetric frustum around the camera's, kApMargin wider per axis
   const ViewKey camera{ApFrustum{c.axes.forward, c.axes.right, c.axes.up, c.window.bound_x() * (1.0 + kApMargin),
                                  c.window.bound_y() * (1.0 + kApMargin)},
@@ -83,8 +69,21 @@ AtmosphereLuts::ViewLutUpdate AtmosphereLuts::plan_view_dependent(FrameContext& 
 }
 
 void AtmosphereLuts::recompute(const ViewLutUpdate& plan, const FrameBuffers& frame) {
-  if (!plan.sky_view && !plan.aerial_perspective) return;
+  if (!plan.atmosphere && !plan.sky_view && !plan.aerial_perspective) return;
   frame.bind();
+  if (plan.atmosphere) {  // in dependency order: transmittance -> multiple scattering -> irradiance
+    transmittance_prog_.use();
+    glBindImageTexture(gpu::img::LUT_OUT, transmittance_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    gl::dispatch_2d(kTransmittanceW, kTransmittanceH);
+    multiscatter_prog_.use();
+    glBindTextureUnit(gpu::tex::TRANSMITTANCE_LUT, transmittance_.id());
+    glBindImageTexture(gpu::img::LUT_OUT, multiscatter_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    gl::dispatch_2d(kSunLutMuNodes, kSunLutAltNodes);
+    irradiance_prog_.use();
+    glBindTextureUnit(gpu::tex::MULTISCATTER_LUT, multiscatter_.id());
+    glBindImageTexture(gpu::img::LUT_OUT, irradiance_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    gl::dispatch_2d(kSunLutMuNodes, kSunLutAltNodes);
+  }
   glBindTextureUnit(gpu::tex::TRANSMITTANCE_LUT, transmittance_.id());
   glBindTextureUnit(gpu::tex::MULTISCATTER_LUT, multiscatter_.id());
   glBindTextureUnit(gpu::tex::SKY_IRRADIANCE_LUT, irradiance_.id());

@@ -1,7 +1,9 @@
 // Atmosphere look-up tables (Hillaire 2020). The transmittance, multiple-scattering and
-// sky-irradiance LUTs depend only on the (fixed) atmosphere and are computed once; the
-// sky-view LUT and the aerial-perspective volume depend on the camera and the sun and are
-// recomputed when those change. Needs a current GL 4.5 context.
+// sky-irradiance LUTs depend only on the atmosphere, i.e. on its aerosol's amount
+// (FrameContext::aerosol_scale, the weather's visibility): computed at the first frame and
+// again when that changes. The sky-view LUT and the aerial-perspective volume depend on the
+// camera and the sun as well and are recomputed when those change. Needs a current GL 4.5
+// context.
 #pragma once
 
 #include "renderer/gl/gl_objects.h"
@@ -24,15 +26,16 @@ class AtmosphereLuts {
   static constexpr int kSkyViewW = 192, kSkyViewH = 108;
   static constexpr int kApSize = 32;  // 32 x 32 directions x 32 depth slices
 
-  AtmosphereLuts();  // compiles the LUT programs and computes the static LUTs
+  AtmosphereLuts();  // compiles the LUT programs; the first frame's recompute fills the LUTs
 
   // GPU memory of all the LUTs (RGBA32F texels).
   static constexpr std::size_t gpu_bytes() {
     return 16u * (kTransmittanceW * kTransmittanceH + 2 * kSunLutMuNodes * kSunLutAltNodes + kSkyViewW * kSkyViewH + 2 * kApSize * kApSize * kApSize);
   }
 
-  // Which of the camera-dependent LUTs update_view_dependent recomputed.
+  // Which LUTs recompute recomputes.
   struct ViewLutUpdate {
+    bool atmosphere = false;          // transmittance, multiple scattering, sky irradiance
     bool sky_view = false;            // sky-view LUT
     bool aerial_perspective = false;  // aerial-perspective volume
   };
@@ -47,6 +50,7 @@ class AtmosphereLuts {
   // frustum stays inside it and is not much narrower (kApMargin again), and the altitude
   // (1 m), reach (1 m) and sun direction (1e-4 rad) hold. A camera turning at 3 deg/s
   // keeps it for about a second.
+  // All of them where the aerosol's amount differs from the last frame's (or at the first).
   ViewLutUpdate plan_view_dependent(FrameContext& frame);
   // Recomputes what plan_view_dependent decided, from the frame uniforms packed from its
   // frame (bound here with the static LUTs it reads).
@@ -70,7 +74,8 @@ class AtmosphereLuts {
   // The volume of key a still serves the frame (camera frustum inside, inputs unchanged).
   static bool froxels_serve(const ViewKey& a, const FrameContext& frame);
   std::optional<ViewKey> last_sky_, last_froxels_;
-  gl::ShaderProgram sky_view_prog_, ap_prog_;
+  std::optional<double> last_aerosol_scale_;  // the static LUTs were computed for it
+  gl::ShaderProgram transmittance_prog_, multiscatter_prog_, irradiance_prog_, sky_view_prog_, ap_prog_;
   gl::Texture transmittance_, multiscatter_, irradiance_, sky_view_, ap_inscatter_, ap_transmittance_;
 };
 

@@ -1,5 +1,6 @@
 #include "renderer/frame_context.h"
 
+#include "renderer/model/atmosphere_constants.h"
 #include "renderer/model/scene_constants.h"
 
 #include <algorithm>
@@ -48,6 +49,7 @@ FrameContext make_frame_context(const ViewRequest& view, const weather::Weather&
   c.sun_ecef = glm::normalize(c.enu_to_ecef * c.sun_enu);
 
   c.ground_albedo = model::ground_albedo_rgb(weather.ground_albedo);
+  c.aerosol_scale = model::atmosphere::aerosol_scale_of(weather.visibility_m);
   c.layer_count = std::min<int>(static_cast<int>(weather.layers.size()), gpu::kMaxLayers);
   const glm::dvec3 cam_normal = c.enu_to_ecef[2];
   for (int i = 0; i < c.layer_count; ++i) {

@@ -64,6 +64,9 @@ struct FrameContext {
   glm::dvec3 sun_enu{0.0, 0.0, 1.0};   // unit vector to the sun, local ENU
   glm::dvec3 sun_ecef{0.0, 0.0, 1.0};  // ... in ECEF axes
   glm::dvec3 ground_albedo{0.0};       // Lambertian, rgb (model::ground_albedo_rgb of the weather)
+  // Factor on the atmosphere's aerosol (model::atmosphere::aerosol_scale_of the weather's
+  // visibility; 1 = the model's own haze).
+  double aerosol_scale = 1.0;
   int layer_count = 0;                 // layers drawn: min(weather layers, gpu::kMaxLayers)
   std::array<LayerFrame, gpu::kMaxLayers> layers{};
   ApFrustum ap;  // set by AtmosphereLuts::plan_view_dependent

@@ -59,6 +59,7 @@ FrameUniforms pack_frame_uniforms(const FrameContext& c, const RenderQuality& qu
   u.view_center_tan_y = static_cast<float>(c.window.center_y);
   u.view_near_m = static_cast<float>(std::max(0.0, c.view.near_m));
   u.view_far_m = c.view.far_m > 0.0 ? static_cast<float>(c.view.far_m) : 1e30f;
+  u.aerosol_scale = static_cast<float>(c.aerosol_scale);
   u.image_size_px = glm::vec2(static_cast<float>(c.view.width), static_cast<float>(c.view.height));
   // level of detail compares the angle one cloud pixel subtends with the noise texels
   u.pixel_angle_rad = static_cast<float>(2.0 * c.window.half_x / c.view.width *

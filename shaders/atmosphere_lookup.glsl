@@ -43,19 +43,15 @@ vec3 atmo_inscatter_density(AtmoMedium m, float alt, float mu_sun, float cos_vie
 // Ray march through the atmosphere from radius r (planet-centred frame with the start on
 // the +z axis, so d and sun are in the start's local ENU frame) over distance len.
 // Returns in-scattered radiance for unit solar irradiance (rgb) and the transmittance.
-// Rays that climb (d.z > 0) meet their densest air (aerosols, H = 1.2 km) at the start, so
-// their steps are spaced as t_i = len (i / n)^p with p = 1 + d.z: up to quadratic towards
-// the zenith, uniform for horizontal and descending rays, whose air stays dense over most
-// of the path (30 uniform steps undersampled the aerosol layer by up to 10 % in the red
-// below the sun; docs/ACCURACY.md).
+// Steps atmo_step_edge (30 uniform steps undersampled the aerosol layer by up to 10 % in
+// the red below the sun; docs/ACCURACY.md).
 void march_atmosphere(float r, vec3 d, vec3 sun, float len, int steps, out vec3 L, out vec3 T) {
   L = vec3(0.0);
   T = vec3(1.0);
   float nu = dot(d, sun);
-  float p = 1.0 + max(d.z, 0.0);
   for (int i = 0; i < steps; ++i) {
-    float t0 = len * pow(float(i) / float(steps), p);
-    float t1 = len * pow(float(i + 1) / float(steps), p);
+    float t0 = atmo_step_edge(len, i, steps, r, d.z);
+    float t1 = atmo_step_edge(len, i + 1, steps, r, d.z);
     float dt = t1 - t0;
     float t = 0.5 * (t0 + t1);
     vec3 x = vec3(0.0, 0.0, r) + t * d;

@@ -1,7 +1,8 @@
 // Earth atmosphere in the style of Hillaire 2020, "A Scalable and Production Ready Sky
 // and Atmosphere Rendering Technique" (EGSR). Its constants (ATMO_BOTTOM, ATMO_TOP,
 // RAYLEIGH_*, MIE_*, OZONE_ABSORPTION) come from renderer/model/atmosphere_constants.h
-// through the preamble of renderer/gpu_interface.cpp. Lengths in metres, coefficients in
+// through the preamble of renderer/gpu_interface.cpp; the aerosol's amount is scaled by
+// frame.aerosol_scale (the weather's visibility), so frame_uniforms.glsl comes first. Lengths in metres, coefficients in
 // 1/m. The atmosphere is spherically symmetric: only the altitude and the zenith cosine of
 // a ray matter, so it uses its own radius (6360 km) regardless of the cloud-shell radius.
 
@@ -18,9 +19,24 @@ AtmoMedium atmo_medium(float alt) {
   float doz = max(0.0, 1.0 - abs(alt - 25.0e3) / 15.0e3);  // tent 10-25-40 km
   AtmoMedium m;
   m.rayleigh = RAYLEIGH_SCATTERING * dr;
+  dm *= frame.aerosol_scale;
   m.mie = MIE_SCATTERING * dm;
   m.extinction = m.rayleigh + vec3(MIE_EXTINCTION * dm) + OZONE_ABSORPTION * doz;
   return m;
+}
+
+// Edge i of n steps along a ray of length len from radius r with zenith cosine mu:
+// t_i = len (i / n)^p. Rays that climb meet their densest air (the aerosol, H = 1.2 km) at
+// the start, so p = 1 + mu: up to quadratic towards the zenith, uniform for horizontal and
+// descending rays, whose air stays dense over most of the path. And the first step holds
+// at most one optical depth of the air at the start (p >= ln(len sigma_t) / ln n): in haze
+// (frame.aerosol_scale; 3 km visibility, sigma_t = 1e-3 / m) a horizontal ray from the
+// ground would otherwise take its 1100 km in steps of 37 km, each far beyond where its
+// light comes from; the default air (sigma_t 1.8e-5 / m at the ground) never needs it.
+float atmo_step_edge(float len, int i, int n, float r, float mu) {
+  float sigma = atmo_medium(r - ATMO_BOTTOM).extinction.g;
+  float p = max(1.0 + max(mu, 0.0), log(max(len * sigma, 1.0)) / log(float(n)));
+  return len * pow(float(i) / float(n), p);
 }
 
 float rayleigh_phase(float mu) { return 3.0 / (16.0 * PI) * (1.0 + mu * mu); }

@@ -66,6 +66,7 @@ layout(std140, binding = UBO_FRAME) uniform FrameUniforms {
   float view_center_tan_y;
   float view_near_m;  // clouds drawn between the near and far planes (cloud_clip)
   float view_far_m;
+  float aerosol_scale;  // on MIE_SCATTERING and MIE_EXTINCTION (the weather's visibility)
   vec4 noise_quantiles[4];
   vec4 weather_pole_south;
   vec4 weather_pole_north;

@@ -4,6 +4,7 @@
 // Psi_ms = L_2nd / (1 - f_ms). Unit sun irradiance. Stored as log Psi_ms over
 // u = sun_lut_u(mu_sun) (atmosphere_model.glsl).
 #include "common.glsl"
+#include "frame_uniforms.glsl"
 #include "atmosphere_model.glsl"
 layout(binding = TEX_TRANSMITTANCE_LUT) uniform sampler2D transmittance_lut;
 
@@ -11,7 +12,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba32f, binding = IMG_LUT_OUT) uniform writeonly image2D out_lut;
 
 const int DIRS = 64;
-const int STEPS = 20;
+const int STEPS = 20;  // atmo_step_edge (uniform steps missed the haze near the ground)
 
 vec3 sun_transmittance(float r, float mu) {
   if (ray_hits_ground(r, mu)) return vec3(0.0);
@@ -43,10 +44,10 @@ void main() {
     float mu = d.z;
     bool ground = ray_hits_ground(r, mu);
     float len = ground ? distance_to_bottom(r, mu) : distance_to_top(r, mu);
-    float dt = len / float(STEPS);
     vec3 T = vec3(1.0), L = vec3(0.0), F = vec3(0.0);
     for (int i = 0; i < STEPS; ++i) {
-      float t = (float(i) + 0.5) * dt;
+      float t0 = atmo_step_edge(len, i, STEPS, r, mu), t1 = atmo_step_edge(len, i + 1, STEPS, r, mu);
+      float t = 0.5 * (t0 + t1), dt = t1 - t0;
       vec3 x = vec3(0.0, 0.0, r) + t * d;
       float rx = length(x);
       AtmoMedium m = atmo_medium(rx - ATMO_BOTTOM);

@@ -5,6 +5,7 @@
 // weighted directions: E = pi * mean(L)). Stored as log E_sky; u = sun_lut_u(mu_sun)
 // (atmosphere_model.glsl), v = alt / 100 km.
 #include "common.glsl"
+#include "frame_uniforms.glsl"
 #include "atmosphere_model.glsl"
 #include "atmosphere_lookup.glsl"
 

@@ -7,10 +7,12 @@
 #include <cstdio>
 #include <numbers>
 
+#include "renderer/model/atmosphere_constants.h"
 #include "renderer/reference/atmosphere_tables.h"
 #include "renderer/reference/reference_atmosphere.h"
 #include "renderer/reference/reference_renderer.h"
 #include "tests/make_view.h"
+#include "weather/cloud_layer.h"
 
 namespace cloudsvc::reference {
 namespace {
@@ -211,6 +213,46 @@ TEST(ReferenceAtmosphere, ClearSkyFacts) {
   sky_irradiance_facts();
   sun_disk_radiance_is_solar_irradiance_over_solid_angle_times_transmittance();
   zenith_bluer_than_horizon_and_night_dark();
+}
+
+
+// A visibility V sets the aerosol so that the sea-level extinction at 550 nm is
+// -ln 0.05 / V (the meteorological optical range, model::atmosphere::aerosol_scale_for_visibility):
+// a horizontal beam at the ground keeps 5 % over V; unset keeps the model's own haze, and
+// air clearer than the molecules allow has no aerosol. Haze dims the sun and brightens the
+// sky's light on the ground (its tables are built for the scale: AtmosphereTableSettings).
+TEST(ReferenceAtmosphere, VisibilitySetsTheHaze) {
+  namespace a = model::atmosphere;
+  EXPECT_EQ(a::aerosol_scale_of(std::nullopt), 1.0);
+  const double own_v = -std::log(a::kVisibilityContrast) / (a::kRayleighScattering.y + a::kMieExtinction);
+  std::printf("the model's own visibility: %.1f km\n", own_v / 1000.0);
+  EXPECT_NEAR(a::aerosol_scale_for_visibility(own_v), 1.0, 1e-12);
+  EXPECT_EQ(a::aerosol_scale_for_visibility(300e3), 0.0);
+  EXPECT_EQ(a::aerosol_scale_for_visibility(weather::kMaxVisibility_m), 0.0);
+  double last = 1e30;
+  for (double V : {weather::kMinVisibility_m, 3e3, 10e3, 50e3}) {
+    const double s = a::aerosol_scale_for_visibility(V);
+    EXPECT_LT(s, last);
+    last = s;
+    EXPECT_NEAR(-std::log(a::kVisibilityContrast) / atmo::medium_at(0.0, s).extinction.y, V, 1e-9 * V);
+    if (V <= 10e3) {  // the beam 2 m up rises by V^2 / 2R (8 m at 10 km) into thinner haze
+      const double t = std::exp(-atmo::optical_depth(kBottomRadius + 2.0, 0.0, V, 10.0, s).y);
+      std::printf("visibility %5.0f m: aerosol x %.1f, horizontal transmittance over it %.4f\n", V, s, t);
+      EXPECT_NEAR(t, a::kVisibilityContrast, 0.03 * a::kVisibilityContrast);
+    }
+  }
+  // haze of 10 km against the default, sun 40 deg up: less sun on the ground, more sky light
+  const double s10 = a::aerosol_scale_for_visibility(10e3), mu = std::sin(40.0 * kPi / 180.0);
+  AtmosphereTableSettings hazy;
+  hazy.aerosol_scale = s10;
+  const glm::dvec3 sun_clear = atmo::transmittance_to_space(0.0, mu, 50.0), sun_hazy = atmo::transmittance_to_space(0.0, mu, 50.0, s10);
+  const glm::dvec3 sky_clear = atmosphere_tables({})->sky_irradiance(0.0, mu), sky_hazy = atmosphere_tables(hazy)->sky_irradiance(0.0, mu);
+  std::printf("10 km haze, sun 40 deg: direct sun x %.3f, sky irradiance x %.3f (550 nm)\n", sun_hazy.y / sun_clear.y,
+              sky_hazy.y / sky_clear.y);
+  EXPECT_LT(sun_hazy.y, 0.85 * sun_clear.y);
+  EXPECT_GT(sky_hazy.y, 1.2 * sky_clear.y);
+  // and the haze is whiter than the blue sky: its sky light gains most in the red
+  EXPECT_GT(sky_hazy.x / sky_clear.x, sky_hazy.z / sky_clear.z);
 }
 
 }  // namespace

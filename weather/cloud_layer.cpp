@@ -259,7 +259,8 @@ std::optional<ValidationIssue> validate_detail(const Weather& w) {
     return ValidationIssue{"ground_albedo", num(*w.ground_albedo) + " out of range [0, 1]"};
   if (w.visibility_m && !(*w.visibility_m >= kMinVisibility_m && *w.visibility_m <= kMaxVisibility_m))
     return ValidationIssue{"visibility_m", num(*w.visibility_m) + " out of range [" + num(kMinVisibility_m) + ", " +
-                                               num(kMaxVisibility_m) + "] (below 1000 m is fog, not drawn)"};
+                                               num(kMaxVisibility_m) + "]" +
+                                               (*w.visibility_m < kMinVisibility_m ? " (below 1000 m is fog, not drawn)" : "")};
   const int n = static_cast<int>(w.layers.size());
   if (n > kMaxCloudLayers) {
     return ValidationIssue{"layers", std::to_string(n) + " layers, at most " +

@@ -44,8 +44,9 @@ glm::dvec3 direction(double mu, double phi) {
 
 bool AtmosphereTableSettings::operator<(const AtmosphereTableSettings& o) const {
   return std::tie(step_m, max_step_m, mu_sun_nodes, ms_zenith_nodes, ms_azimuth_nodes, sky_zenith_nodes,
-                  sky_azimuth_nodes) < std::tie(o.step_m, o.max_step_m, o.mu_sun_nodes, o.ms_zenith_nodes,
-                                                o.ms_azimuth_nodes, o.sky_zenith_nodes, o.sky_azimuth_nodes);
+                  sky_azimuth_nodes, aerosol_scale) < std::tie(o.step_m, o.max_step_m, o.mu_sun_nodes, o.ms_zenith_nodes,
+                                                               o.ms_azimuth_nodes, o.sky_zenith_nodes,
+                                                               o.sky_azimuth_nodes, o.aerosol_scale);
 }
 
 MuAltitudeTable::MuAltitudeTable(int mu_nodes, std::vector<double> altitudes_m) : altitudes_(std::move(altitudes_m)) {
@@ -94,7 +95,7 @@ void AtmosphereTables::build_fine_transmittance() {
     for (int i = 0; i < fine_.n_mu; ++i) {
       const double d = d_min + (d_max - d_min) * i / (fine_.n_mu - 1);
       const double mu = d <= 0.0 ? 1.0 : std::clamp((H * H - rho * rho - d * d) / (2.0 * r * d), -1.0, 1.0);
-      fine_.optical_depth[static_cast<std::size_t>(j) * fine_.n_mu + i] = atmo::optical_depth(r, mu, d, settings_.step_m);
+      fine_.optical_depth[static_cast<std::size_t>(j) * fine_.n_mu + i] = atmo::optical_depth(r, mu, d, settings_.step_m, settings_.aerosol_scale);
     }
   });
 }
@@ -153,7 +154,7 @@ glm::dvec3 AtmosphereTables::multiple_scattering_at(double altitude_m, double mu
         t += dt;
         const double rx = glm::length(x);
         const double alt = rx - atmo::kBottomRadius;
-        const atmo::Medium m = atmo::medium_at(alt);
+        const atmo::Medium m = atmo::medium_at(alt, settings_.aerosol_scale);
         const glm::dvec3 sigma_s = m.rayleigh_scattering + glm::dvec3(m.mie_scattering);
         const glm::dvec3 t_sun = tabulated_transmittance(alt, glm::dot(x, sun) / rx);
         for (int c = 0; c < 3; ++c) {
@@ -199,7 +200,7 @@ glm::dvec3 AtmosphereTables::sky_irradiance_at(double altitude_m, double mu_sun,
       const double phi = (k + 0.5) * kPi / n_phi;
       const double weight = zenith.weights[iz] * (kPi / n_phi) * 2.0 * mu;  // cos(theta) dw, mirror x2
       const atmo::RayInscatter s = atmo::integrate_inscatter(r, direction(mu, phi), sun, atmo::path_length(r, mu),
-                                                             false, step, max_step, sun_t, psi);
+                                                             false, step, max_step, sun_t, psi, settings_.aerosol_scale);
       E += s.radiance * weight;
     }
   }

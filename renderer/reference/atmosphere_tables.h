@@ -40,6 +40,7 @@ struct AtmosphereTableSettings {
   int sky_zenith_nodes = 10;       // E_sky: Gauss-Legendre nodes in mu over [0, 1], clustered at 0
   int sky_azimuth_nodes = 10;      // ... midpoint nodes over azimuth [0, pi]
   int threads = 0;                 // worker threads, 0 = all cores (common/parallel_for.h); no effect on the values
+  double aerosol_scale = 1.0;      // the air's aerosol (atmo::medium_at); render_reference sets the scene's
 
   bool operator<(const AtmosphereTableSettings& o) const;
 };

@@ -54,7 +54,7 @@ PixelIntegrator::PixelIntegrator(const CloudField& field, const AtmosphereTables
 }
 
 glm::dvec3 PixelIntegrator::sun_transmittance(double alt, double mu) const {
-  return atmo::transmittance_to_space(alt, mu, settings_.atmosphere_step_m);
+  return atmo::transmittance_to_space(alt, mu, settings_.atmosphere_step_m, scene_.aerosol_scale);
 }
 
 atmo::RayInscatter PixelIntegrator::air_along_ray(const glm::dvec3& dir, double t_end, bool skip_above_top) const {
@@ -62,7 +62,8 @@ atmo::RayInscatter PixelIntegrator::air_along_ray(const glm::dvec3& dir, double 
   const auto psi = [this](double alt, double mu) { return tables_.multiple_scattering(alt, mu); };
   return atmo::integrate_inscatter(camera_atmo_radius_, dir, scene_.sun_local, t_end, skip_above_top,
                                    settings_.atmosphere_step_m,
-                                   settings_.atmosphere_max_step_factor * settings_.atmosphere_step_m, sun_t, psi);
+                                   settings_.atmosphere_max_step_factor * settings_.atmosphere_step_m, sun_t, psi,
+                                   scene_.aerosol_scale);
 }
 
 glm::dvec3 PixelIntegrator::cloud_inscatter(int li, const glm::dvec3& p, double alt, double coverage,

@@ -13,10 +13,10 @@ constexpr double kOzonePeak_m = 25.0e3, kOzoneHalfWidth_m = 15.0e3;  // tent 10-
 double ozone_tent(double a) { return std::max(0.0, 1.0 - std::abs(a - kOzonePeak_m) / kOzoneHalfWidth_m); }
 }  // namespace
 
-Medium medium_at(double altitude_m) {
+Medium medium_at(double altitude_m, double aerosol_scale) {
   const double a = std::max(altitude_m, 0.0);
   const double rayleigh_density = std::exp(-a / kRayleighScaleHeight);
-  const double mie_density = std::exp(-a / kMieScaleHeight);
+  const double mie_density = aerosol_scale * std::exp(-a / kMieScaleHeight);
   const double ozone_density = ozone_tent(a);
   Medium m;
   m.rayleigh_scattering = kRayleighScattering * rayleigh_density;
@@ -25,9 +25,9 @@ Medium medium_at(double altitude_m) {
   return m;
 }
 
-glm::dvec3 max_extinction(double a0, double a1) {
+glm::dvec3 max_extinction(double a0, double a1, double aerosol_scale) {
   const double lo = std::max(a0, 0.0), hi = std::max(a1, lo);
-  const Medium m = medium_at(lo);  // the exponentials decrease with altitude
+  const Medium m = medium_at(lo, aerosol_scale);  // the exponentials decrease with altitude
   return m.extinction + kOzoneAbsorption * (ozone_tent(std::clamp(kOzonePeak_m, lo, hi)) - ozone_tent(lo));
 }
 
@@ -69,15 +69,15 @@ double altitude_step(double r, double mu, double step_m) {
   return 2.0 * s / (std::abs(mu) + std::sqrt(mu * mu + 2.0 * s / r));
 }
 
-glm::dvec3 optical_depth(double r, double mu, double length, double step_m) {
+glm::dvec3 optical_depth(double r, double mu, double length, double step_m, double aerosol_scale) {
   return integrate_optical_depth(r, mu, length, step_m,
-                                 [](double alt) { return medium_at(alt).extinction; });
+                                 [aerosol_scale](double alt) { return medium_at(alt, aerosol_scale).extinction; });
 }
 
-glm::dvec3 transmittance_to_space(double altitude_m, double mu, double step_m) {
+glm::dvec3 transmittance_to_space(double altitude_m, double mu, double step_m, double aerosol_scale) {
   const double r = radius_for_altitude(altitude_m);
   if (ray_hits_ground(r, mu)) return glm::dvec3(0.0);
-  const glm::dvec3 tau = optical_depth(r, mu, distance_to_top(r, mu), step_m);
+  const glm::dvec3 tau = optical_depth(r, mu, distance_to_top(r, mu), step_m, aerosol_scale);
   return glm::exp(-tau);
 }
 

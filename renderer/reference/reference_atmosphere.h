@@ -36,17 +36,19 @@ constexpr double kThickness = kTopRadius - kBottomRadius;
 constexpr glm::dvec3 kGroundAlbedo{model::kGroundAlbedo[0], model::kGroundAlbedo[1], model::kGroundAlbedo[2]};
 
 // Medium at an altitude (clamped to >= 0: points below the atmosphere's ground, which the
-// cloud shell geometry can produce, get ground-level air).
+// cloud shell geometry can produce, get ground-level air). aerosol_scale, here and below:
+// the factor on the aerosol's scattering and extinction (model::atmosphere::aerosol_scale_of
+// the weather's visibility; 1 = the model's own haze).
 struct Medium {
   glm::dvec3 rayleigh_scattering{0.0};  // 1/m
   double mie_scattering = 0.0;          // 1/m
   glm::dvec3 extinction{0.0};           // Rayleigh + Mie extinction + ozone absorption, 1/m
 };
-Medium medium_at(double altitude_m);
+Medium medium_at(double altitude_m, double aerosol_scale = 1.0);
 // The largest extinction (rgb, 1/m) of medium_at over altitudes [a0, a1] (a0 <= a1): the
 // exponentials at max(a0, 0), the ozone tent at its highest point in the interval. A
 // rigorous bound, for majorants.
-glm::dvec3 max_extinction(double a0, double a1);
+glm::dvec3 max_extinction(double a0, double a1, double aerosol_scale = 1.0);
 
 // Phase functions (sr^-1) of the cosine nu between the view and sun directions.
 double rayleigh_phase(double nu);  // 3 / (16 pi) (1 + nu^2)
@@ -78,12 +80,12 @@ double altitude_step(double r, double mu, double step_m);
 template <class Extinction>
 glm::dvec3 integrate_optical_depth(double r, double mu, double length, double step_m, const Extinction& extinction);
 // ... of this atmosphere (medium_at(alt).extinction).
-glm::dvec3 optical_depth(double r, double mu, double length, double step_m);
+glm::dvec3 optical_depth(double r, double mu, double length, double step_m, double aerosol_scale = 1.0);
 
 // The model's transmittance to space: from altitude alt (above the atmosphere's ground)
 // along zenith cosine mu to the top; 0 when the ray hits the planet (the sun below the
 // horizon). exp(-optical depth), integrated (no table).
-glm::dvec3 transmittance_to_space(double altitude_m, double mu, double step_m);
+glm::dvec3 transmittance_to_space(double altitude_m, double mu, double step_m, double aerosol_scale = 1.0);
 
 // In-scattered radiance and transmittance along a straight ray.
 struct RayInscatter {
@@ -102,7 +104,8 @@ struct RayInscatter {
 template <class SunTransmittance, class MultipleScattering>
 RayInscatter integrate_inscatter(double r0, const glm::dvec3& d, const glm::dvec3& sun, double t_end,
                                  bool skip_above_top, double step_m, double max_step_m,
-                                 const SunTransmittance& sun_transmittance, const MultipleScattering& psi_ms);
+                                 const SunTransmittance& sun_transmittance, const MultipleScattering& psi_ms,
+                                 double aerosol_scale = 1.0);
 
 }  // namespace cloudsvc::reference::atmo
 

@@ -32,7 +32,8 @@ glm::dvec3 integrate_optical_depth(double r, double mu, double length, double st
 template <class SunTransmittance, class MultipleScattering>
 RayInscatter integrate_inscatter(double r0, const glm::dvec3& d, const glm::dvec3& sun, double t_end,
                                  bool skip_above_top, double step_m, double max_step_m,
-                                 const SunTransmittance& sun_transmittance, const MultipleScattering& psi_ms) {
+                                 const SunTransmittance& sun_transmittance, const MultipleScattering& psi_ms,
+                                 double aerosol_scale) {
   RayInscatter out;
   const glm::dvec3 start(0.0, 0.0, r0);
   const double nu = glm::dot(d, sun);
@@ -47,7 +48,7 @@ RayInscatter integrate_inscatter(double r0, const glm::dvec3& d, const glm::dvec
     const double rx = glm::length(x);
     const double alt = rx - kBottomRadius;
     if (skip_above_top && alt >= kThickness) continue;
-    const Medium m = medium_at(alt);
+    const Medium m = medium_at(alt, aerosol_scale);
     const double mu_sun = glm::dot(x, sun) / rx;
     const glm::dvec3 t_sun = sun_transmittance(alt, mu_sun);
     const glm::dvec3 sigma_s = m.rayleigh_scattering + glm::dvec3(m.mie_scattering);

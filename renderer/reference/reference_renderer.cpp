@@ -22,8 +22,10 @@ FrameImage render_reference(const ViewRequest& view, const weather::Weather& wea
     throw std::invalid_argument("render_reference: pixel_samples must be 1..16");
   const auto start = std::chrono::steady_clock::now();
 
+  const ReferenceScene scene = make_reference_scene(view, weather, wind_anchor, settings.cloud_phase);
   AtmosphereTableSettings table_settings = settings.tables;
   table_settings.threads = settings.threads;
+  table_settings.aerosol_scale = scene.aerosol_scale;
   const std::shared_ptr<const AtmosphereTables> tables = atmosphere_tables(table_settings);
   // The noise volumes and the weather map are only read inside cloud layers: a clear sky
   // does not need them (saves ~1-2 s of generation in a fresh process).
@@ -31,7 +33,6 @@ FrameImage render_reference(const ViewRequest& view, const weather::Weather& wea
   const std::shared_ptr<const ReferenceInputs> inputs =
       weather.layers.empty() ? no_inputs : reference_inputs(settings.inputs, weather.map_seed);
 
-  const ReferenceScene scene = make_reference_scene(view, weather, wind_anchor, settings.cloud_phase);
   const CloudField field(scene, *inputs, settings.honour_stratiform, settings.cumulus_domes, settings.noise_tiling);
   const PixelIntegrator integrator(field, *tables, settings);
 

@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "geodesy/solar_position.h"
+#include "renderer/model/atmosphere_constants.h"
 #include "renderer/model/droplet_optics.h"
 #include "renderer/model/scene_constants.h"
 
@@ -84,6 +85,7 @@ ReferenceScene make_reference_scene(const ViewRequest& view, const weather::Weat
   const double el = sp.elevation_deg * kDegToRad, az = sp.azimuth_deg * kDegToRad;
   s.sun_local = glm::dvec3(std::cos(el) * std::sin(az), std::cos(el) * std::cos(az), std::sin(el));
   s.ground_albedo = model::ground_albedo_rgb(weather.ground_albedo);
+  s.aerosol_scale = model::atmosphere::aerosol_scale_of(weather.visibility_m);
 
   const WindAnchor here{pos, view.unix_time_s};
   const WindAnchor& a = anchor ? *anchor : here;

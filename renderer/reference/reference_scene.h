@@ -98,6 +98,7 @@ struct ReferenceScene {
   double sun_azimuth_deg = 0.0;
   std::vector<ReferenceLayer> layers;  // at most kMaxCloudLayers, in the weather's order
   glm::dvec3 ground_albedo{0.0};       // Lambertian, rgb (model::ground_albedo_rgb of the weather)
+  double aerosol_scale = 1.0;          // the air's aerosol (model::atmosphere::aerosol_scale_of the visibility)
 };
 
 // anchor: nullptr anchors every layer's field at this view (no displacement), as

@@ -53,7 +53,7 @@ SceneMedium::SceneMedium(const reference::ReferenceScene& scene, const reference
     : scene_(scene), field_(field), centre_to_camera_(0.0, 0.0, scene.shell.radius_m + scene.shell.camera_alt_m) {}
 
 void SceneMedium::at(const glm::dvec3& x, double altitude_m, MediumPoint& out) const {
-  const reference::atmo::Medium air = reference::atmo::medium_at(altitude_m);
+  const reference::atmo::Medium air = reference::atmo::medium_at(altitude_m, scene_.aerosol_scale);
   out.rayleigh = air.rayleigh_scattering;
   out.aerosol = air.mie_scattering;
   out.absorption = air.extinction - air.rayleigh_scattering - glm::dvec3(air.mie_scattering);
@@ -201,7 +201,7 @@ TruthWorld make_scene_world(const reference::ReferenceScene& scene, const refere
   const std::vector<double>& e = w.band_edges;
   const FieldMaxima maxima = field_maxima(inputs);
   for (std::size_t i = 0; i + 1 < e.size(); ++i) {
-    const glm::dvec3 air = reference::atmo::max_extinction(e[i], e[i + 1]);
+    const glm::dvec3 air = reference::atmo::max_extinction(e[i], e[i + 1], scene.aerosol_scale);
     double cloud = 0.0;
     for (const reference::ReferenceLayer& L : scene.layers)
       cloud += cloud_extinction_bound(L, maxima, honour_stratiform, e[i], e[i + 1]);

@@ -73,6 +73,7 @@ WeatherLayers get(const wire::WeatherLayers& m) {
   WeatherLayers out;
   out.map_seed = m.map_seed();
   if (const auto albedo = m.ground_albedo(); albedo.has_value()) out.ground_albedo = *albedo;
+  if (const auto visibility = m.visibility_m(); visibility.has_value()) out.visibility_m = *visibility;  // m
   if (const auto* layers = m.layers()) {
     out.layers.reserve(layers->size());
     for (const wire::CloudLayer* l : *layers) {

@@ -64,7 +64,8 @@ struct BodyWriter {
                                               l.wind_east_mps, l.wind_north_mps, l.coverage_channel));
     }
     const fb::Optional<double> albedo = m.ground_albedo ? fb::Optional<double>(*m.ground_albedo) : fb::nullopt;
-    return wire::CreateWeatherLayers(b, b.CreateVector(layers), m.map_seed, albedo).Union();
+    const fb::Optional<double> visibility = m.visibility_m ? fb::Optional<double>(*m.visibility_m) : fb::nullopt;
+    return wire::CreateWeatherLayers(b, b.CreateVector(layers), m.map_seed, albedo, visibility).Union();
   }
   fb::Offset<void> operator()(const WeatherMapTile& m) {
     const auto data = b.CreateVector(m.data);

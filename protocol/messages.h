@@ -154,6 +154,9 @@ struct WeatherLayers {
   std::vector<CloudLayer> layers;  // 0..4, sorted by base_m, not overlapping
   std::uint32_t map_seed = 1;      // seed of the procedural global weather map
   std::optional<double> ground_albedo;  // grey Lambertian albedo [0, 1]; unset: the default
+  // Horizontal visibility at sea level (meteorological optical range), m, in
+  // [weather::kMinVisibility_m, weather::kMaxVisibility_m]; unset: the default haze (166 km).
+  std::optional<double> visibility_m;
   bool operator==(const WeatherLayers&) const = default;
 };
 

@@ -7,6 +7,7 @@ weather::Weather to_weather(const protocol::WeatherLayers& m) {
   w.name = "protocol";
   w.map_seed = m.map_seed;
   w.ground_albedo = m.ground_albedo;
+  w.visibility_m = m.visibility_m;
   for (const protocol::CloudLayer& l : m.layers) {
     weather::CloudLayer c;
     c.type = static_cast<weather::CloudType>(l.type);
@@ -26,6 +27,7 @@ protocol::WeatherLayers to_message(const weather::Weather& w) {
   protocol::WeatherLayers m;
   m.map_seed = w.map_seed;
   m.ground_albedo = w.ground_albedo;
+  m.visibility_m = w.visibility_m;
   for (const weather::CloudLayer& c : w.layers) {
     protocol::CloudLayer l;
     l.type = static_cast<std::uint8_t>(c.type);

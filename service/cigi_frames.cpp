@@ -155,6 +155,11 @@ int CigiFrames::frame(Clock::time_point now) {
 }
 
 void CigiFrames::update_weather() {
+  update_cloud_layers();
+  update_visibility();
+}
+
+void CigiFrames::update_cloud_layers() {
   if (state_.weather_generation() == 0) return;  // no cloud layers from the host: --weather's
   const double lat = state_.ownship() ? state_.ownship()->lat_deg : 0.0;
   const double lon = state_.ownship() ? state_.ownship()->lon_deg : 0.0;
@@ -172,6 +177,22 @@ void CigiFrames::update_weather() {
     weather_taken_();
   } catch (const std::exception& e) {
     report(std::string("the cloud layers cannot be drawn: ") + e.what());
+  }
+}
+
+void CigiFrames::update_visibility() {
+  if (state_.atmosphere_generation() == atmosphere_generation_) return;
+  atmosphere_generation_ = state_.atmosphere_generation();
+  const cigi::CigiVisibility v = cigi::cigi_visibility(state_);
+  if (v.note) report(*v.note);
+  if (renderer_.weather().visibility_m == v.visibility_m) return;  // the host's layers, just made, carry it
+  weather::Weather w = renderer_.weather();
+  w.visibility_m = v.visibility_m;  // m, within the drawn range
+  try {
+    if (renderer_.has_forecast()) renderer_.update_forecast_layers(w);  // keeps the forecast's maps
+    else renderer_.set_weather(w);                                     // the same seed: the same map
+  } catch (const std::exception& e) {
+    report(std::string("the visibility cannot be drawn: ") + e.what());
   }
 }
 

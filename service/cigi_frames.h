@@ -85,7 +85,13 @@ class CigiFrames {
   int frame(Clock::time_point now);
   cigi::StartOfFrame start_of_frame() const;
   void send_start_of_frame(Clock::time_point now);
+  // The host's weather, before a frame: its cloud layers (update_cloud_layers), then its
+  // Atmosphere Control's visibility (update_visibility).
   void update_weather();
+  void update_cloud_layers();
+  // A new visibility (cigi::cigi_visibility) goes into the weather drawn: the host's cloud
+  // layers', or, before it has sent any, the service's own; a clamped one is reported.
+  void update_visibility();
   int render_views(double utc_s);
   void publish(const cigi::View& v, const cigi::ViewPose& pose, const FrameImage& img, double utc_s, bool first_view);
   // The frustum of a view the host has not defined: --fov wide, --size's aspect (square pixels).
@@ -105,6 +111,7 @@ class CigiFrames {
   Clock::time_point start_, last_sent_, next_async_frame_;
   std::uint64_t weather_generation_ = 0;    // of the state, drawn
   cigi::CloudLayerSet defining_layers_;     // near the ownship, drawn (cigi::defining_layers)
+  std::uint64_t atmosphere_generation_ = 0;  // of the state, drawn
   std::uint64_t rejected_ = 0, reported_ = 0, merged_ = 0;
   bool told_no_ownship_ = false;
   std::set<std::uint16_t> ring_failed_;     // views whose ring could not be made (said once)

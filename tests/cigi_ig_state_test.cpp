@@ -1,7 +1,10 @@
 // The IG's state from a CIGI host's datagrams (protocol/cigi/cigi_ig_state.h): views built up
-// field by field, the ownship, the sun's time, global and regional cloud layers, and the
-// packets refused at this stage.
+// field by field, the ownship, the sun's time, the atmosphere, global and regional cloud
+// layers, and the packets refused at this stage.
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
 
 #include "geodesy/utc_time.h"
 #include "cigi_test_support.h"
@@ -121,6 +124,47 @@ TEST(CigiIgState, OwnshipTimeAndAtmosphere) {
   s.apply(host_datagram({c}));
   EXPECT_EQ(s.utc_s(), geo::parse_utc_iso8601("2026-06-21T16:30:00Z"));
   EXPECT_EQ(s.datagrams(), 2u);
+}
+
+// Atmosphere Control is kept as sent; its generation rises when the visibility changes (the
+// haze to redraw), not when the same visibility comes again. A packet with a non-finite field
+// is refused by the reader and changes nothing: not its humidity, not the visibility.
+TEST(CigiIgState, AtmosphereVisibilityAndANonFiniteOneRefusedWhole) {
+  IgState s;
+  EXPECT_EQ(s.atmosphere_generation(), 0u);
+  AtmosphereControl a;
+  a.humidity_pct = 50;
+  a.visibility_m = 20000.0f;
+  EXPECT_TRUE(s.apply(host_datagram({a})).empty());
+  EXPECT_EQ(s.atmosphere_generation(), 1u);
+  a.humidity_pct = 60;  // kept, not drawn: no new haze
+  s.apply(host_datagram({a}));
+  EXPECT_EQ(s.atmosphere_generation(), 1u);
+  EXPECT_EQ(s.atmosphere()->humidity_pct, 60);
+  for (const float bad : {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity()}) {
+    AtmosphereControl b = a;
+    b.humidity_pct = 80;
+    b.visibility_m = bad;
+    DatagramWriter w;
+    IgControl c;
+    c.host_frame = 9;
+    w.add(c);
+    w.add(b);
+    const HostDatagram d = read_host_datagram(w.bytes());
+    ASSERT_EQ(d.rejections.size(), 1u);
+    EXPECT_EQ(d.rejections[0].reason, std::string("Atmosphere Control at byte 24: visibility_m is ") +
+                                          (std::isnan(bad) ? "nan" : "inf") + " (must be finite)");
+    EXPECT_TRUE(s.apply(d).empty());
+    EXPECT_EQ(s.last_host_frame(), 9u) << "the rest of the datagram is used";
+    ASSERT_TRUE(s.atmosphere());
+    EXPECT_EQ(s.atmosphere()->visibility_m, 20000.0f) << "not half-applied";
+    EXPECT_EQ(s.atmosphere()->humidity_pct, 60);
+    EXPECT_EQ(s.atmosphere_generation(), 1u);
+  }
+  a.visibility_m = 9000.0f;
+  s.apply(host_datagram({a}));
+  EXPECT_EQ(s.atmosphere_generation(), 2u);
+  EXPECT_EQ(s.atmosphere()->visibility_m, 9000.0f);
 }
 
 // The host's frame number and timestamp (the shared-memory slot's sim time) follow its last

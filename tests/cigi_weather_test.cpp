@@ -166,5 +166,61 @@ TEST(CigiWeather, TheDefiningLayerIsTheNearerRegionsUnlessAGlobalOneIsGiven) {
   EXPECT_EQ(defining_layers(s, 46.0, 7.9)[0]->cloud_type, 5);
 }
 
+// Atmosphere Control's visibility range (m) is the weather's visibility_m, whatever the
+// atmospheric-model-enable flag (a sensor model's switch), with or without cloud layers.
+TEST(CigiWeather, TheAtmosphereControlsVisibilityIsTheWeathers) {
+  IgState s;
+  EXPECT_FALSE(cigi_visibility(s).visibility_m) << "before any Atmosphere Control: the renderer's own haze";
+  EXPECT_FALSE(cigi_weather(s, 46.0, 7.0, 64, 32).weather.visibility_m);
+  AtmosphereControl a;
+  a.model_enable = false;
+  a.visibility_m = 8000.0f;
+  EXPECT_TRUE(s.apply(host_datagram({a})).empty());
+  EXPECT_EQ(cigi_visibility(s).visibility_m, 8000.0);
+  EXPECT_FALSE(cigi_visibility(s).note);
+  EXPECT_EQ(cigi_weather(s, 46.0, 7.0, 64, 32).weather.visibility_m, 8000.0) << "no cloud layers";
+  a.model_enable = true;
+  a.visibility_m = 45000.0f;
+  EXPECT_TRUE(s.apply(host_datagram({a, layer(1, 7, 1000.0f, 1500.0f, 40.0f)})).empty());
+  const CigiWeather w = cigi_weather(s, 46.0, 7.0, 64, 32);
+  EXPECT_EQ(w.weather.visibility_m, 45000.0);
+  EXPECT_EQ(w.weather.layers.size(), 1u);
+  EXPECT_EQ(weather::validate(w.weather), "");
+  EXPECT_TRUE(w.notes.empty());
+}
+
+// A visibility outside [kMinVisibility_m, kMaxVisibility_m] is drawn at the nearer end, with a
+// note for the host (an IG Message), not refused; the weather stays one the renderer accepts.
+TEST(CigiWeather, AVisibilityOutsideTheDrawnRangeIsClampedWithANote) {
+  struct Case {
+    float sent_m;
+    double drawn_m;
+    const char* note;
+  };
+  for (const Case& c : {Case{300.0f, weather::kMinVisibility_m,
+                             "Atmosphere Control: visibility 300 m drawn as 1000 m (fog is not drawn)"},
+                        Case{0.0f, weather::kMinVisibility_m,
+                             "Atmosphere Control: visibility 0 m drawn as 1000 m (fog is not drawn)"},
+                        Case{999.5f, weather::kMinVisibility_m,
+                             "Atmosphere Control: visibility 999.5 m drawn as 1000 m (fog is not drawn)"},
+                        Case{5.0e6f, weather::kMaxVisibility_m,
+                             "Atmosphere Control: visibility 5000000 m drawn as 1000000 m (the largest drawn)"},
+                        Case{1000.0f, 1000.0, ""}, Case{1.0e6f, 1.0e6, ""}}) {
+    SCOPED_TRACE(c.sent_m);
+    IgState s;
+    AtmosphereControl a;
+    a.visibility_m = c.sent_m;
+    EXPECT_TRUE(s.apply(host_datagram({a})).empty()) << "not a rejection";
+    EXPECT_EQ(s.atmosphere()->visibility_m, c.sent_m) << "the state keeps what the host sent";
+    const CigiVisibility v = cigi_visibility(s);
+    EXPECT_EQ(v.visibility_m, c.drawn_m);
+    EXPECT_EQ(v.note.value_or(""), c.note);
+    const CigiWeather w = cigi_weather(s, 0.0, 0.0, 64, 32);
+    EXPECT_EQ(w.weather.visibility_m, c.drawn_m);
+    EXPECT_EQ(weather::validate(w.weather), "");
+    EXPECT_TRUE(w.notes.empty()) << "the note is cigi_visibility's alone";
+  }
+}
+
 }  // namespace
 }  // namespace cloudsvc::cigi

@@ -49,6 +49,7 @@ WeatherLayers sample_layers() {
   WeatherLayers w;
   w.map_seed = 0xdeadbeef;
   w.ground_albedo = 0.8;
+  w.visibility_m = 25000.5;
   w.layers.push_back(CloudLayer{9, 800.0, 1500.0, 0.6, 1.5, 12.0, 5.0, -3.0});
   w.layers.push_back(CloudLayer{7, 1500.0, 3200.0, 0.35, 1.0, 20.0, 8.5, 1.25});
   w.layers.push_back(CloudLayer{5, 9000.0, 10500.0, 0.2, 0.3, 40.0, 30.0, 20.0});
@@ -173,6 +174,42 @@ TEST(ProtocolCodec, ForecastLayerCoverageRoundTrips) {
   }
   const DecodeResult old = round(sample_tile());
   EXPECT_EQ(std::get<WeatherMapTile>(*old.message).layer_channels, 0);
+}
+
+// WeatherLayers.visibility_m (m): set, it survives the wire bit-exactly and becomes the
+// weather's; absent (a client that does not send it, or an older writer, whose table ends
+// at ground_albedo), it reads as unset: the service's own haze.
+TEST(ProtocolCodec, VisibilityRoundTripsAndReadsAsUnsetWhenAbsent) {
+  WeatherLayers w = sample_layers();
+  w.visibility_m = 0.1 + 12345.6;
+  const DecodeResult set = round(w);
+  ASSERT_TRUE(set.ok()) << set.error_text;
+  const auto& back = std::get<WeatherLayers>(*set.message).visibility_m;
+  ASSERT_TRUE(back.has_value());
+  EXPECT_EQ(std::memcmp(&*back, &*w.visibility_m, sizeof(double)), 0);
+  EXPECT_EQ(to_weather(w).visibility_m, w.visibility_m);
+  EXPECT_EQ(to_message(to_weather(w)), w);
+
+  w.visibility_m.reset();
+  const DecodeResult unset = round(w);
+  ASSERT_TRUE(unset.ok()) << unset.error_text;
+  EXPECT_FALSE(std::get<WeatherLayers>(*unset.message).visibility_m.has_value());
+  EXPECT_FALSE(to_weather(w).visibility_m.has_value());
+
+  flatbuffers::FlatBufferBuilder b;  // the table as written before visibility_m existed
+  const std::vector<flatbuffers::Offset<wire::CloudLayer>> none;
+  wire::WeatherLayersBuilder old(b);
+  old.add_layers(b.CreateVector(none));
+  old.add_map_seed(9);
+  old.add_ground_albedo(0.3);
+  const auto body = old.Finish().Union();
+  wire::FinishEnvelopeBuffer(b, wire::CreateEnvelope(b, 4, wire::Body::WeatherLayers, body));
+  const DecodeResult r = decode(std::vector<std::uint8_t>(b.GetBufferPointer(), b.GetBufferPointer() + b.GetSize()));
+  ASSERT_TRUE(r.ok()) << r.error_text;
+  const WeatherLayers& o = std::get<WeatherLayers>(*r.message);
+  EXPECT_EQ(o.map_seed, 9u);
+  EXPECT_EQ(o.ground_albedo, 0.3);
+  EXPECT_FALSE(o.visibility_m.has_value());
 }
 
 TEST(ProtocolCodec, DoublesSurviveBitExactly) {
@@ -302,6 +339,11 @@ std::vector<FloatField> float_fields() {
                  w.ground_albedo = v;
                  return Message(w);
                }});
+  f.push_back({"WeatherLayers.visibility_m", [](double v) {
+                 WeatherLayers w = sample_layers();
+                 w.visibility_m = v;
+                 return Message(w);
+               }});
   layer("base_m", &CloudLayer::base_m);
   layer("top_m", &CloudLayer::top_m);
   layer("coverage", &CloudLayer::coverage);
@@ -347,8 +389,9 @@ std::vector<FloatField> float_fields() {
 TEST(ProtocolValidate, RejectsNaNAndInfinityInEveryFloatField) {
   const auto fields = float_fields();
   // Pose 8 + velocity 3, FrameReady.pose 7 + FrameReady 3, SetView 1, SetTime 1,
-  // WeatherLayers.ground_albedo 1, CloudLayer 7, WeatherMapTile 5 + data, Stats 1.
-  EXPECT_EQ(fields.size(), 38u);
+  // WeatherLayers.ground_albedo and visibility_m 2, CloudLayer 7, WeatherMapTile 5 + data,
+  // Stats 1.
+  EXPECT_EQ(fields.size(), 39u);
   for (const FloatField& field : fields) {
     for (const double bad : {kNaN, -kNaN, kInf, -kInf}) {
       // Wind and velocity name the component; data names the element index.
@@ -500,6 +543,21 @@ TEST(ProtocolValidate, LayerRanges) {
                   "WeatherLayers.ground_albedo 1.5 out of range [0, 1]"});
   expect_invalid({"ground albedo -0.2", layers([](WeatherLayers& w) { w.ground_albedo = -0.2; }),
                   "WeatherLayers.ground_albedo"});
+  // Visibility, m: [weather::kMinVisibility_m, weather::kMaxVisibility_m]; below is fog.
+  expect_invalid({"visibility 500 m", layers([](WeatherLayers& w) { w.visibility_m = 500.0; }),
+                  "WeatherLayers.visibility_m 500 out of range [1000, 1e+06] m (below 1000 m is fog, not drawn)"});
+  expect_invalid({"visibility 0 m", layers([](WeatherLayers& w) { w.visibility_m = 0.0; }),
+                  "WeatherLayers.visibility_m 0 out of range"});
+  expect_invalid({"visibility 2000 km", layers([](WeatherLayers& w) { w.visibility_m = 2.0e6; }),
+                  "WeatherLayers.visibility_m 2e+06 out of range [1000, 1e+06]"});
+  expect_invalid({"visibility just below", layers([](WeatherLayers& w) {
+                    w.visibility_m = std::nextafter(weather::kMinVisibility_m, 0.0);
+                  }),
+                  "WeatherLayers.visibility_m"});
+  expect_invalid({"visibility nan", layers([](WeatherLayers& w) { w.visibility_m = kNaN; }),
+                  "WeatherLayers.visibility_m is nan (must be finite)"});
+  expect_valid("visibility at the fog limit", layers([](WeatherLayers& w) { w.visibility_m = weather::kMinVisibility_m; }));
+  expect_valid("visibility at the clear limit", layers([](WeatherLayers& w) { w.visibility_m = weather::kMaxVisibility_m; }));
   expect_invalid({"thickness 5 m", layers([](WeatherLayers& w) { w.layers[0].top_m = 805; }),
                   "WeatherLayers.layers[0].top_m"});
   expect_invalid({"coverage 1.01", layers([](WeatherLayers& w) { w.layers[0].coverage = 1.01; }),

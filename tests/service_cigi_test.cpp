@@ -2,13 +2,15 @@
 // log through the IG in both byte orders, and each host frame gets one Start of Frame and one
 // image per view (files DIR/view<ID>/, rings NAME-view<ID>); a view turned 60° right of the
 // nose shows what a single view with the aircraft turned 60° shows; bad datagrams are answered
-// with IG Messages while the IG goes on; an asynchronous IG renders at its own rate.
+// with IG Messages while the IG goes on, and so is a visibility below the drawn range; an
+// asynchronous IG renders at its own rate.
 #include <gtest/gtest.h>
 
 #include <OpenImageIO/imageio.h>
 
 #include <cmath>
 #include <fstream>
+#include <optional>
 
 #include "cloudsvc_run.h"
 #include "protocol/cigi/cigi_datagram.h"
@@ -205,6 +207,53 @@ TEST(CigiService, BadDatagramsAreAnsweredWithIgMessagesAndTheIgGoesOn) {
   EXPECT_TRUE(fs::exists(frame_file(svc, 0, 1))) << read_text_file(svc.log_path());
   EXPECT_EQ(svc.stop(), 0);
   EXPECT_NE(read_text_file(svc.log_path()).find("cloudsvc serve: CIGI: "), std::string::npos);
+}
+
+// An Atmosphere Control's visibility below the drawn range (fog, 300 m) is not refused: it is
+// drawn as 1000 m and an IG Message says so; the IG draws with it, then with a visibility in
+// the range (no message, nothing refused).
+TEST(CigiService, AVisibilityBelowTheDrawnRangeIsDrawnAtItsEndAndAnIgMessageSaysSo) {
+  ServiceProcess svc("cigi_visibility", {"--cigi", "udp:0"}, ServiceProcess::Tcp::No, ServiceProcess::OutDir::Yes);
+  ASSERT_TRUE(svc.running());
+  sim::CigiHostLink link(cigi_endpoint(svc));
+  cigi::EntityControl ownship;
+  ownship.lat_deg = 47.45;
+  ownship.lon_deg = 8.56;
+  ownship.alt_m = 3000.0;
+  std::string seen;  // the IG Messages, one a line
+  // Sends host frame n (with an Atmosphere Control of that visibility, m, if any) and reads
+  // until its Start of Frame, which carries the messages of its IG frame and follows the
+  // drawing of the frame before.
+  const auto host_frame = [&](std::uint32_t n, std::optional<float> visibility_m) {
+    cigi::IgControl control;
+    control.host_frame = n;
+    cigi::DatagramWriter w;
+    w.add(control);
+    w.add(ownship);
+    if (visibility_m) {
+      cigi::AtmosphereControl atmosphere;
+      atmosphere.visibility_m = *visibility_m;
+      w.add(atmosphere);
+    }
+    link.send(w.bytes());
+    const auto deadline = std::chrono::steady_clock::now() + 60s;
+    for (std::uint32_t last = 0; last < n;) {
+      const auto d = link.receive(deadline);
+      if (!d) return false;
+      if (!d->usable) continue;
+      last = d->start_of_frame.last_host_frame;
+      for (const cigi::IgMessage& m : d->messages) seen += m.text + "\n";
+    }
+    return true;
+  };
+  ASSERT_TRUE(host_frame(1, 300.0f)) << seen;
+  EXPECT_EQ(seen, "Atmosphere Control: visibility 300 m drawn as 1000 m (fog is not drawn)\n");
+  ASSERT_TRUE(host_frame(2, 20000.0f)) << seen;
+  ASSERT_TRUE(host_frame(3, std::nullopt)) << seen;
+  EXPECT_EQ(seen, "Atmosphere Control: visibility 300 m drawn as 1000 m (fog is not drawn)\n") << "nothing else";
+  EXPECT_TRUE(fs::exists(frame_file(svc, 0, 1))) << read_text_file(svc.log_path());
+  EXPECT_TRUE(fs::exists(frame_file(svc, 0, 2))) << read_text_file(svc.log_path());
+  EXPECT_EQ(svc.stop(), 0);
 }
 
 // A host that floods a synchronous IG (it should wait for each Start of Frame) neither

@@ -196,5 +196,23 @@ TEST(ServiceWeatherState, GroundAlbedoTileAppliesFromTheNextFrame) {
   EXPECT_EQ(svc.stop(), 0);
 }
 
+// WeatherLayers.visibility_m, m: outside [1000 m, 1000 km] the message is refused naming the
+// field; within, it is taken and drawn.
+TEST(ServiceWeatherState, AVisibilityOutsideItsRangeIsRejectedAndOneWithinIsTaken) {
+  ServiceProcess svc("visibility");
+  ASSERT_TRUE(svc.running());
+  ServiceConnection c(svc.address(), "visibility");
+  protocol::WeatherLayers fog = cumulus_layer();
+  fog.visibility_m = 300.0;
+  const protocol::Error e = expect_rejected(c, fog);
+  EXPECT_EQ(e.code, protocol::ErrorCode::InvalidField);
+  EXPECT_EQ(e.text.rfind("WeatherLayers.visibility_m 300 out of range", 0), 0u) << e.text;
+  protocol::WeatherLayers hazy = cumulus_layer();
+  hazy.visibility_m = 5000.0;
+  expect_accepted(c, hazy);
+  EXPECT_EQ(stats_of(render(c, svc, pose_at(kT))).nonfinite, 0u);
+  EXPECT_EQ(svc.stop(), 0);
+}
+
 }  // namespace
 }  // namespace cloudsvc::test

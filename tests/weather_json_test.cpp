@@ -128,6 +128,7 @@ TEST_F(WeatherJson, RoundTrip) {
   b.coverage = 1.0 / 3.0;
   w.layers = {a, b};
   w.ground_albedo = 0.1 + 0.7;
+  w.visibility_m = 12345.678 + 0.1;  // m, not exactly representable in decimal
   ASSERT_EQ(validate(w), "");
 
   const std::string text = to_json(w);
@@ -135,6 +136,7 @@ TEST_F(WeatherJson, RoundTrip) {
   EXPECT_EQ(back.name, w.name);
   EXPECT_EQ(back.map_seed, w.map_seed);
   EXPECT_EQ(back.ground_albedo, w.ground_albedo);
+  EXPECT_EQ(back.visibility_m, w.visibility_m);  // bit-exact
   ASSERT_EQ(back.layers.size(), w.layers.size());
   for (std::size_t i = 0; i < w.layers.size(); ++i) {
     const CloudLayer& x = w.layers[i];
@@ -164,6 +166,32 @@ TEST_F(WeatherJson, GroundAlbedo) {
   w.ground_albedo = std::nan("");
   EXPECT_EQ(validate(w).rfind("ground_albedo", 0), 0u) << validate(w);
   w.ground_albedo = 1.0;
+  EXPECT_EQ(validate(w), "");
+}
+
+// "visibility_m": the horizontal visibility at sea level, m, in [kMinVisibility_m,
+// kMaxVisibility_m]; absent: unset (the renderer's own haze). Below the range is fog.
+TEST_F(WeatherJson, Visibility) {
+  EXPECT_FALSE(load_weather_json(write("a.json", doc(layer("")))).visibility_m.has_value());
+  EXPECT_EQ(to_json(Weather{}).find("visibility_m"), std::string::npos) << "unset: not written";
+  const Weather hazy = load_weather_json(write("b.json", R"({"visibility_m": 8000, "layers": []})"));
+  ASSERT_TRUE(hazy.visibility_m.has_value());
+  EXPECT_EQ(*hazy.visibility_m, 8000.0);
+  for (const double edge : {kMinVisibility_m, kMaxVisibility_m}) {
+    Weather w;
+    w.visibility_m = edge;
+    EXPECT_EQ(load_weather_json(write("edge.json", to_json(w))).visibility_m, edge);
+  }
+  EXPECT_EQ(error_of(R"({"visibility_m": 500, "layers": []})"),
+            "visibility_m: 500 out of range [1000, 1000000] (below 1000 m is fog, not drawn)");
+  EXPECT_EQ(error_of(R"({"visibility_m": 2e6, "layers": []})").rfind("visibility_m: 2000000 out of range [1000, 1000000]", 0),
+            0u);
+  EXPECT_EQ(error_of(R"({"visibility_m": -1, "layers": []})").rfind("visibility_m: -1 out of range", 0), 0u);
+  EXPECT_NE(error_of(R"({"visibility_m": "10 km", "layers": []})").find("visibility_m"), std::string::npos);
+  Weather w;
+  w.visibility_m = std::nan("");
+  EXPECT_EQ(validate(w).rfind("visibility_m", 0), 0u) << validate(w);
+  w.visibility_m = 1.0e5;
   EXPECT_EQ(validate(w), "");
 }
 

@@ -241,7 +241,7 @@ Weather parse_weather_json(const std::string& text, const std::string& source_na
   if (!root.is_object()) {
     fail(source_name, "(top level)", "expected an object, got " + describe(root));
   }
-  check_keys(root, {"name", "map_seed", "ground_albedo", "layers"}, source_name, "");
+  check_keys(root, {"name", "map_seed", "ground_albedo", "visibility_m", "layers"}, source_name, "");
 
   Weather w;
   w.name = root.contains("name") ? get_string(root["name"], source_name, "name") : source_name;
@@ -258,6 +258,12 @@ Weather parse_weather_json(const std::string& text, const std::string& source_na
     probe.ground_albedo = get_number(root["ground_albedo"], source_name, "ground_albedo");
     if (auto issue = validate_detail(probe)) fail(source_name, issue->field, issue->problem);
     w.ground_albedo = probe.ground_albedo;
+  }
+  if (root.contains("visibility_m")) {
+    Weather probe;  // the range rule of validate_detail
+    probe.visibility_m = get_number(root["visibility_m"], source_name, "visibility_m");  // m
+    if (auto issue = validate_detail(probe)) fail(source_name, issue->field, issue->problem);
+    w.visibility_m = probe.visibility_m;
   }
 
   std::vector<std::pair<CloudLayer, int>> layers;  // with their index in the file
@@ -328,6 +334,7 @@ std::string to_json(const Weather& w) {
   root["name"] = w.name;
   root["map_seed"] = w.map_seed;
   if (w.ground_albedo) root["ground_albedo"] = *w.ground_albedo;
+  if (w.visibility_m) root["visibility_m"] = *w.visibility_m;
   root["layers"] = nlohmann::ordered_json::array();
   for (const CloudLayer& l : w.layers) {
     nlohmann::ordered_json j;

@@ -74,6 +74,8 @@ std::optional<std::string> IgState::apply(const HostPacket& packet) {
             utc_s_ = geo::utc_from_civil(static_cast<int>(p.date % 10000), static_cast<int>(p.date / 1000000),
                                          static_cast<int>(p.date / 10000 % 100), p.hour, p.minute, 0);
         } else if constexpr (std::is_same_v<P, AtmosphereControl>) {
+          // The reader refused it whole if a field was not finite: the visibility is a number.
+          if (!atmosphere_ || atmosphere_->visibility_m != p.visibility_m) ++atmosphere_generation_;
           atmosphere_ = p;
         } else if constexpr (std::is_same_v<P, EnvironmentalRegionControl>) {
           if (p.state == 2) {  // destroyed

@@ -76,7 +76,11 @@ class IgState {
   std::vector<View> views() const;
   // UTC seconds of the last valid Celestial Sphere Control, if any.
   const std::optional<double>& utc_s() const { return utc_s_; }
+  // The last Atmosphere Control, as the host sent it (its visibility is drawn as the haze:
+  // cigi_visibility in cigi_weather.h; the other fields are kept, not drawn).
   const std::optional<AtmosphereControl>& atmosphere() const { return atmosphere_; }
+  // Rises with every change of the Atmosphere Control's visibility (the haze to redraw).
+  std::uint64_t atmosphere_generation() const { return atmosphere_generation_; }
   const CloudLayerSet& global_layers() const { return global_layers_; }
   const std::map<std::uint16_t, Region>& regions() const { return regions_; }
   // Rises with every change of the cloud layers or regions (the weather to rebuild).
@@ -94,6 +98,7 @@ class IgState {
   std::map<std::uint16_t, View> views_;
   std::optional<double> utc_s_;
   std::optional<AtmosphereControl> atmosphere_;
+  std::uint64_t atmosphere_generation_ = 0;
   CloudLayerSet global_layers_;
   std::map<std::uint16_t, Region> regions_;
   std::uint64_t weather_generation_ = 0;

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <charconv>
 #include <cmath>
 #include <utility>
 
@@ -44,6 +45,14 @@ weather::CloudLayer renderer_layer(const WeatherControl& w, int slot) {
   return l;
 }
 
+// Shortest fixed-point text that reads back to v ("300", "0.5", "1000000"), m.
+template <class T>
+std::string metres(T v) {
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed);
+  return std::string(buf, r.ptr);
+}
+
 const char* layer_name(int slot) {
   static constexpr const char* kNames[] = {"layer 1", "layer 2", "layer 3"};
   return kNames[slot];
@@ -76,6 +85,18 @@ double region_weight(const EnvironmentalRegionControl& r, double lat_deg, double
   return 1.0 - outside / r.transition_perimeter_m;
 }
 
+CigiVisibility cigi_visibility(const IgState& state) {
+  CigiVisibility out;
+  if (!state.atmosphere()) return out;
+  const float sent = state.atmosphere()->visibility_m;  // m, finite and >= 0 (cigi_checks)
+  const double drawn = std::clamp(static_cast<double>(sent), weather::kMinVisibility_m, weather::kMaxVisibility_m);
+  out.visibility_m = drawn;
+  if (drawn != static_cast<double>(sent))
+    out.note = "Atmosphere Control: visibility " + metres(sent) + " m drawn as " + metres(drawn) + " m" +
+               (drawn > sent ? " (fog is not drawn)" : " (the largest drawn)");
+  return out;
+}
+
 CloudLayerSet defining_layers(const IgState& state, double near_lat_deg, double near_lon_deg) {
   CloudLayerSet out;
   for (int k = 0; k < 3; ++k) out[static_cast<std::size_t>(k)] = defining_layer(state, k, near_lat_deg, near_lon_deg);
@@ -85,6 +106,7 @@ CloudLayerSet defining_layers(const IgState& state, double near_lat_deg, double 
 CigiWeather cigi_weather(const IgState& state, double near_lat_deg, double near_lon_deg, int width, int height) {
   CigiWeather out;
   out.weather.name = "CIGI";
+  out.weather.visibility_m = cigi_visibility(state).visibility_m;
   // Layers 1..3, each from its defining Weather Control. The thickest keep their altitudes;
   // a thinner one keeps the largest part of its own that no thicker one holds.
   std::vector<weather::CloudLayer> candidates;

@@ -26,16 +26,30 @@ namespace cloudsvc::cigi {
 double region_weight(const EnvironmentalRegionControl& r, double lat_deg, double lon_deg);
 
 struct CigiWeather {
-  weather::Weather weather;      // its layers read coverage channels 0..2 (CIGI layers 1..3)
+  weather::Weather weather;      // its layers read coverage channels 0..2 (CIGI layers 1..3);
+                                 // its visibility_m: cigi_visibility's
   weather::WeatherMap map;       // R, G, B neutral, A 0, and every texel's layer coverage
   std::vector<std::string> notes;  // layers dropped or trimmed where they overlapped, one line each
 };
+
+// The visibility drawn for the host's Atmosphere Control (weather::Weather::visibility_m):
+// its visibility range, m, clamped into [weather::kMinVisibility_m, weather::kMaxVisibility_m],
+// whatever its atmospheric-model-enable flag (a sensor model's switch: docs/CIGI.md,
+// "Weather"); unset before any Atmosphere Control (the atmosphere model's own haze).
+struct CigiVisibility {
+  std::optional<double> visibility_m;
+  // When the clamp moved it, one line for the host, e.g. "Atmosphere Control: visibility
+  // 300 m drawn as 1000 m (fog is not drawn)".
+  std::optional<std::string> note;
+};
+CigiVisibility cigi_visibility(const IgState& state);
 
 // The weather of the state's cloud layers on a global map of width x height texels. A
 // layer's type, base, thickness and wind come from its global Weather Control, else from the
 // nearest region (to `near_lat_deg`, `near_lon_deg`) that has the layer. Layers are sorted by
 // base; where two overlap, the thicker keeps its altitudes and the other is cut to the part
-// outside it, or dropped when less than 10 m is left (a note says which).
+// outside it, or dropped when less than 10 m is left (a note says which). Its visibility is
+// cigi_visibility's (whose note is not among the notes).
 CigiWeather cigi_weather(const IgState& state, double near_lat_deg, double near_lon_deg, int width, int height);
 
 // The Weather Control that gives layer id k + 1 its type, altitudes and wind near a point:

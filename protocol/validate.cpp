@@ -223,7 +223,9 @@ Problem check(const WeatherLayers& m) {
   if (m.ground_albedo) CHECK(closed("WeatherLayers.ground_albedo", *m.ground_albedo, 0.0, 1.0));
   if (m.visibility_m) {  // m; below the range is fog, which the haze does not draw
     Problem p = closed("WeatherLayers.visibility_m", *m.visibility_m, weather::kMinVisibility_m, weather::kMaxVisibility_m);
-    if (p && std::isfinite(*m.visibility_m)) p = join(*p, " m (below ", num(weather::kMinVisibility_m), " m is fog, not drawn)");
+    if (p && std::isfinite(*m.visibility_m))
+      p = *m.visibility_m < weather::kMinVisibility_m ? join(*p, " m (below ", num(weather::kMinVisibility_m), " m is fog, not drawn)")
+                                                      : join(*p, " m");
     if (p) return p;
   }
   for (std::size_t i = 0; i < m.layers.size(); ++i) {

@@ -37,6 +37,15 @@ cli::UdpEndpoint cigi_endpoint(const ServiceProcess& svc) {
   return ig;
 }
 
+// The ownship (entity 0) over Zurich at 3000 m, level, heading north.
+cigi::EntityControl ownship_over_zurich() {
+  cigi::EntityControl ownship;
+  ownship.lat_deg = 47.45;
+  ownship.lon_deg = 8.56;
+  ownship.alt_m = 3000.0;
+  return ownship;
+}
+
 // A short log above scattered cumulus: 3000 m, level (a view yawed in the body axes of a
 // pitched aircraft would not be a level view turned).
 fs::path write_log(const fs::path& dir, double heading_deg) {
@@ -176,10 +185,7 @@ TEST(CigiService, BadDatagramsAreAnsweredWithIgMessagesAndTheIgGoesOn) {
 
   cigi::IgControl control;
   control.host_frame = 1;
-  cigi::EntityControl ownship;
-  ownship.lat_deg = 47.45;
-  ownship.lon_deg = 8.56;
-  ownship.alt_m = 3000.0;
+  cigi::EntityControl ownship = ownship_over_zurich();
   ownship.pitch_deg = -15.0f;
   cigi::EntityControl bad = ownship;
   bad.lat_deg = std::nan("");
@@ -216,10 +222,7 @@ TEST(CigiService, AVisibilityBelowTheDrawnRangeIsDrawnAtItsEndAndAnIgMessageSays
   ServiceProcess svc("cigi_visibility", {"--cigi", "udp:0"}, ServiceProcess::Tcp::No, ServiceProcess::OutDir::Yes);
   ASSERT_TRUE(svc.running());
   sim::CigiHostLink link(cigi_endpoint(svc));
-  cigi::EntityControl ownship;
-  ownship.lat_deg = 47.45;
-  ownship.lon_deg = 8.56;
-  ownship.alt_m = 3000.0;
+  cigi::EntityControl ownship = ownship_over_zurich();
   std::string seen;  // the IG Messages, one a line
   // Sends host frame n (with an Atmosphere Control of that visibility, m, if any) and reads
   // until its Start of Frame, which carries the messages of its IG frame and follows the
@@ -263,10 +266,7 @@ TEST(CigiService, AFloodOfHostFramesIsAppliedWithoutStallingTheIg) {
   ServiceProcess svc("cigi_flood", {"--cigi", "udp:0"}, ServiceProcess::Tcp::No, ServiceProcess::OutDir::Yes);
   ASSERT_TRUE(svc.running());
   sim::CigiHostLink link(cigi_endpoint(svc));
-  cigi::EntityControl ownship;
-  ownship.lat_deg = 47.45;
-  ownship.lon_deg = 8.56;
-  ownship.alt_m = 3000.0;
+  cigi::EntityControl ownship = ownship_over_zurich();
   constexpr std::uint32_t kFrames = 200;  // within a socket's receive buffer
   for (std::uint32_t n = 1; n <= kFrames; ++n) {
     cigi::IgControl control;

@@ -13,6 +13,7 @@
 #include "renderer/reference/reference_renderer.h"
 #include "tests/make_view.h"
 #include "weather/cloud_layer.h"
+#include "weather/station_weather.h"
 
 namespace cloudsvc::reference {
 namespace {
@@ -227,6 +228,7 @@ TEST(ReferenceAtmosphere, VisibilitySetsTheHaze) {
   const double own_v = -std::log(a::kVisibilityContrast) / (a::kRayleighScattering.y + a::kMieExtinction);
   std::printf("the model's own visibility: %.1f km\n", own_v / 1000.0);
   EXPECT_NEAR(a::aerosol_scale_for_visibility(own_v), 1.0, 1e-12);
+  EXPECT_NEAR(weather::kClearAirVisibility_m, own_v, 1e-3 * own_v);  // what METAR's "or more" counts as
   EXPECT_EQ(a::aerosol_scale_for_visibility(300e3), 0.0);
   EXPECT_EQ(a::aerosol_scale_for_visibility(weather::kMaxVisibility_m), 0.0);
   double last = 1e30;

@@ -7,9 +7,13 @@
 
 #include <cmath>
 #include <fstream>
+#include <optional>
+#include <string>
+#include <utility>
 
 #include "geodesy/utc_time.h"
 #include "grib_test_support.h"
+#include "weather/forecast_frame.h"
 #include "weather/forecast_weather.h"
 #include "weather/station_weather.h"
 #include "weather/weather_json.h"
@@ -20,6 +24,7 @@ using namespace cloudsvc::weather;
 using cloudsvc::test::GribTempDir;
 
 constexpr double kFt = 0.3048;
+constexpr double kSm = 1609.344;  // statute mile, m
 double utc(const char* iso) { return cloudsvc::geo::parse_utc_iso8601(iso).value(); }
 const double kReference = utc("2026-12-05T12:00:00Z");
 
@@ -103,6 +108,184 @@ TEST(Metar, MalformedGroupsAreQuoted) {
   EXPECT_EQ(error("LSZH 052450Z 24008KT"), "time group '052450Z' out of range (day 01-31, hour 00-23, minute 00-59)");
   EXPECT_EQ(error("lszh 051150Z"), "malformed station code 'lszh' (expected 4 letters, e.g. LSZH)");
   EXPECT_EQ(error("METAR"), "empty report");
+}
+
+// The prevailing visibility of the published reports above (their sky groups are checked
+// there, unchanged by reading the visibility): as reported, and as drawn.
+TEST(Metar, ReadsTheVisibilityOfPublishedReports) {
+  struct Case {
+    const char* report;
+    const char* text;
+    double reported_m;
+    std::optional<double> drawn_m;
+    std::size_t sky;
+  };
+  const Case cases[] = {
+      {"KSFO 070121Z 19023KT 1 1/2SM R28R/6000VP6000FT -RA BKN004 BKN013 OVC035 15/12 A2970 RMK AO2 T01500122 PNO $",
+       "1 1/2SM", 1.5 * kSm, 1.5 * kSm, 3},
+      {"ULLI 172030Z 23004MPS 9999 -SHRA SCT022CB BKN043 OVC066 13/10 Q1010 NOSIG", "9999", 10000.0, std::nullopt, 3},
+      {"EDDH 041050Z 29013KT 6000 SCT006 BKN009 04/03 Q1028 TEMPO BKN012", "6000", 6000.0, 6000.0, 2},
+      {"EHAM 100125Z 33004KT CAVOK M00/M01 Q1026 NOSIG", "CAVOK", 10000.0, std::nullopt, 0},
+      {"EFKI 172020Z AUTO 00000KT 2600 BR SKC 09/09 Q1006", "2600", 2600.0, 2600.0, 0},
+      {"KEYW 041053Z AUTO 13005KT 10SM CLR 24/22 A3000 RMK AO2 SLP159 T02440222", "10SM", 10 * kSm, std::nullopt, 0},
+      {"EFVR 171950Z AUTO 27006KT 220V310 9999 VV060 13/12 Q1006", "9999", 10000.0, std::nullopt, 1},
+      {"METAR KTTN 051853Z 04011KT 1/2SM VCTS SN FZFG BKN003 OVC010 M02/M02 A3006 RMK AO2 TSB40 SLP176 P0002 T10171017=",
+       "1/2SM", 0.5 * kSm, kMinVisibility_m, 2},
+  };
+  for (const Case& c : cases) {
+    const MetarReport r = parse_metar(c.report, kReference);
+    EXPECT_EQ(r.visibility_text, c.text) << c.report;
+    EXPECT_NEAR(r.visibility_m, c.reported_m, 1e-9) << c.report;
+    EXPECT_EQ(drawn_visibility(r), c.drawn_m) << c.report;
+    EXPECT_EQ(r.sky.size(), c.sky) << c.report;
+  }
+  // An automatic station's visibility not observed ("////"), and NIL: none.
+  MetarReport r = parse_metar("EFKA 181750Z AUTO 30007KT //// NSC 16/04 Q1015", kReference);
+  EXPECT_TRUE(std::isnan(r.visibility_m));
+  EXPECT_EQ(drawn_visibility(r), std::nullopt);
+  EXPECT_TRUE(std::isnan(parse_metar("LSZH 051150Z NIL=", kReference).visibility_m));
+}
+
+// Each form of the group (composed in the published format): WMO metres with and without
+// NDV, statute miles whole, fractional, whole and fraction in two groups, M and P.
+TEST(Metar, ReadsEachFormOfTheVisibilityGroup) {
+  const auto read = [](const char* visibility) {
+    return parse_metar(std::string("LSZH 051150Z 24008KT ") + visibility + " BKN012 05/01 Q1021", kReference);
+  };
+  struct Case {
+    const char* group;
+    double reported_m;
+    bool or_more;
+  };
+  for (const Case& c : {Case{"0800", 800.0, false}, Case{"4000", 4000.0, false}, Case{"9999", 10000.0, true},
+                        Case{"4000NDV", 4000.0, false}, Case{"9999NDV", 10000.0, true}, Case{"3SM", 3 * kSm, false},
+                        Case{"7SM", 7 * kSm, false}, Case{"10SM", 10 * kSm, true}, Case{"15SM", 15 * kSm, true},
+                        Case{"1/2SM", 0.5 * kSm, false}, Case{"3/16SM", 3.0 / 16 * kSm, false},
+                        Case{"1 1/2SM", 1.5 * kSm, false}, Case{"2 3/4SM", 2.75 * kSm, false},
+                        Case{"M1/4SM", 0.25 * kSm, false}, Case{"P6SM", 6 * kSm, true}}) {
+    const MetarReport r = read(c.group);
+    EXPECT_EQ(r.visibility_text, c.group);
+    EXPECT_NEAR(r.visibility_m, c.reported_m, 1e-9) << c.group;
+    EXPECT_EQ(r.visibility_or_more, c.or_more) << c.group;
+    ASSERT_EQ(r.sky.size(), 1u) << c.group;  // the group after it is still the sky's
+    EXPECT_DOUBLE_EQ(r.sky[0].height_ft, 1200.0) << c.group;
+  }
+  EXPECT_NEAR(drawn_visibility(read("4000NDV")).value(), 4000.0, 1e-9);
+  EXPECT_NEAR(drawn_visibility(read("3SM")).value(), 4828.032, 1e-9);
+  EXPECT_NEAR(drawn_visibility(read("7SM")).value(), 7 * kSm, 1e-9);  // below 10 SM: drawn as reported
+  EXPECT_NEAR(drawn_visibility(read("2 3/4SM")).value(), 2.75 * kSm, 1e-9);
+}
+
+// 10 km or more (9999, CAVOK), more than 6 SM (P6SM) and 10 SM or more say only that the
+// visibility is at least that: unset, the model's own clear air, not 10 km of haze.
+TEST(Metar, VisibilityOf10KmOrMoreIsLeftUnset) {
+  for (const char* report : {"LSZH 051150Z 24008KT 9999 BKN012 05/01 Q1021", "LSZH 051150Z 24008KT 9999NDV BKN012 05/01 Q1021",
+                             "LSZH 051150Z 24008KT CAVOK 05/01 Q1021", "KDEN 051153Z 00000KT P6SM FEW250 M03/M11 A2985",
+                             "KDEN 051153Z 00000KT 10SM FEW250 M03/M11 A2985", "CYYZ 051200Z 27010KT 15SM FEW250 M03/M11 A2985",
+                             "KMWN 051200Z 27010KT 100SM FEW250 M03/M11 A2985"}) {
+    const MetarReport r = parse_metar(report, kReference);
+    EXPECT_TRUE(r.visibility_or_more) << report;
+    EXPECT_EQ(drawn_visibility(r), std::nullopt) << report;
+  }
+  // CAVOK's visibility is the report's prevailing one; a report with neither has none.
+  EXPECT_EQ(parse_metar("LSZH 051150Z 24008KT CAVOK 05/01 Q1021", kReference).visibility_text, "CAVOK");
+  EXPECT_EQ(drawn_visibility(parse_metar("LSZH 051150Z 24008KT BKN012 05/01 Q1021", kReference)), std::nullopt);
+}
+
+// Fog: below the least visibility the haze draws, the drawn one is weather::kMinVisibility_m
+// and the report keeps the one reported (the reader has no notes: metar.h).
+TEST(Metar, FogIsClampedToTheLeastVisibilityDrawn) {
+  for (const auto& [report, reported] :
+       {std::pair{"LSGS 050950Z VRB02KT 0300 FG VV001 01/01 Q1024", 300.0},
+        std::pair{"LSZH 050950Z VRB02KT 0400 FG VV002 01/01 Q1024", 400.0},
+        std::pair{"LSZH 050950Z VRB02KT 0000 FG VV000 01/01 Q1024", 0.0},
+        std::pair{"LSZH 050950Z VRB02KT 0999 BR OVC003 01/01 Q1024", 999.0},
+        std::pair{"KTTN 051853Z 04011KT M1/4SM FG VV001 M02/M02 A3006", 0.25 * kSm}}) {
+    const MetarReport r = parse_metar(report, kReference);
+    EXPECT_NEAR(r.visibility_m, reported, 1e-9) << report;
+    EXPECT_EQ(drawn_visibility(r), kMinVisibility_m) << report;
+  }
+  EXPECT_EQ(drawn_visibility(parse_metar("LSZH 050950Z VRB02KT 1000 BR OVC003 01/01 Q1024", kReference)), kMinVisibility_m);
+  EXPECT_EQ(drawn_visibility(parse_metar("LSZH 050950Z VRB02KT 1200 BR OVC003 01/01 Q1024", kReference)), 1200.0);
+}
+
+// A directional minimum visibility (VVVV and a direction) after the prevailing one is not
+// the prevailing visibility, and not a malformed group (composed in the published format).
+TEST(Metar, DirectionalMinimumVisibilityIsNotThePrevailingOne) {
+  MetarReport r = parse_metar("LSZH 051150Z 24008KT 4000 1200SW BR BKN004 OVC010 05/04 Q1010", kReference);
+  EXPECT_EQ(r.visibility_text, "4000");
+  EXPECT_DOUBLE_EQ(drawn_visibility(r).value(), 4000.0);
+  ASSERT_EQ(r.sky.size(), 2u);
+  EXPECT_DOUBLE_EQ(r.sky[0].height_ft, 400.0);
+  r = parse_metar("LSZH 051150Z 24008KT 9999 0800NE BKN004 05/04 Q1010", kReference);
+  EXPECT_EQ(r.visibility_text, "9999");
+  EXPECT_EQ(drawn_visibility(r), std::nullopt);
+  EXPECT_EQ(r.sky.size(), 1u);
+  for (const char* d : {"N", "NE", "E", "SE", "S", "SW", "W", "NW"})
+    EXPECT_DOUBLE_EQ(parse_metar(std::string("LSZH 051150Z 3000 1500") + d + " BKN004", kReference).visibility_m, 3000.0) << d;
+}
+
+TEST(Metar, MalformedVisibilityGroupsAreQuoted) {
+  const auto error = [](const std::string& visibility) {
+    try {
+      parse_metar("LSZH 051150Z 24008KT " + visibility + " BKN012 05/01 Q1021", kReference);
+    } catch (const MetarError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  const std::string format =
+      "expected 4 digits in metres, optionally with NDV or a direction N, NE, E, SE, S, SW, W or NW, e.g. 0800, "
+      "9999NDV or 1200SW, or statute miles ending in SM, e.g. 10SM, 1/2SM, 1 1/2SM, M1/4SM or P6SM";
+  EXPECT_EQ(error("1200SX"), "malformed visibility group '1200SX' (" + format + ")");
+  EXPECT_EQ(error("9999NDVX"), "malformed visibility group '9999NDVX' (" + format + ")");
+  EXPECT_EQ(error("P6.5SM"), "malformed visibility group 'P6.5SM' (" + format + ")");
+  EXPECT_EQ(error("1/SM"), "malformed visibility group '1/SM' (" + format + ")");
+  EXPECT_EQ(error("3/0SM"), "malformed visibility group '3/0SM' (" + format +
+                                "; a fraction is 1/16 to 15/16 of a mile, whole miles apart)");
+  EXPECT_EQ(error("11/2SM").substr(0, 41), "malformed visibility group '11/2SM' (expe");
+  EXPECT_EQ(error("1 3/5SM").substr(0, 42), "malformed visibility group '1 3/5SM' (expe");
+  // Not visibility groups: left alone as before (wind, variation, runway visual range).
+  for (const char* other : {"00000KT 0000KT", "220V310", "R28R/6000VP6000FT", "R24/P2000N", "1 SM", "////SM", "////NDV"})
+    EXPECT_EQ(error(other), "") << other;
+}
+
+// The visibility reaches the weather drawn (forecast_weather_at): at an aerodrome its own,
+// blended as extinction between aerodromes and in time, "or more" counting as clear air.
+TEST(Metar, VisibilityReachesTheWeatherDrawn) {
+  GribTempDir dir;
+  const auto file = dir.file("reports.metar");
+  std::ofstream(file) << "2026/12/05 12:00\n"
+                         "METAR LSZH 051050Z 24008KT 3000 BR SCT030 05/01 Q1021=\n"
+                         "METAR LSZH 051150Z 24008KT 9999 OVC030 05/01 Q1021=\n"
+                         "METAR LSZB 051050Z 24004KT 0400 FG VV001 04/00 Q1022=\n"
+                         "METAR LSZB 051150Z 24004KT 0400 FG VV001 04/00 Q1022=\n";
+  const std::unique_ptr<ForecastWeather> w = load_forecast_weather({file.string()}, utc("2030-01-01T00:00:00Z"));
+  const std::vector<double> t = w->valid_times();
+  ASSERT_EQ(t.size(), 2u);
+  const Aerodrome& zh = *find_aerodrome("LSZH");
+  const Aerodrome& be = *find_aerodrome("LSZB");
+  // At the aerodromes their own (Bern's fog clamped), within what the other adds there.
+  EXPECT_NEAR(forecast_weather_at(*w, zh.lat_deg, zh.lon_deg, t[0]).visibility_m.value(), 3000.0, 1.0);
+  EXPECT_NEAR(w->visibility_at(be.lat_deg, be.lon_deg, t[1]).value(), kMinVisibility_m, 0.1);
+  // Zurich's 9999 is clear air there; halfway in time, the mean extinction of the two.
+  EXPECT_EQ(forecast_weather_at(*w, zh.lat_deg, zh.lon_deg, t[1]).visibility_m, std::nullopt);
+  EXPECT_NEAR(w->visibility_at(zh.lat_deg, zh.lon_deg, 0.5 * (t[0] + t[1])).value(),
+              1.0 / (0.5 / 3000.0 + 0.5 / kClearAirVisibility_m), 1.0);
+  // Between them the visibility grows steadily from Bern's fog towards Zurich.
+  double previous = 0.0;
+  for (int i = 0; i <= 20; ++i) {
+    const double f = i / 20.0;
+    const std::optional<double> v =
+        w->visibility_at(be.lat_deg + f * (zh.lat_deg - be.lat_deg), be.lon_deg + f * (zh.lon_deg - be.lon_deg), t[0]);
+    ASSERT_TRUE(v.has_value()) << f;
+    EXPECT_GE(*v, previous - 1e-6) << f;
+    EXPECT_GE(*v, kMinVisibility_m);
+    previous = *v;
+  }
+  // The weather drawn is valid; far from every aerodrome the visibility is unset.
+  EXPECT_EQ(validate(forecast_weather_at(*w, 47.2, 7.9, t[0])), "");
+  EXPECT_EQ(forecast_weather_at(*w, 0.0, -30.0, t[0]).visibility_m, std::nullopt);
 }
 
 TEST(Metar, LayersAboveTheAerodromeAtSeaLevelAndInTheMountains) {
@@ -215,6 +398,8 @@ TEST(Metar, BadFilesNameTheFileAndLine) {
   EXPECT_EQ(read("a.metar", "METAR LSZH 051150Z 24008KT BKN030=\nMETAR XQZW 051150Z 24008KT BKN030=\n"),
             ": line 2: station 'XQZW' is not in the aerodrome table (4782 medium and large aerodromes of OurAirports, docs/WEATHER.md)");
   EXPECT_EQ(read("b.txt", "\nMETAR LSZH 051150Z 24008KT 9999 FEW03 05/01 Q1021=\n").substr(0, 39), ": line 2: malformed sky group 'FEW03' (");
+  EXPECT_EQ(read("b2.metar", "METAR LSZH 051150Z 24008KT 3/0SM BKN030=\n").substr(0, 46),
+            ": line 1: malformed visibility group '3/0SM' (");
   EXPECT_EQ(read("c.metar", "# nothing\n\n"), ": no METAR reports");
   EXPECT_EQ(read("d.metar", "2026/13/05 12:00\nLSZH 051150Z CAVOK\n"), ": line 1: invalid date '2026/13/05 12:00'");
   EXPECT_EQ(read("e.json", "{}"),

@@ -39,6 +39,7 @@ Weather forecast_weather_at(const ForecastWeather& w, double lat_deg, double lon
   Weather out;
   out.name = w.name();
   out.layers = layers_from_column(regional_column(w, lat_deg, lon_deg, utc_s));
+  out.visibility_m = w.visibility_at(lat_deg, lon_deg, utc_s);  // at the position: the haze around the viewer
   return out;
 }
 

@@ -7,7 +7,9 @@
 // point (cloud_column.h). Each layer reads its local coverage from its slot's channel of the
 // weather map's layer coverage (CloudLayer::coverage_channel), which holds the slots' cover
 // at every texel: the cloud is where the forecast puts it, at the altitudes of the region.
-// Moving more than kForecastRegion_m / 2 calls for new layers (the service does).
+// Moving more than kForecastRegion_m / 2 calls for new layers (the service does). The
+// visibility (the haze, one for the whole view) is the source's at the position itself
+// (ForecastWeather::visibility_at), not averaged over the region.
 #pragma once
 
 #include <cstddef>
@@ -25,8 +27,8 @@ inline constexpr double kForecastRegion_m = 150000.0;
 // The regional column around a position (degrees) at a time (UTC seconds).
 CloudColumn regional_column(const ForecastWeather& w, double lat_deg, double lon_deg, double utc_s);
 
-// The weather of the region: its layers (each with its coverage channel), named after the
-// source; validate() accepts it.
+// The weather of the region: its layers (each with its coverage channel) and the visibility
+// at the position, named after the source; validate() accepts it.
 Weather forecast_weather_at(const ForecastWeather& w, double lat_deg, double lon_deg, double utc_s);
 
 // The forecast steps to hold as keyframes around a time: [first, first + count) of `steps`

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,12 @@ class ForecastWeather {
   // The bands over a point (degrees) at a time (UTC seconds), blended between the times
   // around it; before the first and after the last, the nearest holds.
   virtual CloudColumn column_at(double lat_deg, double lon_deg, double utc_s) const = 0;
+  // The visibility over a point at a time (Weather::visibility_m, m, within its range), or
+  // nullopt where the source gives none: the model's own clear air. METAR reports give their
+  // prevailing visibility (station_weather.h); GRIB2 forecasts none (not read).
+  virtual std::optional<double> visibility_at(double lat_deg, double lon_deg, double utc_s) const {
+    return std::nullopt;
+  }
   // The times the source gives weather for, ascending (UTC seconds); never empty.
   virtual std::vector<double> valid_times() const = 0;
   // The files it was read from, for logs.

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -11,6 +12,7 @@
 #include <regex>
 
 #include "geodesy/utc_time.h"
+#include "weather/cloud_layer.h"
 #include "weather/file_extension.h"
 #include "weather/weather_json.h"
 
@@ -76,6 +78,83 @@ std::optional<SkyGroup> sky_group(std::string_view t) {
   return g;
 }
 
+// Visibility groups (WMO-No. 306, FM 15, 15.6; FMH-1, ch. 6 and 12).
+constexpr double kStatuteMile_m = 1609.344;  // the international statute mile
+constexpr double kWmoOrMore_m = 10000.0;     // VVVV 9999 and CAVOK: 10 km or more
+// Automated US stations report at most 10 SM (FMH-1): 10 SM and more counts as a lower bound.
+constexpr double kUsOrMore_mi = 10.0;
+
+const char* const kVisibilityFormat =
+    "expected 4 digits in metres, optionally with NDV or a direction N, NE, E, SE, S, SW, W or NW, e.g. 0800, "
+    "9999NDV or 1200SW, or statute miles ending in SM, e.g. 10SM, 1/2SM, 1 1/2SM, M1/4SM or P6SM";
+
+struct VisibilityGroup {
+  double m = std::numeric_limits<double>::quiet_NaN();  // NaN: not observed ("////")
+  bool or_more = false;                                 // a lower bound: 9999, P..SM, 10 SM and more
+  bool directional = false;  // a directional minimum (1200SW), not the prevailing visibility
+  int tokens = 1;            // 2 for whole miles and a fraction ("1 1/2SM")
+  std::string text;          // the group as written
+};
+
+bool all_letters(std::string_view s) {
+  return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= 'A' && c <= 'Z'; });
+}
+
+// Miles of a fraction n/d of a statute mile; MetarError unless a reportable one (FMH-1:
+// sixteenths, eighths, quarters, halves, below one mile).
+double fraction_miles(const std::string& n, const std::string& d, const std::string& text) {
+  const int num = to_int(n), den = to_int(d);
+  if (num < 1 || num >= den || (den != 2 && den != 4 && den != 8 && den != 16))
+    throw MetarError("malformed visibility group '" + text + "' (" + kVisibilityFormat +
+                     "; a fraction is 1/16 to 15/16 of a mile, whole miles apart)");
+  return static_cast<double>(num) / den;
+}
+
+// A visibility group at token t (next: the token after it, or empty), or nullopt when t is
+// not one; MetarError when it is unambiguously one but malformed: 4 digits and letters other
+// than a wind's unit (KT, MPS, KMH), or a number, optionally after M or P, ending in SM.
+std::optional<VisibilityGroup> visibility_group(std::string_view t, std::string_view next) {
+  static const std::regex metres("([0-9]{4})(NDV|N|NE|E|SE|S|SW|W|NW)?");
+  // whole miles up to 3 digits: manual stations may report more than 10 SM (15SM, 100SM)
+  static const std::regex miles("([MP])?(?:([0-9]{1,3})|([0-9]{1,2})/([0-9]{1,2}))SM");
+  static const std::regex whole("[0-9]{1,2}");
+  static const std::regex fraction("([0-9]{1,2})/([0-9]{1,2})SM");
+  VisibilityGroup v;
+  v.text = std::string(t);
+  if (t == "////" || t == "////NDV" || t == "////SM") return v;  // not observed (automatic stations)
+  std::cmatch m;
+  const bool metres_like = t.size() >= 4 && digits(t.substr(0, 4)) &&
+                           (t.size() == 4 || (all_letters(t.substr(4)) && t.substr(4) != "KT" &&
+                                              t.substr(4) != "MPS" && t.substr(4) != "KMH"));
+  if (metres_like) {
+    if (!std::regex_match(t.data(), t.data() + t.size(), m, metres))
+      throw MetarError("malformed visibility group '" + v.text + "' (" + kVisibilityFormat + ")");
+    v.directional = m[2].matched && m[2].str() != "NDV";
+    v.or_more = to_int(m[1].str()) == 9999;
+    v.m = v.or_more ? kWmoOrMore_m : to_int(m[1].str());  // m; 0000: less than 50 m
+    return v;
+  }
+  std::cmatch f;
+  if (std::regex_match(t.data(), t.data() + t.size(), m, whole) && !next.empty() &&
+      std::regex_match(next.data(), next.data() + next.size(), f, fraction)) {  // "1 1/2SM"
+    v.text += " " + std::string(next);
+    v.tokens = 2;
+    v.m = (to_int(m[0].str()) + fraction_miles(f[1].str(), f[2].str(), v.text)) * kStatuteMile_m;
+    v.or_more = v.m >= kUsOrMore_mi * kStatuteMile_m;
+    return v;
+  }
+  const bool miles_like = t.size() > 2 && t.substr(t.size() - 2) == "SM" &&
+                          (std::isdigit(static_cast<unsigned char>(t[0])) ||
+                           ((t[0] == 'M' || t[0] == 'P') && std::isdigit(static_cast<unsigned char>(t[1]))));
+  if (!miles_like) return std::nullopt;
+  if (!std::regex_match(t.data(), t.data() + t.size(), m, miles))
+    throw MetarError("malformed visibility group '" + v.text + "' (" + kVisibilityFormat + ")");
+  const double mi = m[2].matched ? to_int(m[2].str()) : fraction_miles(m[3].str(), m[4].str(), v.text);
+  v.m = mi * kStatuteMile_m;                                // M: less than, P: more than this
+  v.or_more = m[1].str() == "P" || mi >= kUsOrMore_mi;
+  return v;
+}
+
 }  // namespace
 
 double sky_cover(SkyGroup::Amount a) {
@@ -87,6 +166,11 @@ double sky_cover(SkyGroup::Amount a) {
     case SkyGroup::Amount::Obscured: return 1.0;
   }
   return 0.0;
+}
+
+std::optional<double> drawn_visibility(const MetarReport& report) {
+  if (!std::isfinite(report.visibility_m) || report.visibility_or_more) return std::nullopt;
+  return std::max(report.visibility_m, kMinVisibility_m);  // fog is clamped: the haze draws no less
 }
 
 MetarReport parse_metar(std::string_view report, double reference_utc_s) {
@@ -123,6 +207,7 @@ MetarReport parse_metar(std::string_view report, double reference_utc_s) {
   const std::optional<double> t = latest_date(r.day, r.hour, r.minute, reference_utc_s + 86400.0);
   if (!t) throw MetarError("time group '" + std::string(time) + "': no such day in the year before the reference time");
   r.utc_s = *t;
+  bool visibility_read = false;  // the prevailing visibility is the first visibility group
   for (; k < tokens.size(); ++k) {
     const std::string_view g = tokens[k];
     if (g == "RMK" || g == "NOSIG" || g == "BECMG" || g == "TEMPO") break;  // remarks and forecasts
@@ -132,6 +217,22 @@ MetarReport parse_metar(std::string_view report, double reference_utc_s) {
     }
     if (g == "CLR" || g == "SKC" || g == "NSC" || g == "NCD" || g == "CAVOK") {
       r.clear = true;
+      if (g == "CAVOK" && !visibility_read) {  // visibility 10 km or more, no cloud below 5000 ft
+        visibility_read = true;
+        r.visibility_m = kWmoOrMore_m;
+        r.visibility_or_more = true;
+        r.visibility_text = "CAVOK";
+      }
+      continue;
+    }
+    const std::string_view next = k + 1 < tokens.size() ? tokens[k + 1] : std::string_view();
+    if (std::optional<VisibilityGroup> v = visibility_group(g, next)) {
+      k += v->tokens - 1;
+      if (v->directional || visibility_read) continue;  // a directional minimum, or a second group
+      visibility_read = true;
+      r.visibility_m = v->m;
+      r.visibility_or_more = v->or_more;
+      r.visibility_text = v->text;
       continue;
     }
     if (std::optional<SkyGroup> s = sky_group(g)) r.sky.push_back(*s);

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 
 #include "weather/sphere_geometry.h"
@@ -22,6 +23,13 @@ void widen(BandValues& b, double cover, double base_m, double top_m) {
   b.cover = given(b.cover) ? std::max(b.cover, cover) : cover;
   b.base_m = given(b.base_m) ? std::min(b.base_m, base_m) : base_m;
   b.top_m = given(b.top_m) ? std::max(b.top_m, top_m) : top_m;
+}
+
+// A report's visibility to blend: the drawn one, the clear air for "or more", NaN when the
+// report gives none.
+double blended_visibility(const MetarReport& r) {
+  if (r.nil || !given(r.visibility_m)) return std::numeric_limits<double>::quiet_NaN();
+  return drawn_visibility(r).value_or(kClearAirVisibility_m);
 }
 
 }  // namespace
@@ -77,7 +85,7 @@ StationWeather StationWeather::from_reports(const std::vector<MetarReport>& repo
     Station& s = by_code[r.station];
     s.aerodrome = *a;
     s.unit = unit_vector(a->lat_deg, a->lon_deg);
-    s.observations.push_back({r.utc_s, column_of_report(r, *a)});
+    s.observations.push_back({r.utc_s, column_of_report(r, *a), blended_visibility(r)});
   }
   for (auto& [code, s] : by_code) {
     // Ascending time; of two reports at one time (a SPECI correcting a METAR) the later in the file.
@@ -128,6 +136,37 @@ CloudColumn StationWeather::station_column(const Station& s, double utc_s) const
   const Observation& a = *(after - 1);
   const Observation& b = *after;
   return blend_columns(a.column, b.column, (utc_s - a.utc_s) / (b.utc_s - a.utc_s));
+}
+
+double StationWeather::station_visibility(const Station& s, double utc_s) const {
+  const std::vector<Observation>& o = s.observations;
+  if (!given(utc_s) || utc_s <= o.front().utc_s) return o.front().visibility_m;
+  if (utc_s >= o.back().utc_s) return o.back().visibility_m;
+  const auto after = std::upper_bound(o.begin(), o.end(), utc_s, [](double t, const Observation& x) { return t < x.utc_s; });
+  const double a = (after - 1)->visibility_m, b = after->visibility_m;
+  if (!given(a) || !given(b)) return given(a) ? a : b;  // given in one of them: it holds
+  const double w = (utc_s - (after - 1)->utc_s) / (after->utc_s - (after - 1)->utc_s);
+  return 1.0 / ((1.0 - w) / a + w / b);  // extinction blended linearly
+}
+
+std::optional<double> StationWeather::visibility_at(double lat_deg, double lon_deg, double utc_s) const {
+  const std::array<double, 3> p = unit_vector(lat_deg, lon_deg);
+  double weights = 0.0, extinction = 0.0;  // sums of w and w / V
+  for (const Station& s : stations_) {
+    const double d = std::max(kMeanEarthRadius_m * arc_between(p, s.unit), 1.0);
+    if (d >= kStationReach_m) continue;
+    const double v = station_visibility(s, utc_s);
+    if (!given(v)) continue;
+    const double r = (kStationReach_m - d) / (kStationReach_m * d);
+    weights += r * r;
+    extinction += r * r / v;
+  }
+  if (weights <= 0.0) return std::nullopt;  // no aerodrome within reach reports a visibility
+  const double v = weights / extinction;
+  // Within 1 % of the clear air's extinction (a clear aerodrome's own, a hazy one's far off):
+  // the clear air, unset.
+  if (v >= kClearAirVisibility_m / 1.01) return std::nullopt;
+  return std::max(v, kMinVisibility_m);
 }
 
 CloudColumn StationWeather::column_at(double lat_deg, double lon_deg, double utc_s) const {

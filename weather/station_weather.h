@@ -18,9 +18,18 @@
 // Nielson (1980), w = ((R - d)+ / (R d))^2 with R = kStationReach_m: cover over the
 // aerodromes that report the band, altitudes weighted by cover too. Farther than R from
 // every aerodrome there is no cloud.
+//
+// The visibility (visibility_at, weather::Weather::visibility_m) is each report's drawn one
+// (drawn_visibility, metar.h), "or more" (9999, CAVOK, P6SM, 10SM) counting as the model's
+// clear air, kClearAirVisibility_m. It is blended as extinction (1 / V, the amount of haze)
+// with the same weights, in time and between the aerodromes that report one; where the
+// blend's extinction is within 1 % of the clear air's, or no aerodrome within R reports a
+// visibility, it is unset.
 #pragma once
 
 #include <array>
+#include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +41,10 @@ namespace cloudsvc::weather {
 
 inline constexpr double kStationReach_m = 250000.0;
 inline constexpr double kToweringCumulusDepth_m = 3000.0;
+// The visibility of the model's own clear air, which an unset weather::Weather::visibility_m
+// draws: -ln 0.05 over the model's sea-level extinction at 550 nm, molecules and aerosol
+// (model::atmosphere; ReferenceAtmosphere.VisibilitySetsTheHaze checks the two agree).
+inline constexpr double kClearAirVisibility_m = 166.4e3;
 // Depth of a deck above its highest reported base, by band (low, middle, high): typical
 // stratocumulus 200-900 m, altocumulus / altostratus about 1 km, cirrus 1-2 km (Sassen &
 // Campbell 2001: mean cirrus depth 1.8 km).
@@ -49,6 +62,7 @@ class StationWeather : public ForecastWeather {
   void merge(const StationWeather& other);
 
   CloudColumn column_at(double lat_deg, double lon_deg, double utc_s) const override;
+  std::optional<double> visibility_at(double lat_deg, double lon_deg, double utc_s) const override;
   std::vector<double> valid_times() const override;
   const std::string& name() const override { return name_; }
 
@@ -56,6 +70,8 @@ class StationWeather : public ForecastWeather {
   struct Observation {
     double utc_s = 0.0;
     CloudColumn column;
+    // m: the drawn one, kClearAirVisibility_m for "or more"; NaN: not reported
+    double visibility_m = std::numeric_limits<double>::quiet_NaN();
   };
   struct Station {
     Aerodrome aerodrome;
@@ -63,6 +79,7 @@ class StationWeather : public ForecastWeather {
     std::array<double, 3> unit{};          // direction from the Earth's centre
   };
   CloudColumn station_column(const Station& s, double utc_s) const;
+  double station_visibility(const Station& s, double utc_s) const;  // NaN: none
 
   std::vector<Station> stations_;
   std::string name_;

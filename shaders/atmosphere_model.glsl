@@ -2,9 +2,10 @@
 // and Atmosphere Rendering Technique" (EGSR). Its constants (ATMO_BOTTOM, ATMO_TOP,
 // RAYLEIGH_*, MIE_*, OZONE_ABSORPTION) come from renderer/model/atmosphere_constants.h
 // through the preamble of renderer/gpu_interface.cpp; the aerosol's amount is scaled by
-// frame.aerosol_scale (the weather's visibility), so frame_uniforms.glsl comes first. Lengths in metres, coefficients in
-// 1/m. The atmosphere is spherically symmetric: only the altitude and the zenith cosine of
-// a ray matter, so it uses its own radius (6360 km) regardless of the cloud-shell radius.
+// frame.aerosol_scale (the weather's visibility), so frame_uniforms.glsl comes first.
+// Lengths in metres, coefficients in 1/m. The atmosphere is spherically symmetric: only the
+// altitude and the zenith cosine of a ray matter, so it uses its own radius (6360 km)
+// regardless of the cloud-shell radius.
 
 struct AtmoMedium {
   vec3 rayleigh;   // scattering, 1/m
@@ -32,7 +33,8 @@ AtmoMedium atmo_medium(float alt) {
 // at most one optical depth of the air at the start (p >= ln(len sigma_t) / ln n): in haze
 // (frame.aerosol_scale; 3 km visibility, sigma_t = 1e-3 / m) a horizontal ray from the
 // ground would otherwise take its 1100 km in steps of 37 km, each far beyond where its
-// light comes from; the default air (sigma_t 1.8e-5 / m at the ground) never needs it.
+// light comes from. The default air (sigma_t 1.8e-5 / m at the ground) hardly needs it: at
+// most p = 1.08, for near-horizontal rays of the 16-step sky-irradiance march.
 float atmo_step_edge(float len, int i, int n, float r, float mu) {
   float sigma = atmo_medium(r - ATMO_BOTTOM).extinction.g;
   float p = max(1.0 + max(mu, 0.0), log(max(len * sigma, 1.0)) / log(float(n)));

@@ -49,9 +49,10 @@ void march_atmosphere(float r, vec3 d, vec3 sun, float len, int steps, out vec3 
   L = vec3(0.0);
   T = vec3(1.0);
   float nu = dot(d, sun);
+  float p = atmo_step_power(len, steps, r, d.z);
   for (int i = 0; i < steps; ++i) {
-    float t0 = atmo_step_edge(len, i, steps, r, d.z);
-    float t1 = atmo_step_edge(len, i + 1, steps, r, d.z);
+    float t0 = atmo_step_edge(len, i, steps, p);
+    float t1 = atmo_step_edge(len, i + 1, steps, p);
     float dt = t1 - t0;
     float t = 0.5 * (t0 + t1);
     vec3 x = vec3(0.0, 0.0, r) + t * d;

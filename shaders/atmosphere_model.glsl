@@ -26,8 +26,8 @@ AtmoMedium atmo_medium(float alt) {
   return m;
 }
 
-// Edge i of n steps along a ray of length len from radius r with zenith cosine mu:
-// t_i = len (i / n)^p. Rays that climb meet their densest air (the aerosol, H = 1.2 km) at
+// Steps along a ray of length len from radius r with zenith cosine mu: n steps with edges
+// t_i = len (i / n)^p (atmo_step_edge), p once per ray (atmo_step_power). Rays that climb meet their densest air (the aerosol, H = 1.2 km) at
 // the start, so p = 1 + mu: up to quadratic towards the zenith, uniform for horizontal and
 // descending rays, whose air stays dense over most of the path. And the first step holds
 // at most one optical depth of the air at the start (p >= ln(len sigma_t) / ln n): in haze
@@ -35,9 +35,11 @@ AtmoMedium atmo_medium(float alt) {
 // ground would otherwise take its 1100 km in steps of 37 km, each far beyond where its
 // light comes from. The default air (sigma_t 1.8e-5 / m at the ground) hardly needs it: at
 // most p = 1.08, for near-horizontal rays of the 16-step sky-irradiance march.
-float atmo_step_edge(float len, int i, int n, float r, float mu) {
+float atmo_step_power(float len, int n, float r, float mu) {
   float sigma = atmo_medium(r - ATMO_BOTTOM).extinction.g;
-  float p = max(1.0 + max(mu, 0.0), log(max(len * sigma, 1.0)) / log(float(n)));
+  return max(1.0 + max(mu, 0.0), log(max(len * sigma, 1.0)) / log(float(n)));
+}
+float atmo_step_edge(float len, int i, int n, float p) {
   return len * pow(float(i) / float(n), p);
 }
 

@@ -44,9 +44,10 @@ void main() {
     float mu = d.z;
     bool ground = ray_hits_ground(r, mu);
     float len = ground ? distance_to_bottom(r, mu) : distance_to_top(r, mu);
+    float p = atmo_step_power(len, STEPS, r, mu);
     vec3 T = vec3(1.0), L = vec3(0.0), F = vec3(0.0);
     for (int i = 0; i < STEPS; ++i) {
-      float t0 = atmo_step_edge(len, i, STEPS, r, mu), t1 = atmo_step_edge(len, i + 1, STEPS, r, mu);
+      float t0 = atmo_step_edge(len, i, STEPS, p), t1 = atmo_step_edge(len, i + 1, STEPS, p);
       float t = 0.5 * (t0 + t1), dt = t1 - t0;
       vec3 x = vec3(0.0, 0.0, r) + t * d;
       float rx = length(x);

@@ -16,9 +16,10 @@ void main() {
   vec2 rmu = transmittance_r_mu((vec2(px) + 0.5) / vec2(size), vec2(size));
   float r = rmu.x, mu = rmu.y;
   float len = distance_to_top(r, mu);
+  float p = atmo_step_power(len, STEPS, r, mu);
   vec3 tau = vec3(0.0);
   for (int i = 0; i < STEPS; ++i) {
-    float t0 = atmo_step_edge(len, i, STEPS, r, mu), t1 = atmo_step_edge(len, i + 1, STEPS, r, mu);
+    float t0 = atmo_step_edge(len, i, STEPS, p), t1 = atmo_step_edge(len, i + 1, STEPS, p);
     float t = 0.5 * (t0 + t1), dt = t1 - t0;
     float ri = sqrt(r * r + t * t + 2.0 * r * mu * t);
     tau += atmo_medium(ri - ATMO_BOTTOM).extinction * dt;

@@ -128,38 +128,45 @@ std::vector<double> StationWeather::valid_times() const {
   return t;
 }
 
-CloudColumn StationWeather::station_column(const Station& s, double utc_s) const {
+StationWeather::Bracket StationWeather::bracket(const Station& s, double utc_s) {
   const std::vector<Observation>& o = s.observations;
-  if (!given(utc_s) || utc_s <= o.front().utc_s) return o.front().column;
-  if (utc_s >= o.back().utc_s) return o.back().column;
+  if (!given(utc_s) || utc_s <= o.front().utc_s) return {o.front(), o.front(), 0.0};
+  if (utc_s >= o.back().utc_s) return {o.back(), o.back(), 0.0};
   const auto after = std::upper_bound(o.begin(), o.end(), utc_s, [](double t, const Observation& x) { return t < x.utc_s; });
   const Observation& a = *(after - 1);
   const Observation& b = *after;
-  return blend_columns(a.column, b.column, (utc_s - a.utc_s) / (b.utc_s - a.utc_s));
+  return {a, b, (utc_s - a.utc_s) / (b.utc_s - a.utc_s)};
+}
+
+double StationWeather::station_weight(const std::array<double, 3>& p, const Station& s) {
+  const double d = std::max(kMeanEarthRadius_m * arc_between(p, s.unit), 1.0);
+  if (d >= kStationReach_m) return 0.0;
+  const double r = (kStationReach_m - d) / (kStationReach_m * d);
+  return r * r;
+}
+
+CloudColumn StationWeather::station_column(const Station& s, double utc_s) const {
+  const Bracket t = bracket(s, utc_s);
+  return &t.a == &t.b ? t.a.column : blend_columns(t.a.column, t.b.column, t.w);
 }
 
 double StationWeather::station_visibility(const Station& s, double utc_s) const {
-  const std::vector<Observation>& o = s.observations;
-  if (!given(utc_s) || utc_s <= o.front().utc_s) return o.front().visibility_m;
-  if (utc_s >= o.back().utc_s) return o.back().visibility_m;
-  const auto after = std::upper_bound(o.begin(), o.end(), utc_s, [](double t, const Observation& x) { return t < x.utc_s; });
-  const double a = (after - 1)->visibility_m, b = after->visibility_m;
+  const Bracket t = bracket(s, utc_s);
+  const double a = t.a.visibility_m, b = t.b.visibility_m;
   if (!given(a) || !given(b)) return given(a) ? a : b;  // given in one of them: it holds
-  const double w = (utc_s - (after - 1)->utc_s) / (after->utc_s - (after - 1)->utc_s);
-  return 1.0 / ((1.0 - w) / a + w / b);  // extinction blended linearly
+  return 1.0 / ((1.0 - t.w) / a + t.w / b);  // extinction blended linearly
 }
 
 std::optional<double> StationWeather::visibility_at(double lat_deg, double lon_deg, double utc_s) const {
   const std::array<double, 3> p = unit_vector(lat_deg, lon_deg);
   double weights = 0.0, extinction = 0.0;  // sums of w and w / V
   for (const Station& s : stations_) {
-    const double d = std::max(kMeanEarthRadius_m * arc_between(p, s.unit), 1.0);
-    if (d >= kStationReach_m) continue;
+    const double w = station_weight(p, s);
+    if (w <= 0.0) continue;
     const double v = station_visibility(s, utc_s);
     if (!given(v)) continue;
-    const double r = (kStationReach_m - d) / (kStationReach_m * d);
-    weights += r * r;
-    extinction += r * r / v;
+    weights += w;
+    extinction += w / v;
   }
   if (weights <= 0.0) return std::nullopt;  // no aerodrome within reach reports a visibility
   const double v = weights / extinction;
@@ -173,10 +180,8 @@ CloudColumn StationWeather::column_at(double lat_deg, double lon_deg, double utc
   const std::array<double, 3> p = unit_vector(lat_deg, lon_deg);
   ColumnAverage blend;
   for (const Station& s : stations_) {
-    const double d = std::max(kMeanEarthRadius_m * arc_between(p, s.unit), 1.0);
-    if (d >= kStationReach_m) continue;
-    const double r = (kStationReach_m - d) / (kStationReach_m * d);
-    blend.add(station_column(s, utc_s), r * r);
+    const double w = station_weight(p, s);
+    if (w > 0.0) blend.add(station_column(s, utc_s), w);
   }
   return blend.result();
 }

@@ -78,6 +78,16 @@ class StationWeather : public ForecastWeather {
     std::vector<Observation> observations;  // ascending time
     std::array<double, 3> unit{};          // direction from the Earth's centre
   };
+  // The observations around a time and the weight of the later (a == b, w = 0, before the
+  // first and after the last).
+  struct Bracket {
+    const Observation& a;
+    const Observation& b;
+    double w;
+  };
+  static Bracket bracket(const Station& s, double utc_s);
+  // Shepard's weight of an aerodrome at the point p (unit vector): 0 beyond kStationReach_m.
+  static double station_weight(const std::array<double, 3>& p, const Station& s);
   CloudColumn station_column(const Station& s, double utc_s) const;
   double station_visibility(const Station& s, double utc_s) const;  // NaN: none
 

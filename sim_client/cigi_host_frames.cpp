@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "weather/cloud_water.h"
+
 namespace cloudsvc::sim {
 
 namespace {
@@ -58,6 +60,11 @@ std::vector<cigi::WeatherControl> global_weather_controls(const weather::Weather
       c.base_elevation_m = static_cast<float>(l.base_m);
       c.thickness_m = static_cast<float>(l.top_m - l.base_m);
       c.coverage_pct = static_cast<float>(100.0 * l.coverage);
+      // The layer's water content (aerosol concentration, g/m^3) in its type's droplets, which
+      // the IG draws in (docs/CIGI.md, "Weather"): the IG draws the layer's density scale.
+      c.aerosol_gpm3 = static_cast<float>(
+          l.density_scale *
+          weather::water_content_of_n0_droplets_g_m3(weather::cloud_type_traits(l.type).default_droplet_diameter_um));
       // The renderer's wind points where the air goes; CIGI's direction is where it comes from.
       const double speed = std::hypot(l.wind.east_mps, l.wind.north_mps);
       c.wind_horizontal_mps = static_cast<float>(speed);

@@ -7,6 +7,7 @@
 
 #include "cigi_test_support.h"
 #include "protocol/cigi/cigi_weather.h"
+#include "weather/cloud_water.h"
 #include "weather/sphere_geometry.h"
 
 namespace cloudsvc::cigi {
@@ -220,6 +221,57 @@ TEST(CigiWeather, AVisibilityOutsideTheDrawnRangeIsClampedWithANote) {
     EXPECT_EQ(weather::validate(w.weather), "");
     EXPECT_TRUE(w.notes.empty()) << "the note is cigi_visibility's alone";
   }
+}
+
+// A Weather Control's aerosol concentration (g/m^3) is the layer's cloud water content: it
+// sets the density scale in the type's droplets (weather/cloud_water.h); 0, which hosts send
+// when they do not model it, keeps the type's typical water; more than the renderer draws is
+// drawn at its most, with a note.
+TEST(CigiWeather, AWeatherControlsAerosolIsTheLayersWaterContent) {
+  IgState s;
+  WeatherControl cumulus = layer(1, 7, 1200.0f, 1500.0f, 40.0f);
+  WeatherControl stratus = layer(2, 10, 400.0f, 300.0f, 90.0f);
+  stratus.aerosol_gpm3 = 0.0f;
+  cumulus.aerosol_gpm3 = 1.0f;
+  EXPECT_TRUE(s.apply(host_datagram({cumulus, stratus})).empty());
+  CigiWeather w = cigi_weather(s, 46.0, 7.0, 64, 32);
+  ASSERT_EQ(w.weather.layers.size(), 2u);
+  const weather::CloudLayer& st = w.weather.layers[0];  // sorted by base
+  const weather::CloudLayer& cu = w.weather.layers[1];
+  EXPECT_EQ(st.density_scale, weather::cloud_type_traits(weather::CloudType::Stratus).default_density_scale);
+  // 1 g/m^3 in 20 um droplets: 300 cm^-3 of them hold 4/3 pi (10 um)^3 * 1e6 g/m^3 * 3e8 /m^3
+  // = 1.2566 g/m^3, so the scale is 0.796 (the type's typical 0.5 g/m^3 is 0.40)
+  EXPECT_EQ(cu.droplet_diameter_um, 20.0);
+  EXPECT_NEAR(cu.density_scale, 1.0 / 1.2566371, 1e-6);
+  EXPECT_NEAR(weather::density_scale_for_water_content(0.5, 20.0),
+              weather::cloud_type_traits(weather::CloudType::Cumulus).default_density_scale, 0.005);
+  EXPECT_TRUE(w.notes.empty());
+  EXPECT_EQ(weather::validate(w.weather), "");
+  // Twice the water, twice the extinction.
+  cumulus.aerosol_gpm3 = 2.0f;
+  EXPECT_TRUE(s.apply(host_datagram({cumulus})).empty());
+  EXPECT_NEAR(cigi_weather(s, 46.0, 7.0, 64, 32).weather.layers.at(1).density_scale, 2.0 / 1.2566371, 1e-6);
+  // More water than the renderer's largest density scale holds in these droplets.
+  cumulus.aerosol_gpm3 = 20.0f;
+  EXPECT_TRUE(s.apply(host_datagram({cumulus})).empty()) << "not a rejection";
+  w = cigi_weather(s, 46.0, 7.0, 64, 32);
+  EXPECT_EQ(w.weather.layers.at(1).density_scale, weather::kMaxDensityScale);
+  ASSERT_EQ(w.notes.size(), 1u);
+  EXPECT_EQ(w.notes[0], "layer 1: water content 20 g/m^3 drawn as 12.566371 g/m^3 (the most drawn in its droplets)");
+  EXPECT_EQ(weather::validate(w.weather), "");
+  // A negative or non-finite concentration is refused with the packet (cigi_checks): the
+  // layer keeps the water it had.
+  for (const float bad : {-1.0f, std::nanf(""), INFINITY}) {
+    cumulus.aerosol_gpm3 = bad;
+    DatagramWriter writer(ByteOrder::Big);
+    writer.add(IgControl{});
+    writer.add(cumulus);
+    const HostDatagram d = read_host_datagram(writer.bytes());
+    ASSERT_EQ(d.rejections.size(), 1u) << bad;
+    EXPECT_NE(d.rejections[0].reason.find("aerosol_gpm3"), std::string::npos) << d.rejections[0].reason;
+    EXPECT_TRUE(s.apply(d).empty());
+  }
+  EXPECT_EQ(cigi_weather(s, 46.0, 7.0, 64, 32).weather.layers.at(1).density_scale, weather::kMaxDensityScale);
 }
 
 }  // namespace

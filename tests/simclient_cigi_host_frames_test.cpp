@@ -79,6 +79,7 @@ weather::Weather three_layers() {
   ci.top_m = 9700.0;
   ci.coverage = 0.15;
   ci.wind = {-41.0, 12.5};  // towards the west-north-west
+  ci.density_scale *= 2.5;   // more ice than the type's typical
   w.layers = {st, sc, ci};
   return w;
 }
@@ -239,6 +240,7 @@ void expect_weather_round_trip(const weather::Weather& w, cigi::ByteOrder order)
     EXPECT_NEAR(got.top_m, want.top_m, 1e-3) << i;
     EXPECT_NEAR(got.wind.east_mps, want.wind.east_mps, 1e-3) << i;
     EXPECT_NEAR(got.wind.north_mps, want.wind.north_mps, 1e-3) << i;
+    EXPECT_NEAR(got.density_scale, want.density_scale, 1e-6 * want.density_scale) << i << ": the water content sent";
   }
   // The map holds each layer's coverage everywhere (no regions).
   for (std::size_t i = 0; i < w.layers.size(); ++i)

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "common/parallel_for.h"
+#include "weather/cloud_water.h"
 #include "weather/sphere_geometry.h"
 
 namespace cloudsvc::cigi {
@@ -29,25 +30,9 @@ std::optional<WeatherControl> defining_layer(const IgState& s, int k, double lat
   return best;
 }
 
-weather::CloudLayer renderer_layer(const WeatherControl& w, int slot) {
-  weather::CloudLayer l;
-  l.type = static_cast<weather::CloudType>(w.cloud_type);
-  l.base_m = w.base_elevation_m;
-  l.top_m = static_cast<double>(w.base_elevation_m) + std::max(static_cast<double>(w.thickness_m), kMinThickness_m);
-  l.coverage = std::clamp(w.coverage_pct / 100.0, 0.0, 1.0);  // not read: the layer reads its channel
-  l.coverage_channel = slot;
-  const weather::CloudTypeTraits& traits = weather::cloud_type_traits(l.type);
-  l.density_scale = traits.default_density_scale;
-  l.droplet_diameter_um = traits.default_droplet_diameter_um;
-  // CIGI gives the direction the wind blows from, clockwise from north.
-  const double from = w.wind_direction_deg * weather::kRadPerDeg;
-  l.wind = {-w.wind_horizontal_mps * std::sin(from), -w.wind_horizontal_mps * std::cos(from)};
-  return l;
-}
-
-// Shortest fixed-point text that reads back to v ("300", "0.5", "1000000"), m.
+// Shortest fixed-point text that reads back to v ("300", "0.5", "1000000").
 template <class T>
-std::string metres(T v) {
+std::string shortest_text(T v) {
   char buf[64];
   const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed);
   return std::string(buf, r.ptr);
@@ -56,6 +41,37 @@ std::string metres(T v) {
 const char* layer_name(int slot) {
   static constexpr const char* kNames[] = {"layer 1", "layer 2", "layer 3"};
   return kNames[slot];
+}
+
+// The layer's density scale: from the host's water content (Weather Control's aerosol
+// concentration, g/m^3) in the type's droplets where one is given (> 0), else the type's
+// default; above weather::kMaxDensityScale drawn at it, with a note.
+double layer_density_scale(const WeatherControl& w, const weather::CloudTypeTraits& traits, int slot,
+                           std::vector<std::string>& notes) {
+  if (!(w.aerosol_gpm3 > 0.0f)) return traits.default_density_scale;
+  const double d_um = traits.default_droplet_diameter_um;
+  const double s = weather::density_scale_for_water_content(w.aerosol_gpm3, d_um);
+  if (s <= weather::kMaxDensityScale) return s;
+  const double drawn = weather::kMaxDensityScale * weather::water_content_of_n0_droplets_g_m3(d_um);
+  notes.push_back(std::string(layer_name(slot)) + ": water content " + shortest_text(w.aerosol_gpm3) + " g/m^3 drawn as " +
+                  shortest_text(static_cast<float>(drawn)) + " g/m^3 (the most drawn in its droplets)");
+  return weather::kMaxDensityScale;
+}
+
+weather::CloudLayer renderer_layer(const WeatherControl& w, int slot, std::vector<std::string>& notes) {
+  weather::CloudLayer l;
+  l.type = static_cast<weather::CloudType>(w.cloud_type);
+  l.base_m = w.base_elevation_m;
+  l.top_m = static_cast<double>(w.base_elevation_m) + std::max(static_cast<double>(w.thickness_m), kMinThickness_m);
+  l.coverage = std::clamp(w.coverage_pct / 100.0, 0.0, 1.0);  // not read: the layer reads its channel
+  l.coverage_channel = slot;
+  const weather::CloudTypeTraits& traits = weather::cloud_type_traits(l.type);
+  l.density_scale = layer_density_scale(w, traits, slot, notes);
+  l.droplet_diameter_um = traits.default_droplet_diameter_um;
+  // CIGI gives the direction the wind blows from, clockwise from north.
+  const double from = w.wind_direction_deg * weather::kRadPerDeg;
+  l.wind = {-w.wind_horizontal_mps * std::sin(from), -w.wind_horizontal_mps * std::cos(from)};
+  return l;
 }
 
 }  // namespace
@@ -92,7 +108,7 @@ CigiVisibility cigi_visibility(const IgState& state) {
   const double drawn = std::clamp(static_cast<double>(sent), weather::kMinVisibility_m, weather::kMaxVisibility_m);
   out.visibility_m = drawn;
   if (drawn != static_cast<double>(sent))
-    out.note = "Atmosphere Control: visibility " + metres(sent) + " m drawn as " + metres(drawn) + " m" +
+    out.note = "Atmosphere Control: visibility " + shortest_text(sent) + " m drawn as " + shortest_text(drawn) + " m" +
                (drawn > sent ? " (fog is not drawn)" : " (the largest drawn)");
   return out;
 }
@@ -112,7 +128,7 @@ CigiWeather cigi_weather(const IgState& state, double near_lat_deg, double near_
   std::vector<weather::CloudLayer> candidates;
   const CloudLayerSet defining = defining_layers(state, near_lat_deg, near_lon_deg);
   for (int k = 0; k < 3; ++k)
-    if (const auto& w = defining[static_cast<std::size_t>(k)]) candidates.push_back(renderer_layer(*w, k));
+    if (const auto& w = defining[static_cast<std::size_t>(k)]) candidates.push_back(renderer_layer(*w, k, out.notes));
   std::stable_sort(candidates.begin(), candidates.end(),
                    [](const auto& a, const auto& b) { return a.top_m - a.base_m > b.top_m - b.base_m; });
   std::vector<weather::CloudLayer> layers;

@@ -5,9 +5,11 @@
 // albedo of cloud water in the visible is ~1.
 #pragma once
 
+#include "weather/cloud_water.h"
+
 namespace cloudsvc::model {
 
-constexpr double kDefaultDropletNumberDensity_m3 = 3.0e8;  // N0, m^-3 (300 cm^-3)
+constexpr double kDefaultDropletNumberDensity_m3 = weather::kDropletNumberDensity_m3;  // N0, m^-3 (300 cm^-3)
 constexpr double kCloudQext = 2.0;                          // extinction efficiency
 
 // Extinction coefficient (m^-1) of cloud with droplets of the given diameter (um).

@@ -13,6 +13,7 @@
 #include "renderer/cloud_renderer.h"
 #include "renderer/quality_presets.h"
 #include "service/frame_mailbox.h"
+#include "service/frame_mirror.h"
 #include "service/frame_sinks.h"
 #include "service/view_rings.h"
 #include "service/window_presenter.h"
@@ -215,7 +216,8 @@ int CigiFrames::render_views(double utc_s) {
     r.frame_index = ig_frame_;
     try {
       // --cigi-quality / --cigi-view-quality (names checked when the options were parsed)
-      const FrameImage img = renderer_.render(r, *quality_preset(options_.cigi->quality_of(v.id)));
+      FrameImage img = renderer_.render(r, *quality_preset(options_.cigi->quality_of(v.id)));
+      mirror_image(img, static_cast<MirrorMode>(v.mirror));  // after the render: the history stays unmirrored
       publish(v, pose, img, utc_s, &v == &views.front());
       ++rendered;
     } catch (const std::exception& e) {

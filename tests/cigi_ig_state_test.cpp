@@ -97,6 +97,25 @@ TEST(CigiIgState, NearAndFarPlanes) {
   EXPECT_EQ(s.views()[0].frustum.far_m, 80000.0f);
 }
 
+// The mirror mode is a View Definition field without an enable bit: every definition sets it,
+// in either byte order; the frustum's fields keep their enable bits.
+TEST(CigiIgState, MirrorModes) {
+  for (const ByteOrder order : {ByteOrder::Big, ByteOrder::Little}) {
+    IgState s;
+    EXPECT_EQ(s.views()[0].mirror, 0);
+    for (const std::uint8_t mode : {1, 2, 3, 0}) {
+      ViewDefinition d;
+      d.view_id = 4;
+      d.mirror = mode;
+      EXPECT_TRUE(s.apply(host_datagram({d}, 1, IgMode::Operate, order)).empty()) << int(mode);
+      ASSERT_EQ(s.views().size(), 1u);
+      EXPECT_EQ(s.views()[0].id, 4);
+      EXPECT_EQ(s.views()[0].mirror, mode);
+      EXPECT_EQ(s.views()[0].frustum, ViewFrustum{}) << "no frustum field enabled";
+    }
+  }
+}
+
 TEST(CigiIgState, OwnshipTimeAndAtmosphere) {
   IgState s;
   EXPECT_FALSE(s.ownship());

@@ -215,6 +215,55 @@ TEST(CigiService, BadDatagramsAreAnsweredWithIgMessagesAndTheIgGoesOn) {
   EXPECT_NE(read_text_file(svc.log_path()).find("cloudsvc serve: CIGI: "), std::string::npos);
 }
 
+// A mirrored view is the same view flipped: three views at one pose, unmirrored, mirrored
+// horizontally and vertically, drawn in one IG frame (each on its own channel, its first
+// frame, so the same render).
+TEST(CigiService, AMirroredViewIsTheViewFlipped) {
+  ServiceProcess svc("cigi_mirror", {"--cigi", "udp:0", "--exit-after-frames", "1"}, ServiceProcess::Tcp::No,
+                     ServiceProcess::OutDir::Yes);
+  ASSERT_TRUE(svc.running());
+  sim::CigiHostLink link(cigi_endpoint(svc));
+  cigi::IgControl control;
+  control.host_frame = 1;
+  cigi::EntityControl ownship = ownship_over_zurich();
+  ownship.pitch_deg = -20.0f;  // ground, clouds and sky: no symmetry either way
+  ownship.yaw_deg = 200.0f;
+  cigi::DatagramWriter w;
+  w.add(control);
+  w.add(ownship);
+  for (std::uint8_t id = 0; id < 3; ++id) {
+    cigi::ViewDefinition d;
+    d.view_id = id;
+    d.mirror = id;  // 0 none, 1 horizontal, 2 vertical
+    d.enable = cigi::definition_enable::kLeft | cigi::definition_enable::kRight | cigi::definition_enable::kTop |
+               cigi::definition_enable::kBottom;
+    d.left_deg = -35.0f;
+    d.right_deg = 25.0f;  // off-axis: the flip is of the image, not of the frustum
+    d.top_deg = 15.0f;
+    d.bottom_deg = -20.0f;
+    w.add(d);
+  }
+  link.send(w.bytes());
+  ASSERT_EQ(svc.wait_exit(120s), 0) << read_text_file(svc.log_path());
+  const std::vector<float> plain = read_png(frame_file(svc, 0, 1)), lr = read_png(frame_file(svc, 1, 1)),
+                           tb = read_png(frame_file(svc, 2, 1));
+  ASSERT_FALSE(plain.empty());
+  const int width = 64, height = 36, channels = static_cast<int>(plain.size() / (width * height));
+  ASSERT_EQ(plain.size(), static_cast<std::size_t>(width * height * channels));
+  std::vector<float> plain_lr(plain.size()), plain_tb(plain.size());
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x)
+      for (int c = 0; c < channels; ++c) {
+        const float v = plain[(static_cast<std::size_t>(y) * width + x) * channels + c];
+        plain_lr[(static_cast<std::size_t>(y) * width + (width - 1 - x)) * channels + c] = v;
+        plain_tb[(static_cast<std::size_t>(height - 1 - y) * width + x) * channels + c] = v;
+      }
+  EXPECT_LT(mean_abs_difference(lr, plain_lr), 1e-3);
+  EXPECT_LT(mean_abs_difference(tb, plain_tb), 1e-3);
+  EXPECT_GT(mean_abs_difference(lr, plain), 0.02) << "the view is not symmetric left to right: the test tells";
+  EXPECT_GT(mean_abs_difference(tb, plain), 0.02) << "nor top to bottom";
+}
+
 // An Atmosphere Control's visibility below the drawn range (fog, 300 m) is not refused: it is
 // drawn as 1000 m and an IG Message says so; the IG draws with it, then with a visibility in
 // the range (no message, nothing refused).

@@ -67,7 +67,6 @@ std::string check(const ViewControl& p) {
 
 std::string check(const ViewDefinition& p) {
   if (p.orthographic) return "orthographic projection (the IG draws perspective views)";
-  if (p.mirror != 0) return "mirror mode " + std::to_string(p.mirror) + " (the IG draws unmirrored views)";
   using namespace definition_enable;
   if (p.enable & kNear) CHECK(in_range("near_m", p.near_m, 1e-3, kHuge));
   if (p.enable & kFar) CHECK(in_range("far_m", p.far_m, 1e-3, kHuge));

@@ -62,6 +62,7 @@ std::optional<std::string> IgState::apply(const HostPacket& packet) {
             if (p.enable & kRight) f.right_deg = p.right_deg;
             if (p.enable & kTop) f.top_deg = p.top_deg;
             if (p.enable & kBottom) f.bottom_deg = p.bottom_deg;
+            v.mirror = p.mirror;  // not under an enable bit
             // The packet's own fields passed their checks; together with the view's others
             // they must still make a frustum.
             if (!(f.right_deg > f.left_deg && f.top_deg > f.bottom_deg && (f.far_m <= 0.0f || f.far_m > f.near_m)))

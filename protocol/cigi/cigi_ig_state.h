@@ -31,6 +31,7 @@ struct View {
   float x_m = 0.0f, y_m = 0.0f, z_m = 0.0f;  // eye offset in the ownship's body axes (x forward, y right, z down), m
   float roll_deg = 0.0f, pitch_deg = 0.0f, yaw_deg = 0.0f;  // rotation from the ownship's attitude
   ViewFrustum frustum;
+  std::uint8_t mirror = 0;  // View Definition's mirror mode: 0 none, 1 horizontal, 2 vertical, 3 both
   bool operator==(const View&) const = default;
 };
 

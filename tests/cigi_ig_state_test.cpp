@@ -254,5 +254,48 @@ TEST(CigiIgState, GlobalAndRegionalCloudLayers) {
   EXPECT_GT(s.weather_generation(), g1);
 }
 
+// Hosts resend their weather every frame: a Weather Control or region that changes nothing
+// does not make the weather again (nor repeat its notes); any change does. The host's first
+// Weather Control takes the weather over even when it only disables a layer.
+TEST(CigiIgState, ResentWeatherIsNotAChange) {
+  IgState s;
+  WeatherControl off;
+  off.layer_id = 2;
+  off.enabled = false;
+  s.apply(host_datagram({off}));
+  const std::uint64_t first = s.weather_generation();
+  EXPECT_GT(first, 0u) << "the host's weather, with no cloud on layer 2";
+  s.apply(host_datagram({off}, 2));
+  EXPECT_EQ(s.weather_generation(), first);
+
+  WeatherControl stratus;
+  stratus.layer_id = 1;
+  stratus.cloud_type = 10;
+  stratus.base_elevation_m = 800.0f;
+  stratus.thickness_m = 400.0f;
+  stratus.coverage_pct = 100.0f;
+  EnvironmentalRegionControl r;
+  r.region_id = 5;
+  r.lat_deg = 46.0;
+  r.lon_deg = 7.0;
+  r.size_x_m = 40000.0f;
+  r.size_y_m = 20000.0f;
+  WeatherControl regional = stratus;
+  regional.scope = WeatherScope::Regional;
+  regional.entity_or_region_id = 5;
+  s.apply(host_datagram({stratus, r, regional}, 3));
+  const std::uint64_t made = s.weather_generation();
+  EXPECT_GT(made, first);
+  for (std::uint32_t frame = 4; frame < 10; ++frame) s.apply(host_datagram({stratus, r, regional, off}, frame));
+  EXPECT_EQ(s.weather_generation(), made) << "the same packets again";
+  stratus.coverage_pct = 60.0f;
+  s.apply(host_datagram({stratus, r, regional}, 10));
+  EXPECT_GT(s.weather_generation(), made) << "a layer changed";
+  const std::uint64_t layer_changed = s.weather_generation();
+  r.transition_perimeter_m = 2000.0f;
+  s.apply(host_datagram({stratus, r, regional}, 11));
+  EXPECT_GT(s.weather_generation(), layer_changed) << "a region changed";
+}
+
 }  // namespace
 }  // namespace cloudsvc::cigi

@@ -90,8 +90,9 @@ std::optional<std::string> IgState::apply(const HostPacket& packet) {
                      std::to_string(kMaxRegions) + " regions";
             it = regions_.emplace(p.region_id, Region{}).first;
           }
+          // hosts resend their weather every frame: only a change makes the weather again
+          if (!(it->second.control == p)) ++weather_generation_;
           it->second.control = p;
-          ++weather_generation_;
         } else if constexpr (std::is_same_v<P, WeatherControl>) {
           if (p.layer_id < kFirstCloudLayerId || p.layer_id > kLastCloudLayerId) return std::nullopt;  // fog, precipitation: not drawn
           CloudLayerSet* set = nullptr;
@@ -107,9 +108,13 @@ std::optional<std::string> IgState::apply(const HostPacket& packet) {
             return std::nullopt;  // weather around an entity: not drawn
           }
           auto& slot = (*set)[p.layer_id - kFirstCloudLayerId];
-          if (p.enabled && p.cloud_type != 0) slot = p;
-          else slot.reset();
-          ++weather_generation_;
+          std::optional<WeatherControl> next;
+          if (p.enabled && p.cloud_type != 0) next = p;
+          // Hosts resend their weather every frame: only a change makes the weather again, and
+          // the first Weather Control, which puts the weather in the host's hands even when it
+          // only disables a layer.
+          if (slot != next || weather_generation_ == 0) ++weather_generation_;
+          slot = next;
         }
         return std::nullopt;
       },

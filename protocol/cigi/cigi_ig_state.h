@@ -84,7 +84,10 @@ class IgState {
   std::uint64_t atmosphere_generation() const { return atmosphere_generation_; }
   const CloudLayerSet& global_layers() const { return global_layers_; }
   const std::map<std::uint16_t, Region>& regions() const { return regions_; }
-  // Rises with every change of the cloud layers or regions (the weather to rebuild).
+  // Rises with every change of the cloud layers or regions (the weather to rebuild), not
+  // with a packet that changes nothing (hosts resend their weather every frame); 0 until the
+  // host's first Weather Control or region, which raises it even when it only disables a
+  // layer (the host's weather, then, has no cloud there).
   std::uint64_t weather_generation() const { return weather_generation_; }
 
  private:

@@ -15,6 +15,14 @@ namespace cloudsvc {
 
 namespace {
 enum TimedPass { kLutsPass = 0, kMarchPass = 1, kResolvePass = 2, kCompositePass = 3, kShadowMapPass = 4 };
+
+// Every layer of b has the wind of a's at its index, and there are as many.
+bool same_winds(const weather::Weather& a, const weather::Weather& b) {
+  if (a.layers.size() != b.layers.size()) return false;
+  for (std::size_t i = 0; i < a.layers.size(); ++i)
+    if (!(a.layers[i].wind == b.layers[i].wind)) return false;
+  return true;
+}
 }  // namespace
 
 CloudRenderer::CloudRenderer(const RendererConfig& config)
@@ -42,13 +50,22 @@ void CloudRenderer::apply_tile(const weather::MapTile& tile, double now_utc_s) {
   }
 }
 
-void CloudRenderer::adopt_weather(const weather::Weather& w) {
+void CloudRenderer::adopt_weather(const weather::Weather& w, bool keep_drift) {
   const std::string problem = weather::validate(w);
   if (!problem.empty()) throw std::invalid_argument("invalid weather: " + problem);
   weather_ = w;
   ++weather_generation_;
-  wind_anchor_.reset();
+  if (!keep_drift) wind_anchor_.reset();
   reset_history();  // new clouds: nothing to reuse
+}
+
+void CloudRenderer::update_weather(const weather::Weather& w) {
+  if (map_valid_ && !forecast_map_ && map_seed_ == w.map_seed) {
+    if (w == weather_) return;  // resent: nothing changes
+    adopt_weather(w, same_winds(weather_, w));
+    return;
+  }
+  set_weather(w);
 }
 
 void CloudRenderer::set_weather(const weather::Weather& w) {
@@ -66,6 +83,20 @@ void CloudRenderer::set_forecast(const weather::Weather& w, weather::WeatherMap 
 }
 
 void CloudRenderer::set_forecast(const weather::Weather& w, std::vector<std::pair<double, weather::WeatherMap>> keyframes) {
+  take_forecast(w, std::move(keyframes), false);
+}
+
+void CloudRenderer::update_forecast(const weather::Weather& w, weather::WeatherMap map) {
+  update_forecast(w, {{0.0, std::move(map)}});
+}
+
+void CloudRenderer::update_forecast(const weather::Weather& w,
+                                    std::vector<std::pair<double, weather::WeatherMap>> keyframes) {
+  take_forecast(w, std::move(keyframes), forecast_map_ && same_winds(weather_, w));
+}
+
+void CloudRenderer::take_forecast(const weather::Weather& w, std::vector<std::pair<double, weather::WeatherMap>> keyframes,
+                                  bool keep_drift) {
   for (const auto& [t, map] : keyframes)
     if (map.width != config_.weather_map_width || map.height != config_.weather_map_height || !map.has_layer_coverage())
       throw std::invalid_argument("forecast map: expected " + std::to_string(config_.weather_map_width) + " x " +
@@ -74,7 +105,7 @@ void CloudRenderer::set_forecast(const weather::Weather& w, std::vector<std::pai
   if (!problem.empty()) throw std::invalid_argument("invalid weather: " + problem);
   // the same timeline: its keyframe versions keep counting, so the GPU uploads the new ones
   timeline_.reset(std::move(keyframes));  // throws before it changes anything
-  adopt_weather(w);
+  adopt_weather(w, keep_drift);
   map_seed_ = w.map_seed;
   map_valid_ = true;
   forecast_map_ = true;
@@ -82,7 +113,8 @@ void CloudRenderer::set_forecast(const weather::Weather& w, std::vector<std::pai
 
 void CloudRenderer::update_forecast_layers(const weather::Weather& w) {
   if (!forecast_map_) throw std::logic_error("update_forecast_layers without a forecast");
-  adopt_weather(w);
+  if (w == weather_) return;
+  adopt_weather(w, same_winds(weather_, w));
 }
 
 // Layers with no cloud anywhere this frame can see (renderer/coverage_cull.h) are marked

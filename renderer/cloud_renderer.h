@@ -47,7 +47,14 @@ class CloudRenderer {
   // Sets the weather; regenerates the global weather map only when its seed changes.
   // The next rendered view becomes the wind anchor (weather/wind_drift.h).
   void set_weather(const weather::Weather& w);
+  // set_weather for a service whose weather changes under a moving view: a weather equal to
+  // the current one changes nothing (hosts resend theirs: the history and the drift go on),
+  // and where every layer keeps its wind the clouds drift on from where they are (the wind
+  // anchor stays; a wind that changes restarts the drift from the next view, as set_weather).
+  void update_weather(const weather::Weather& w);
   const weather::Weather& weather() const { return weather_; }
+  // The wind anchor of the frames now drawn (none before the first view after a restart).
+  const std::optional<WindAnchor>& wind_anchor() const { return wind_anchor_; }
 
   // Sets forecast weather (weather/forecast_frame.h): layers that read the layer-coverage
   // channels of the maps, which replace the weather map's keyframes (one map for now, or
@@ -57,7 +64,13 @@ class CloudRenderer {
   // that break those rules. set_weather afterwards returns to the procedural map.
   void set_forecast(const weather::Weather& w, weather::WeatherMap map);
   void set_forecast(const weather::Weather& w, std::vector<std::pair<double, weather::WeatherMap>> keyframes);
-  // New layers for the forecast's keyframes (the region moved); std::logic_error without a forecast.
+  // set_forecast for a running service (the host's layers changed, or time moved on to other
+  // keyframes): where every layer keeps its wind the clouds drift on from where they are, as
+  // in update_weather.
+  void update_forecast(const weather::Weather& w, weather::WeatherMap map);
+  void update_forecast(const weather::Weather& w, std::vector<std::pair<double, weather::WeatherMap>> keyframes);
+  // New layers for the forecast's keyframes (the region moved); std::logic_error without a
+  // forecast. Like update_weather: equal layers change nothing, unchanged winds keep the drift.
   void update_forecast_layers(const weather::Weather& w);
   bool has_forecast() const { return forecast_map_; }
   int weather_map_width() const { return config_.weather_map_width; }
@@ -102,7 +115,10 @@ class CloudRenderer {
   std::uint32_t map_seed_ = 0;
   bool map_valid_ = false;
   bool forecast_map_ = false;  // the keyframes are a forecast's (set_forecast)
-  void adopt_weather(const weather::Weather& w);  // validate, take w, start the clouds afresh
+  // validate, take w, start the clouds' history afresh; keep_drift: keep the wind anchor
+  void adopt_weather(const weather::Weather& w, bool keep_drift = false);
+  void take_forecast(const weather::Weather& w, std::vector<std::pair<double, weather::WeatherMap>> keyframes,
+                     bool keep_drift);
   weather::WeatherTimeline timeline_;
   weather::GroundAlbedoMap ground_albedo_map_;
   std::optional<WindAnchor> wind_anchor_;  // latched at the first view after set_weather

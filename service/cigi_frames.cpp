@@ -174,7 +174,7 @@ void CigiFrames::update_cloud_layers() {
     cigi::CigiWeather w =
         cigi::cigi_weather(state_, lat, lon, renderer_.weather_map_width(), renderer_.weather_map_height());
     for (const std::string& note : w.notes) report(note);
-    renderer_.set_forecast(w.weather, std::move(w.map));
+    renderer_.update_forecast(w.weather, std::move(w.map));  // clouds drift on where winds stay
     weather_taken_();
   } catch (const std::exception& e) {
     report(std::string("the cloud layers cannot be drawn: ") + e.what());
@@ -191,7 +191,7 @@ void CigiFrames::update_visibility() {
   w.visibility_m = v.visibility_m;  // m, within the drawn range
   try {
     if (renderer_.has_forecast()) renderer_.update_forecast_layers(w);  // keeps the forecast's maps
-    else renderer_.set_weather(w);                                     // the same seed: the same map
+    else renderer_.update_weather(w);                                  // the same seed: the same map
   } catch (const std::exception& e) {
     report(std::string("the visibility cannot be drawn: ") + e.what());
   }

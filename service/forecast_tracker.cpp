@@ -38,7 +38,7 @@ void ForecastTracker::update(CloudRenderer& renderer, double lat_deg, double lon
     std::vector<std::pair<double, weather::WeatherMap>> frames =
         !prepared_.empty() && prepared_first_ == first_ ? std::move(prepared_) : build_keyframes(first_, count_);
     prepared_.clear();
-    renderer.set_forecast(weather::forecast_weather_at(*forecast_, lat_deg, lon_deg, utc_s), std::move(frames));
+    renderer.update_forecast(weather::forecast_weather_at(*forecast_, lat_deg, lon_deg, utc_s), std::move(frames));
   } else if (weather::surface_distance_m(lat_deg, lon_deg, lat_, lon_) > 0.5 * weather::kForecastRegion_m ||
              std::abs(utc_s - utc_) > kLayerRefresh_s) {
     renderer.update_forecast_layers(weather::forecast_weather_at(*forecast_, lat_deg, lon_deg, utc_s));

@@ -184,7 +184,7 @@ void RenderLoop::Run::poll_window() {
 void RenderLoop::Run::apply_change(StateChange& c) {
   if (auto* v = std::get_if<protocol::SetView>(&c)) view_ = *v;
   else if (auto* w = std::get_if<protocol::WeatherLayers>(&c)) {
-    renderer_.set_weather(to_weather(*w));  // a client's layers replace the forecast
+    renderer_.update_weather(to_weather(*w));  // a client's layers replace the forecast; resent ones change nothing
     forecast_.reset();
   }
   else if (auto* t = std::get_if<protocol::SetTime>(&c)) clock_.set(t->utc_unix_s);

@@ -120,6 +120,7 @@ const std::vector<CloudType>& all_cloud_types();
 struct Wind {
   double east_mps = 0.0;
   double north_mps = 0.0;
+  bool operator==(const Wind&) const = default;
 };
 
 struct CloudLayer {
@@ -135,6 +136,7 @@ struct CloudLayer {
   // of that number as it is (forecast weather: weather/forecast_frame.h). Not part of
   // weather files or the protocol's layers.
   int coverage_channel = -1;
+  bool operator==(const CloudLayer&) const = default;
 };
 
 constexpr int kMaxCloudLayers = 4;
@@ -155,6 +157,7 @@ struct Weather {
   // sets the haze (aerosol) of the atmosphere (model::atmosphere::aerosol_scale_for_visibility),
   // in [kMinVisibility_m, kMaxVisibility_m]; unset: the model's default aerosol (166 km).
   std::optional<double> visibility_m;
+  bool operator==(const Weather&) const = default;
 };
 
 // Checks ranges and ordering; returns an empty string when valid, else a one-line

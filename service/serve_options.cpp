@@ -81,6 +81,24 @@ bool conflicts(const ListenAddress& a, const ListenAddress& b) {
   return a.host == b.host || is_wildcard(a) || is_wildcard(b);
 }
 
+// A path given on the command line as the service will use it, for telling whether two
+// flags name the same file: absolute, lexically normal ("a/./b" is "a/b"), without a trailing
+// separator ("frames/" is "frames"); symbolic links are not followed.
+fs::path comparable_path(const std::string& text) {
+  std::error_code ec;
+  fs::path p = fs::absolute(text, ec).lexically_normal();
+  if (!p.has_filename() && p.has_relative_path()) p = p.parent_path();
+  return p;
+}
+
+// The --listen unix: socket at the same path as `text`, if any.
+const ListenAddress* unix_socket_at(const std::vector<ListenAddress>& listen, const std::string& text) {
+  for (const ListenAddress& l : listen) {
+    if (l.kind == ListenAddress::Kind::Unix && comparable_path(l.path) == comparable_path(text)) return &l;
+  }
+  return nullptr;
+}
+
 std::string conflict_reason(const ListenAddress& a, const ListenAddress& earlier) {
   if (a.kind == ListenAddress::Kind::Unix || a.host == earlier.host) {
     return "same address as --listen " + earlier.text + " (each address at most once)";
@@ -315,6 +333,14 @@ void apply_endpoints(const ServeCommandLine::Args& a, ServeOptions& opt) {
     const fs::path ready(a.ready_file);
     if (!ready.has_filename()) fail("--ready-file", a.ready_file, "names a directory, expected a file name");
     require_writable_directory("--ready-file", a.ready_file, ready.has_parent_path() ? ready.parent_path() : ".");
+    // The ready file is renamed into place once the sockets are bound: it would replace a
+    // directory (exit 1 after binding), a listening socket of this service or another one.
+    std::error_code ec;
+    const fs::file_status status = fs::status(ready, ec);
+    if (fs::is_directory(status)) fail("--ready-file", a.ready_file, "is a directory, expected a file name");
+    if (const ListenAddress* l = unix_socket_at(opt.listen, a.ready_file))
+      fail("--ready-file", a.ready_file, "same path as --listen " + l->text + " (the ready file would replace the socket)");
+    if (fs::is_socket(status)) fail("--ready-file", a.ready_file, "is a socket (the ready file would replace it)");
     opt.ready_file = a.ready_file;
   }
 }
@@ -419,6 +445,12 @@ void apply_sinks(const ServeCommandLine::Args& a, ServeOptions& opt) {
   }
   if (given(cmd, "--out-dir")) {
     check_output_directory("--out-dir", a.out_dir);
+    // The directory is made before the sockets are bound: at a socket's path it would make
+    // the bind fail (exit 1), at the ready file's the rename.
+    if (const ListenAddress* l = unix_socket_at(opt.listen, a.out_dir))
+      fail("--out-dir", a.out_dir, "same path as --listen " + l->text + " (a directory cannot be the socket)");
+    if (!opt.ready_file.empty() && comparable_path(opt.ready_file) == comparable_path(a.out_dir))
+      fail("--out-dir", a.out_dir, "same path as --ready-file " + opt.ready_file);
     opt.out_dir = a.out_dir;
   }
 }

@@ -196,9 +196,11 @@ class AcmiParser {
     if (!samples_.empty() && samples_.back().unix_time_s == r.time_s) {
       samples_.back() = s;  // several T= in one frame: the last wins
       oriented_flags_.back() = oriented_;
+      sample_lines_.back() = r.line;
     } else {
       samples_.push_back(s);
       oriented_flags_.push_back(oriented_);
+      sample_lines_.push_back(r.line);
     }
   }
 
@@ -213,6 +215,12 @@ class AcmiParser {
     for (std::size_t i = 0; i < samples_.size(); ++i) {
       PoseSample s = samples_[i];
       s.unix_time_s += reference_time;
+      // A frame time (#seconds, any finite value) can carry the sample out of the years a
+      // pose may have; said here, at its line, not as a pose the replay cannot send.
+      if (!(s.unix_time_s >= kMinUnixTime && s.unix_time_s < kEndUnixTime))
+        fail(sample_lines_[i], "frame time #" + format_number(samples_[i].unix_time_s) + " after ReferenceTime " +
+                                   quoted_excerpt(*globals_.reference_time) +
+                                   " is out of range: sample times must be in years 1900-2199");
       if (!track.samples.empty() && s.unix_time_s <= track.samples.back().unix_time_s) {
         track.samples.back() = s;
         oriented.back() = oriented_flags_[i];
@@ -242,6 +250,7 @@ class AcmiParser {
   bool oriented_ = false;
   std::vector<PoseSample> samples_;
   std::vector<bool> oriented_flags_;
+  std::vector<std::size_t> sample_lines_;  // the line of each sample's (last) T=
 };
 
 }  // namespace

@@ -4,6 +4,7 @@
 // IG's Start of Frame for the one before) or asynchronously (at --fps). docs/SIM_CLIENT.md.
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -107,7 +108,7 @@ class CigiHost {
       link_.send(datagram);
       ++sent_;
       if (o_.synchronous) wait_start_of_frame(static_cast<std::uint32_t>(i + 1), datagram);
-      else pace(start, i + 1);
+      else if (i + 1 < poses_.size()) pace(start, i + 1);  // nothing to pace after the last
     }
     if (!o_.synchronous) wait_start_of_frame(static_cast<std::uint32_t>(poses_.size()), frame_datagram(poses_.size() - 1));
     const double wall = std::chrono::duration<double>(Clock::now() - start).count();
@@ -180,9 +181,12 @@ class CigiHost {
   }
 
   // Asynchronous: frames at --fps of wall time; the IG's datagrams are read meanwhile.
+  // Host frame k is due k / fps seconds after the first; that offset is at most a log's span
+  // (years 1900-2199), held to 200 years (6.3e9 s) before it becomes the clock's int64 ns.
   void pace(Clock::time_point start, std::size_t frames_sent) {
-    const auto due = start + std::chrono::duration_cast<Clock::duration>(
-                                 std::chrono::duration<double>(static_cast<double>(frames_sent) / o_.fps));
+    constexpr double kMaxOffset_s = 200.0 * 365.25 * 86400.0;
+    const double offset_s = std::min(static_cast<double>(frames_sent) / o_.fps, kMaxOffset_s);
+    const auto due = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(offset_s));
     while (Clock::now() < due)
       if (!take(due)) break;
   }

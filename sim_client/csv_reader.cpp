@@ -26,10 +26,6 @@ enum Column { kTime, kLat, kLon, kAlt, kHeading, kPitch, kRoll };
 // a larger magnitude is not a longitude anyone writes but a corrupt value.
 constexpr double kMaxLongitude_deg = 360.0;
 
-// Unix times of 1900-01-01T00:00:00Z and 2200-01-01T00:00:00Z: the ISO parser's years.
-constexpr double kMinUnixTime = -2208988800.0;
-constexpr double kEndUnixTime = 7258118400.0;
-
 // "1714564801.500 s (2024-05-01T12:00:02Z)" for messages.
 std::string describe_time(double t) {
   char buf[32];

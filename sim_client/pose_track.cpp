@@ -77,16 +77,20 @@ PoseSample PoseTrack::at(double unix_time_s) const {
   return out;
 }
 
-std::vector<PoseSample> resample(const PoseTrack& track, double fps) {
+std::vector<PoseSample> resample(const PoseTrack& track, double fps, std::size_t max_frames) {
   if (!std::isfinite(fps) || fps <= 0.0)
     throw std::invalid_argument("resample: fps must be finite and positive");
   if (track.samples.empty()) return {};
   constexpr double kMaxFrames = 50e6;
   const double t0 = track.start_time();
-  const double span_frames = (track.end_time() - t0) * fps;
-  if (span_frames + 1.0 > kMaxFrames)
+  const double span_frames = (track.end_time() - t0) * fps;  // frames after the first
+  // Frames wanted: every one of the span, or the first max_frames (a double, so a span of
+  // any length compares without overflowing the integer cast below).
+  double wanted = std::floor(span_frames + 1e-9) + 1.0;
+  if (max_frames > 0) wanted = std::min(wanted, static_cast<double>(max_frames));
+  if (wanted > kMaxFrames)
     throw std::invalid_argument("resample: more than 50 million frames requested");
-  const auto count = static_cast<std::size_t>(std::floor(span_frames + 1e-9)) + 1;
+  const auto count = static_cast<std::size_t>(wanted);
   std::vector<PoseSample> frames;
   frames.reserve(count);
   for (std::size_t k = 0; k < count; ++k)

@@ -2,6 +2,7 @@
 // replay at any time and resampling at a fixed frame rate.
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -52,8 +53,11 @@ struct PoseTrack {
 // Frames for replay at `fps` frames per second: times t0 + k / fps for k = 0, 1, ... while
 // <= the last sample time (t0 = first sample time; times computed from k, not summed, so
 // they do not drift). The last sample is included only when the span is a whole number of
-// frames (within 1e-9 frame). An empty track gives no frames. Throws std::invalid_argument
-// when fps is not finite and positive or the result would exceed 50 million frames.
-std::vector<PoseSample> resample(const PoseTrack& track, double fps);
+// frames (within 1e-9 frame). An empty track gives no frames. max_frames > 0 keeps only the
+// first max_frames of them, and only those are computed and held (a long log replayed at a
+// high rate with --max-frames costs what the frames asked for, not the whole log). Throws
+// std::invalid_argument when fps is not finite and positive or the frames returned would
+// exceed 50 million.
+std::vector<PoseSample> resample(const PoseTrack& track, double fps, std::size_t max_frames = 0);
 
 }  // namespace cloudsvc::sim

@@ -8,8 +8,7 @@
 namespace cloudsvc::sim {
 
 std::vector<protocol::Pose> replay_poses(const PoseTrack& track, double fps, std::size_t max_frames) {
-  std::vector<PoseSample> samples = resample(track, fps);
-  if (max_frames > 0 && samples.size() > max_frames) samples.resize(max_frames);
+  const std::vector<PoseSample> samples = resample(track, fps, max_frames);  // only the frames sent
   std::vector<protocol::Pose> poses;
   poses.reserve(samples.size());
   const double t0 = track.start_time();

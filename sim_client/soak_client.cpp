@@ -301,9 +301,17 @@ std::future<void> SoakClient::fly(Clock::time_point start, Clock::time_point end
   return f;
 }
 
+std::chrono::steady_clock::time_point soak_pose_due(std::chrono::steady_clock::time_point start,
+                                                    std::chrono::steady_clock::time_point end, std::uint64_t k,
+                                                    double rate_hz) {
+  const double offset_s = static_cast<double>(k) / rate_hz;            // s after start
+  const double span_s = std::chrono::duration<double>(end - start).count();  // s, the run
+  if (!(offset_s < span_s)) return end;  // also inf and NaN: never cast to the clock
+  return start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(offset_s));
+}
+
 SoakClient::Clock::time_point SoakClient::due(std::uint64_t k) const {
-  return start_ + std::chrono::duration_cast<Clock::duration>(
-                      std::chrono::duration<double>(static_cast<double>(k) / plan_.rate_hz));
+  return soak_pose_due(start_, end_, k, plan_.rate_hz);
 }
 
 // Sends the poses due by now (at most kMaxCatchUp_s of schedule per wake-up), then sleeps

@@ -148,4 +148,14 @@ class SoakClient : public std::enable_shared_from_this<SoakClient> {
   std::atomic<std::uint64_t> poses_live_{0}, frames_live_{0};
 };
 
+// When pose k of a client flying from `start` to `end` at rate_hz poses per second is due:
+// start + k / rate_hz, or `end` itself when that is not before `end` (such a pose is not
+// sent). k / rate_hz is compared in seconds before it becomes a clock duration: at a rate
+// far below one pose per run (1e-300 Hz, valid for --rate) it exceeds what the clock's
+// 64-bit nanoseconds hold, and the cast had wrapped to a time long past, so every pose was
+// "due" and the client sent without end.
+std::chrono::steady_clock::time_point soak_pose_due(std::chrono::steady_clock::time_point start,
+                                                    std::chrono::steady_clock::time_point end, std::uint64_t k,
+                                                    double rate_hz);
+
 }  // namespace cloudsvc::sim

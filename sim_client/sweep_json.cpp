@@ -142,7 +142,8 @@ class JsonSweepParser {
     const double first = number(a[0], field + "[0]"), last = number(a[1], field + "[1]");
     const json& n = a[2];
     if (!n.is_number_integer() || n.get<long long>() < 1 || n.get<long long>() > static_cast<long long>(kMaxSweepEntries))
-      fail(field + "[2]", "count must be a whole number in [1, " + std::to_string(kMaxSweepEntries) + "], got " + n.dump());
+      fail(field + "[2]", "count must be an integer in [1, " + std::to_string(kMaxSweepEntries) +
+                              "] written without a fraction or exponent (3, not 3.0 or 3e0), got " + n.dump());
     const long long count = n.get<long long>();
     std::vector<double> v(static_cast<std::size_t>(count));
     for (long long k = 0; k < count; ++k)

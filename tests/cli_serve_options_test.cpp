@@ -542,6 +542,32 @@ TEST_F(CliServeOptionsTest, BadLimits) {
   expect_serve_rejected({"--ready-file", path("no/such/dir/ready")}, "--ready-file");
 }
 
+// --ready-file and --out-dir may not take a socket's place: the ready file, renamed into
+// place once the sockets were bound, replaced this service's own socket (it said "listening"
+// while every connect was refused) or another service's; a directory at the socket's path
+// or the ready file's failed only after binding, with exit 1.
+TEST_F(CliServeOptionsTest, OutputPathsDoNotClobberTheSockets) {
+  const std::string sock = path("s.sock");
+  expect_serve_rejected({"--listen", "unix:" + sock, "--ready-file", sock}, "--ready-file", sock);
+  expect_serve_rejected({"--listen", "unix:" + sock, "--ready-file", path("sub/../s.sock")}, "--ready-file");
+  EXPECT_EQ(run({"serve", "--listen", "unix:" + sock, "--ready-file", sock}).cmd.error,
+            "cloudsvc serve: --ready-file " + sock + ": same path as --listen unix:" + sock +
+                " (the ready file would replace the socket)");
+  const std::string other = path("other.sock");  // another service's socket
+  make_socket_file(other);
+  expect_serve_rejected({"--ready-file", other}, "--ready-file", other);
+  expect_serve_rejected({"--ready-file", dir_.string()}, "--ready-file", dir_.string());
+  expect_serve_rejected({"--listen", "unix:" + sock, "--out-dir", sock}, "--out-dir", sock);
+  expect_serve_rejected({"--listen", "unix:" + sock, "--out-dir", sock + "/"}, "--out-dir");
+  expect_serve_rejected({"--ready-file", path("frames"), "--out-dir", path("frames/")}, "--out-dir");
+  EXPECT_FALSE(fs::exists(sock));
+  EXPECT_FALSE(fs::exists(path("frames")));
+  // Next to each other they are fine.
+  const ServeOptions o = serve_with({"--listen", "unix:" + sock, "--ready-file", path("ready"), "--out-dir", path("frames")});
+  EXPECT_EQ(o.ready_file, path("ready"));
+  EXPECT_EQ(o.out_dir, path("frames"));
+}
+
 TEST_F(CliServeOptionsTest, UnknownRepeatedAndStrayArguments) {
   expect_serve_rejected({"--lat", "1"}, "--lat");
   expect_serve_rejected({"--shm", "a", "--shm", "b"}, "--shm", "a b");

@@ -240,6 +240,27 @@ TEST(AcmiReader, RangeErrorsOfTheChosenObject) {
   EXPECT_NO_THROW(parse_acmi(head + join({"1,T=1|5|10", "2,T=1|50|10"}), "rec.acmi", object("1")));
 }
 
+// A frame time is any finite number of seconds after ReferenceTime, but the sample it makes
+// must lie in years 1900-2199 like every log's: said at the frame's T= line. It had been read,
+// and the replay then refused "pose at : Pose.utc_unix_s 1e+300 out of range" (no line, no
+// time: the year was beyond what the formatter writes).
+TEST(AcmiReader, FrameTimesBeyondTheYearsOfALogNameTheLine) {
+  const std::string head = kHeader + "0,ReferenceTime=2026-06-21T12:00:00Z\n";  // 3 lines
+  expect_error(head + join({"#0", "1,T=8|47|2000", "#1e300", "1,T=8.001|47|2000"}), {}, "rec.acmi:7: ",
+               "frame time #1e+300 after ReferenceTime '2026-06-21T12:00:00Z' is out of range: sample times must be "
+               "in years 1900-2199");
+  expect_error(head + join({"#0", "1,T=8|47|2000", "#1e10", "1,T=8.001|47|2000"}), {}, "rec.acmi:7: ", "#1e+10");
+  expect_error(kHeader + join({"0,ReferenceTime=2199-12-31T23:59:00Z", "#0", "1,T=8|47|2000", "#60",
+                               "1,T=8.001|47|2000"}),
+               {}, "rec.acmi:7: ", "#60 after ReferenceTime '2199-12-31T23:59:00Z' is out of range");  // 2200-01-01
+  // Up to the last second of 2199 is a time a pose may have.
+  const PoseTrack t = parse_acmi(kHeader + join({"0,ReferenceTime=2199-12-31T23:59:00Z", "#0", "1,T=8|47|2000", "#59.5",
+                                                 "1,T=8.001|47|2000"}),
+                                 "rec.acmi");
+  ASSERT_EQ(t.samples.size(), 2u);
+  EXPECT_DOUBLE_EQ(t.samples[1].unix_time_s, utc("2199-12-31T23:59:59.5Z"));
+}
+
 // Tacview positions are ReferenceLongitude + offset: a flight across the antimeridian runs
 // past 180 and wraps into [-180, 180); the track, its derived heading and speed, the
 // interpolated poses and the replay poses all stay on the short way across. Latitudes do

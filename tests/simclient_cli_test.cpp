@@ -190,7 +190,12 @@ TEST(SweepJson, ErrorsNameTheFileAndTheField) {
   EXPECT_EQ(err(R"({"poses": []})"), "s.json: poses: expected a non-empty array of pose objects");
   EXPECT_EQ(err(R"({"poses": [], "grid": {}})"), "s.json: (top level): expected exactly one of \"poses\" and \"grid\"");
   EXPECT_EQ(err(R"({"grid": {"lat": [1, 2, 0], "lon": 0, "alt": 0}})"),
-            "s.json: grid.lat[2]: count must be a whole number in [1, 100000], got 0");
+            "s.json: grid.lat[2]: count must be an integer in [1, 100000] written without a fraction or exponent "
+            "(3, not 3.0 or 3e0), got 0");
+  // 1.0 is a whole number: the message had said "must be a whole number ..., got 1.0".
+  EXPECT_EQ(err(R"({"grid": {"lat": [1, 2, 1.0], "lon": 0, "alt": 0}})"),
+            "s.json: grid.lat[2]: count must be an integer in [1, 100000] written without a fraction or exponent "
+            "(3, not 3.0 or 3e0), got 1.0");
   EXPECT_EQ(err(R"({"grid": {"lat": [1, 2], "lon": 0, "alt": 0}})"),
             "s.json: grid.lat: expected a number or [first, last, count]");
   // 300,000 nested arrays as a latitude: used to overflow the stack while the error

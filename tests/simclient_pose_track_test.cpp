@@ -7,6 +7,7 @@
 #include <GeographicLib/Geodesic.hpp>
 
 #include "sim_client/pose_track.h"
+#include "sim_client/replay_poses.h"
 
 namespace {
 
@@ -229,6 +230,30 @@ TEST(Resample, EdgeCases) {
   PoseTrack year;
   year.samples = {sample(0.0, 0.0, 0.0, 0.0), sample(3.2e7, 0.0, 1.0, 0.0)};
   EXPECT_THROW(resample(year, 60.0), std::invalid_argument);  // ~1.9e9 frames
+}
+
+// --max-frames N of a long log at a high rate: only the N frames are computed (a year at
+// 60 fps is 1.9e9 frames, refused whole; 4 hours at 1000 fps took 1.5 GB and 11 s before
+// the first pose was sent).
+TEST(Resample, MaxFramesComputesOnlyTheFramesKept) {
+  PoseTrack year;
+  const double t0 = 1.7e9;  // s since the Unix epoch
+  year.samples = {sample(t0, 47.0, 8.0, 1000.0), sample(t0 + 3.2e7, 47.0, 9.0, 1000.0)};
+  const auto frames = resample(year, 60.0, 3);
+  ASSERT_EQ(frames.size(), 3u);
+  EXPECT_DOUBLE_EQ(frames[0].unix_time_s, t0);
+  EXPECT_NEAR(frames[2].unix_time_s, t0 + 2.0 / 60.0, 1e-6);
+  EXPECT_THROW(resample(year, 60.0), std::invalid_argument);  // all of it: still refused
+
+  // More frames asked for than the log has: the log's frames.
+  PoseTrack short_track;
+  short_track.samples = {sample(t0, 47.0, 8.0, 1000.0), sample(t0 + 1.0, 47.0, 8.001, 1000.0)};
+  EXPECT_EQ(resample(short_track, 10.0, 1000).size(), 11u);
+
+  // The replay path (sim_client replay / cigi --max-frames).
+  const auto poses = replay_poses(year, 60.0, 3);
+  ASSERT_EQ(poses.size(), 3u);
+  EXPECT_NEAR(poses[1].sim_time_s, 1.0 / 60.0, 1e-6);  // s; t0 + k / fps - t0 at Unix-time precision
 }
 
 }  // namespace

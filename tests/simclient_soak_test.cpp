@@ -13,6 +13,7 @@
 #include "geodesy/geodetic.h"
 #include "protocol/validate.h"
 #include "sim_client/process_rss.h"
+#include "sim_client/soak_client.h"
 #include "sim_client/soak_summary.h"
 #include "sim_client/soak_track.h"
 
@@ -61,6 +62,26 @@ TEST(SoakTrack, EveryClientFliesAValidSmoothCoordinatedTurn) {
       same += at_1s[a].lat_deg == at_1s[b].lat_deg && at_1s[a].lon_deg == at_1s[b].lon_deg &&
               at_1s[a].alt_m == at_1s[b].alt_m;
   EXPECT_EQ(same, 0u);
+}
+
+// The pose schedule: k / rate after the start, never past the end. `--rate 1e-300
+// --duration 1s` (a valid rate: one pose in the run) had made pose 1 due 1e300 s after the
+// start, beyond the clock's int64 nanoseconds: the cast wrapped to a time long past, every
+// pose was due at once and the client flooded the service and never stopped.
+TEST(SoakSchedule, PosesAreDueAtKOverRateAndNeverPastTheEnd) {
+  using namespace std::chrono_literals;
+  const auto start = std::chrono::steady_clock::time_point{} + 1000s;
+  const auto end = start + 1s;
+  EXPECT_EQ(soak_pose_due(start, end, 0, 60.0), start);
+  EXPECT_EQ(soak_pose_due(start, end, 30, 60.0), start + 500ms);
+  EXPECT_EQ(soak_pose_due(start, end, 60, 60.0), end);   // due at the end: not sent
+  EXPECT_EQ(soak_pose_due(start, end, 61, 60.0), end);
+  EXPECT_EQ(soak_pose_due(start, end, 0, 1e-300), start);
+  EXPECT_EQ(soak_pose_due(start, end, 1, 1e-300), end);  // 1e300 s: past the end, not a wrapped time
+  EXPECT_EQ(soak_pose_due(start, end, 1, 4.9e-324), end);  // 1 / denormal = inf
+  EXPECT_EQ(soak_pose_due(start, end, UINT64_MAX, 10000.0), end);
+  const auto week = start + std::chrono::hours(24 * 7);  // the longest --duration
+  EXPECT_EQ(soak_pose_due(start, week, 604799, 1.0), start + 604799s);
 }
 
 TEST(SoakRss, VmRssOfAStatusTextAndOfLiveAndGoneProcesses) {

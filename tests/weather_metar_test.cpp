@@ -383,6 +383,48 @@ TEST(Metar, SeveralReportsBlendSmoothlyBetweenAerodromes) {
   EXPECT_TRUE(std::isnan(w->column_at(0.0, -30.0, t[1])[CloudBand::Low].cover));
 }
 
+// A SPECI issued at the time of a METAR corrects it, wherever it stands: listings that put
+// the newest report first have the SPECI above the METAR (the METAR had won there).
+TEST(Metar, SpeciReplacesTheMetarOfTheSameTimeInAnyOrder) {
+  GribTempDir dir;
+  const Aerodrome& zh = *find_aerodrome("LSZH");
+  const auto low_cover = [&](const std::string& name, const std::vector<std::string>& texts) {
+    std::vector<std::string> files;
+    for (std::size_t i = 0; i < texts.size(); ++i) {
+      files.push_back(dir.file(name + std::to_string(i) + ".metar").string());
+      std::ofstream(files.back()) << "2026/12/05 12:00\n" << texts[i];
+    }
+    const std::unique_ptr<ForecastWeather> w = load_forecast_weather(files, kReference);
+    return w->column_at(zh.lat_deg, zh.lon_deg, utc("2026-12-05T11:50:00Z"))[CloudBand::Low].cover;
+  };
+  const std::string metar = "METAR LSZH 051150Z 24008KT 9999 FEW030 05/01 Q1021=\n";
+  const std::string speci = "SPECI LSZH 051150Z 24008KT 9999 OVC030 05/01 Q1021=\n";
+  EXPECT_NEAR(low_cover("after", {metar + speci}), 1.0, 1e-9);
+  EXPECT_NEAR(low_cover("before", {speci + metar}), 1.0, 1e-9);       // newest first
+  EXPECT_NEAR(low_cover("files", {speci, metar}), 1.0, 1e-9);         // the METAR in a later file
+  EXPECT_NEAR(low_cover("files2", {metar, speci}), 1.0, 1e-9);
+  // Two of the same kind: the later in the file wins.
+  EXPECT_NEAR(low_cover("two", {speci + "SPECI LSZH 051150Z 24008KT 9999 FEW030 05/01 Q1021=\n"}), 1.5 / 8, 1e-9);
+}
+
+// Files saved by Windows editors: a UTF-8 byte-order mark before the first line (a date
+// line, a comment or a report) and CRLF line ends. The mark had made the first station code
+// "\xEF\xBB\xBFLSZH" ("malformed station code" quoting an invisible character).
+TEST(Metar, ByteOrderMarkAndCrlfAreAccepted) {
+  GribTempDir dir;
+  const Aerodrome& zh = *find_aerodrome("LSZH");
+  const std::string bom = "\xEF\xBB\xBF";
+  for (const std::string& first : {std::string("METAR LSZH 051150Z 24008KT 9999 OVC030 05/01 Q1021=\r\n"),
+                                   std::string("2026/12/05 12:00\r\nLSZH 051150Z 9999 OVC030\r\n"),
+                                   std::string("# Zurich\r\nLSZH 051150Z 9999 OVC030\r\n")}) {
+    const auto file = dir.file("bom.metar");
+    std::ofstream(file, std::ios::binary) << bom << first;
+    const std::unique_ptr<ForecastWeather> w = load_forecast_weather({file.string()}, kReference);
+    EXPECT_NEAR(w->column_at(zh.lat_deg, zh.lon_deg, utc("2026-12-05T11:50:00Z"))[CloudBand::Low].cover, 1.0, 1e-9)
+        << first;
+  }
+}
+
 TEST(Metar, BadFilesNameTheFileAndLine) {
   GribTempDir dir;
   const auto read = [&](const std::string& name, const std::string& text) {

@@ -267,6 +267,8 @@ std::vector<MetarReport> load_metar_file(const std::string& path, double referen
     ++line_no;
     if (!line.empty() && line.back() == '\r') line.pop_back();
     std::string_view l = line;
+    // A UTF-8 byte-order mark (files saved by Windows editors) is no part of the first line.
+    if (line_no == 1 && l.starts_with("\xEF\xBB\xBF")) l.remove_prefix(3);
     while (!l.empty() && std::isspace(static_cast<unsigned char>(l.front()))) l.remove_prefix(1);
     while (!l.empty() && std::isspace(static_cast<unsigned char>(l.back()))) l.remove_suffix(1);
     if (l.empty() || l.front() == '#') {

@@ -93,7 +93,8 @@ MetarReport parse_metar(std::string_view report, double reference_utc_s);
 // The reports of a text file: one per line (a report may continue on following lines and
 // ends at its line's end or at '='); blank lines and lines starting with '#' are skipped; a
 // line "YYYY/MM/DD HH:MM" (as in NOAA's station files) sets the reference time of the
-// reports after it, else reference_utc_s holds. Throws WeatherFileError (weather_json.h):
+// reports after it, else reference_utc_s holds. A UTF-8 byte-order mark at the start of the
+// file and CRLF line ends are accepted. Throws WeatherFileError (weather_json.h):
 // "<path>: line N: <problem>", or "<path>: no METAR reports".
 std::vector<MetarReport> load_metar_file(const std::string& path, double reference_utc_s);
 

@@ -85,16 +85,17 @@ StationWeather StationWeather::from_reports(const std::vector<MetarReport>& repo
     Station& s = by_code[r.station];
     s.aerodrome = *a;
     s.unit = unit_vector(a->lat_deg, a->lon_deg);
-    s.observations.push_back({r.utc_s, column_of_report(r, *a), blended_visibility(r)});
+    s.observations.push_back({r.utc_s, column_of_report(r, *a), blended_visibility(r), r.speci});
   }
   for (auto& [code, s] : by_code) {
-    // Ascending time; of two reports at one time (a SPECI correcting a METAR) the later in the file.
+    // Ascending time; of two reports at one time a SPECI (correcting the METAR) wins wherever
+    // it stands in the file (newest-first listings put it before the METAR), else the later.
     std::stable_sort(s.observations.begin(), s.observations.end(),
                      [](const Observation& a, const Observation& b) { return a.utc_s < b.utc_s; });
     std::vector<Observation> unique;
     for (const Observation& o : s.observations) {
-      if (!unique.empty() && unique.back().utc_s == o.utc_s) unique.back() = o;
-      else unique.push_back(o);
+      if (unique.empty() || unique.back().utc_s != o.utc_s) unique.push_back(o);
+      else if (replaces(o, unique.back())) unique.back() = o;
     }
     s.observations = std::move(unique);
     w.stations_.push_back(std::move(s));
@@ -112,7 +113,9 @@ void StationWeather::merge(const StationWeather& other) {
     for (const Observation& ob : o.observations) {
       auto at = std::lower_bound(it->observations.begin(), it->observations.end(), ob.utc_s,
                                  [](const Observation& a, double t) { return a.utc_s < t; });
-      if (at != it->observations.end() && at->utc_s == ob.utc_s) *at = ob;
+      if (at != it->observations.end() && at->utc_s == ob.utc_s) {
+        if (replaces(ob, *at)) *at = ob;  // the later file's, unless it would undo a SPECI
+      }
       else it->observations.insert(at, ob);
     }
   }

@@ -72,7 +72,11 @@ class StationWeather : public ForecastWeather {
     CloudColumn column;
     // m: the drawn one, kClearAirVisibility_m for "or more"; NaN: not reported
     double visibility_m = std::numeric_limits<double>::quiet_NaN();
+    bool speci = false;  // a SPECI: replaces a METAR of the same time, wherever either stands
   };
+  // Whether `later` (read after `earlier`, same time) replaces it: a SPECI is never replaced
+  // by a METAR; otherwise the later report wins.
+  static bool replaces(const Observation& later, const Observation& earlier) { return later.speci || !earlier.speci; }
   struct Station {
     Aerodrome aerodrome;
     std::vector<Observation> observations;  // ascending time

@@ -274,5 +274,36 @@ TEST(CigiWeather, AWeatherControlsAerosolIsTheLayersWaterContent) {
   EXPECT_EQ(cigi_weather(s, 46.0, 7.0, 64, 32).weather.layers.at(1).density_scale, weather::kMaxDensityScale);
 }
 
+// Regions that pass every check but would cost the coverage map billions of samples (long
+// and thinner than a texel, or 64 of them the size of a hemisphere) are drawn within a bounded
+// number of samples, so a datagram cannot stall the IG; ordinary regions keep their full
+// sampling (ARegionHoldsInside..., the storm's 2 % above), and texels wholly inside a region
+// take its cover.
+TEST(CigiWeather, PathologicalRegionsAreDrawnWithinABoundedNumberOfSamples) {
+  for (const bool thin : {true, false}) {
+    SCOPED_TRACE(thin ? "64 regions 20 000 km x 1 m" : "64 regions 20 000 km square");
+    IgState s;
+    for (std::uint16_t id = 1; id <= 64; ++id) {
+      EnvironmentalRegionControl r = region(-60.0 + 1.9 * id, -170.0 + 5.3 * id, 2.0e7f, thin ? 1.0f : 2.0e7f, 1000.0f,
+                                            45.0f + id);
+      r.region_id = id;
+      WeatherControl cb = layer(1, 6, 1000.0f, 8000.0f, 80.0f);
+      cb.scope = WeatherScope::Regional;
+      cb.entity_or_region_id = id;
+      ASSERT_TRUE(s.apply(host_datagram({r, cb})).empty());
+    }
+    ASSERT_EQ(s.regions().size(), 64u);
+    const CigiWeather w = cigi_weather(s, 0.0, 0.0, 1024, 512);
+    EXPECT_LE(w.region_samples, 1u << 26);
+    EXPECT_GT(w.region_samples, 0u);
+    EXPECT_EQ(weather::validate(w.weather), "");
+    if (!thin) {
+      // the last region holds its centre's texel whole: its layer's 80 %
+      const EnvironmentalRegionControl& last = s.regions().at(64).control;
+      EXPECT_NEAR(slot_at(w.map, 0, last.lat_deg, last.lon_deg), 0.8f, 1e-6);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace cloudsvc::cigi

@@ -5,6 +5,7 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <optional>
 #include <utility>
 
 #include "common/parallel_for.h"
@@ -76,29 +77,61 @@ weather::CloudLayer renderer_layer(const WeatherControl& w, int slot, std::vecto
 
 }  // namespace
 
+namespace {
+
+// A region's rounded rectangle on the tangent plane at its centre (gnomonic), with what
+// every point's distance to it needs computed once.
+struct RegionFrame {
+  std::array<double, 3> centre, east, north;  // unit vectors (ECEF directions)
+  double cos_rot = 1.0, sin_rot = 0.0;        // its x axis, clockwise from north
+  double half_x_m = 0.0, half_y_m = 0.0, radius_m = 0.0, perimeter_m = 0.0;
+
+  explicit RegionFrame(const EnvironmentalRegionControl& r) {
+    centre = weather::unit_vector(r.lat_deg, r.lon_deg);
+    const double lat0 = r.lat_deg * weather::kRadPerDeg, lon0 = r.lon_deg * weather::kRadPerDeg;
+    east = {-std::sin(lon0), std::cos(lon0), 0.0};
+    north = {-std::sin(lat0) * std::cos(lon0), -std::sin(lat0) * std::sin(lon0), std::cos(lat0)};
+    const double rot = r.rotation_deg * weather::kRadPerDeg;
+    cos_rot = std::cos(rot);
+    sin_rot = std::sin(rot);
+    radius_m = std::min<double>(r.corner_radius_m, 0.5 * std::min(r.size_x_m, r.size_y_m));
+    half_x_m = 0.5 * r.size_x_m;
+    half_y_m = 0.5 * r.size_y_m;
+    perimeter_m = r.transition_perimeter_m > 0.0f ? r.transition_perimeter_m : 0.0;
+  }
+
+  // The signed distance (m, on the plane, negative inside) from the rectangle to the point
+  // of unit vector p, and the cosine of the angle between p and the centre; none on the far
+  // side (no tangent-plane point).
+  struct Point {
+    double outside_m, cos_angle;
+  };
+  std::optional<Point> at(const std::array<double, 3>& p) const {
+    const double cos_angle = centre[0] * p[0] + centre[1] * p[1] + centre[2] * p[2];
+    if (cos_angle <= 1e-6) return std::nullopt;
+    const double scale = weather::kMeanEarthRadius_m / cos_angle;
+    const double e = scale * (east[0] * p[0] + east[1] * p[1] + east[2] * p[2]);
+    const double n = scale * (north[0] * p[0] + north[1] * p[1] + north[2] * p[2]);
+    const double x = n * cos_rot + e * sin_rot, y = -n * sin_rot + e * cos_rot;
+    const double qx = std::abs(x) - (half_x_m - radius_m), qy = std::abs(y) - (half_y_m - radius_m);
+    return Point{std::hypot(std::max(qx, 0.0), std::max(qy, 0.0)) + std::min(std::max(qx, qy), 0.0) - radius_m, cos_angle};
+  }
+
+  // region_weight at p.
+  double weight(const std::array<double, 3>& p) const {
+    const std::optional<Point> q = at(p);
+    if (!q) return 0.0;
+    if (q->outside_m <= 0.0) return 1.0;
+    if (!(perimeter_m > 0.0) || q->outside_m >= perimeter_m) return 0.0;
+    return 1.0 - q->outside_m / perimeter_m;
+  }
+};
+
+}  // namespace
+
 double region_weight(const EnvironmentalRegionControl& r, double lat_deg, double lon_deg) {
   if (r.state != 1) return 0.0;
-  const std::array<double, 3> c = weather::unit_vector(r.lat_deg, r.lon_deg), p = weather::unit_vector(lat_deg, lon_deg);
-  const double cos_angle = c[0] * p[0] + c[1] * p[1] + c[2] * p[2];
-  if (cos_angle <= 1e-6) return 0.0;  // the far side: no tangent-plane point
-  // Tangent plane at the centre: east and north unit vectors there, the point projected
-  // through the Earth's centre (gnomonic), m.
-  const double lat0 = r.lat_deg * weather::kRadPerDeg, lon0 = r.lon_deg * weather::kRadPerDeg;
-  const std::array<double, 3> east{-std::sin(lon0), std::cos(lon0), 0.0};
-  const std::array<double, 3> north{-std::sin(lat0) * std::cos(lon0), -std::sin(lat0) * std::sin(lon0), std::cos(lat0)};
-  const double scale = weather::kMeanEarthRadius_m / cos_angle;
-  const double e = scale * (east[0] * p[0] + east[1] * p[1] + east[2] * p[2]);
-  const double n = scale * (north[0] * p[0] + north[1] * p[1] + north[2] * p[2]);
-  // The region's axes: x at rotation_deg clockwise from north, y 90° further.
-  const double rot = r.rotation_deg * weather::kRadPerDeg;
-  const double x = n * std::cos(rot) + e * std::sin(rot), y = -n * std::sin(rot) + e * std::cos(rot);
-  // Signed distance outside the rounded rectangle (negative inside), m.
-  const double radius = std::min<double>(r.corner_radius_m, 0.5 * std::min(r.size_x_m, r.size_y_m));
-  const double qx = std::abs(x) - (0.5 * r.size_x_m - radius), qy = std::abs(y) - (0.5 * r.size_y_m - radius);
-  const double outside = std::hypot(std::max(qx, 0.0), std::max(qy, 0.0)) + std::min(std::max(qx, qy), 0.0) - radius;
-  if (outside <= 0.0) return 1.0;
-  if (!(r.transition_perimeter_m > 0.0f) || outside >= r.transition_perimeter_m) return 0.0;
-  return 1.0 - outside / r.transition_perimeter_m;
+  return RegionFrame(r).weight(weather::unit_vector(lat_deg, lon_deg));
 }
 
 CigiVisibility cigi_visibility(const IgState& state) {
@@ -184,7 +217,7 @@ CigiWeather cigi_weather(const IgState& state, double near_lat_deg, double near_
   const double texel_rad = std::max(dlat, dlon) * weather::kRadPerDeg;  // a texel's reach
   struct Reach {
     const Region* region;
-    std::array<double, 3> centre;
+    RegionFrame frame;
     double cos_near;   // of the angle within which a texel's centre lies when the texel may meet it
     double feature_m;  // its smaller side: texels near it are sampled finer than this
   };
@@ -193,21 +226,60 @@ CigiWeather cigi_weather(const IgState& state, double near_lat_deg, double near_
     const EnvironmentalRegionControl& c = region.control;
     if (c.state != 1) continue;
     const double reach_m = 0.5 * std::hypot(c.size_x_m, c.size_y_m) + c.transition_perimeter_m;
-    regions.push_back({&region, weather::unit_vector(c.lat_deg, c.lon_deg),
-                       std::cos(std::min(reach_m / weather::kMeanEarthRadius_m + texel_rad, 3.14159)),
+    regions.push_back({&region, RegionFrame(c), std::cos(std::min(reach_m / weather::kMeanEarthRadius_m + texel_rad, 3.14159)),
                        std::max(1.0, static_cast<double>(std::min(c.size_x_m, c.size_y_m)))});
   }
-  // A texel's cover: the global cover with the regions' laid over it at a point; near a
-  // region, the mean over n x n points of the texel, n such that the region's smaller side
-  // spans at least 32 of them (4 <= n <= 64), so that a region smaller than a few texels
-  // keeps its share of the texels' cover (within a few per cent) though not its shape.
-  const auto cover_at = [&](double lat, double lon) {
-    std::array<double, 3> cover = global;
+  // Which regions touch a texel (centre p, half diagonal half_diag_m on the ground), and how
+  // finely it must be sampled for them: a region that covers the whole texel (weight 1
+  // throughout) needs one sample, one whose edge or perimeter crosses it n x n with n such
+  // that the region's smaller side spans at least 32 samples (4 <= n <= 64), so that a region
+  // smaller than a few texels keeps its share of the texels' cover (within a few per cent)
+  // though not its shape. The plane stretches ground distances by up to 1 / cos^2 of the
+  // angle from the centre, so the texel's reach on the plane is taken that much larger.
+  const double texel_m = weather::kMeanEarthRadius_m * dlat * weather::kRadPerDeg;  // a texel's side along a meridian, m
+  const auto touching = [&](const std::array<double, 3>& p, double half_diag_m, std::vector<const Reach*>& out) {
+    out.clear();
+    int n = 1;
     for (const Reach& r : regions) {
-      const double w = region_weight(r.region->control, lat, lon);
+      if (p[0] * r.frame.centre[0] + p[1] * r.frame.centre[1] + p[2] * r.frame.centre[2] <= r.cos_near) continue;
+      const std::optional<RegionFrame::Point> q = r.frame.at(p);
+      const bool edge_crosses =
+          !q || q->cos_angle < 0.1 || std::abs(q->outside_m - 0.5 * r.frame.perimeter_m) <=
+                                          0.5 * r.frame.perimeter_m + half_diag_m / (q->cos_angle * q->cos_angle);
+      if (q && !edge_crosses && q->outside_m > 0.0) continue;  // beyond its perimeter: weight 0 throughout
+      out.push_back(&r);
+      if (edge_crosses) n = std::max(n, std::clamp(static_cast<int>(std::ceil(32.0 * texel_m / r.feature_m)), 4, 64));
+    }
+    return n;
+  };
+  // At most kMaxRegionSamples region weights per map (about a second on 2 cores): a datagram
+  // of regions thinner than a texel and as long as the Earth is wide must not stall the IG.
+  // Beyond it every texel's samples are cut in proportion; such regions' share of a texel's
+  // cover is then a few of its samples' (their shape was not drawn in any case).
+  constexpr double kMaxRegionSamples = 1 << 26;
+  std::vector<double> row_cost(static_cast<std::size_t>(height), 0.0);
+  parallel_for(height, kAllThreads, [&](int j) {
+    const double lat = -90.0 + (j + 0.5) * dlat;
+    const double half_diag_m = 0.5 * std::hypot(texel_m, texel_m * std::cos(lat * weather::kRadPerDeg) * dlon / dlat);
+    std::vector<const Reach*> near;
+    for (int i = 0; i < width; ++i) {
+      const int n = touching(weather::unit_vector(lat, -180.0 + (i + 0.5) * dlon), half_diag_m, near);
+      if (!near.empty()) row_cost[static_cast<std::size_t>(j)] += static_cast<double>(n) * n * near.size();
+    }
+  });
+  double cost = 0.0;
+  for (const double c : row_cost) cost += c;
+  const double sample_scale = cost > kMaxRegionSamples ? std::sqrt(kMaxRegionSamples / cost) : 1.0;
+  out.region_samples = static_cast<std::uint64_t>(std::min(cost, kMaxRegionSamples));
+  // A texel's cover: the global cover with the regions that touch it laid over it, at its
+  // centre or as the mean over its n x n samples.
+  const auto cover_at = [&](const std::array<double, 3>& p, const std::vector<const Reach*>& near) {
+    std::array<double, 3> cover = global;
+    for (const Reach* r : near) {
+      const double w = r->frame.weight(p);
       if (w <= 0.0) continue;
       for (std::size_t k = 0; k < 3; ++k) {
-        const auto& inside = r.region->layers[k];
+        const auto& inside = r->region->layers[k];
         cover[k] = (1.0 - w) * cover[k] + w * (inside ? inside->coverage_pct / 100.0 : 0.0);
       }
     }
@@ -215,20 +287,19 @@ CigiWeather cigi_weather(const IgState& state, double near_lat_deg, double near_
   };
   parallel_for(height, kAllThreads, [&](int j) {
     const double lat = -90.0 + (j + 0.5) * dlat;
-    const double texel_m = weather::kMeanEarthRadius_m * dlat * weather::kRadPerDeg;  // its larger side, m
+    const double half_diag_m = 0.5 * std::hypot(texel_m, texel_m * std::cos(lat * weather::kRadPerDeg) * dlon / dlat);
+    std::vector<const Reach*> near;
     for (int i = 0; i < width; ++i) {
       const double lon = -180.0 + (i + 0.5) * dlon;
-      const std::array<double, 3> p = weather::unit_vector(lat, lon);
-      int n = 0;  // samples per side; 0: no region near, the global cover
-      for (const Reach& r : regions)
-        if (p[0] * r.centre[0] + p[1] * r.centre[1] + p[2] * r.centre[2] > r.cos_near)
-          n = std::max(n, std::clamp(static_cast<int>(std::ceil(32.0 * texel_m / r.feature_m)), 4, 64));
+      const int planned = touching(weather::unit_vector(lat, lon), half_diag_m, near);
       std::array<double, 3> cover = global;
-      if (n > 0) {
+      if (!near.empty()) {
+        const int n = std::max(1, static_cast<int>(planned * sample_scale));
         cover = {0.0, 0.0, 0.0};
         for (int a = 0; a < n; ++a)
           for (int b = 0; b < n; ++b) {
-            const std::array<double, 3> c = cover_at(lat + ((a + 0.5) / n - 0.5) * dlat, lon + ((b + 0.5) / n - 0.5) * dlon);
+            const std::array<double, 3> c =
+                cover_at(weather::unit_vector(lat + ((a + 0.5) / n - 0.5) * dlat, lon + ((b + 0.5) / n - 0.5) * dlon), near);
             for (std::size_t k = 0; k < 3; ++k) cover[k] += c[k] / (n * n);
           }
       }

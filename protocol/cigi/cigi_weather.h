@@ -9,6 +9,7 @@
 // its shape.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -30,6 +31,7 @@ struct CigiWeather {
                                  // its visibility_m: cigi_visibility's
   weather::WeatherMap map;       // R, G, B neutral, A 0, and every texel's layer coverage
   std::vector<std::string> notes;  // layers dropped or trimmed where they overlapped, one line each
+  std::uint64_t region_samples = 0;  // region weights evaluated for the map (at most 2^26)
 };
 
 // The visibility drawn for the host's Atmosphere Control (weather::Weather::visibility_m):

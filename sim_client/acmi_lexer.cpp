@@ -104,10 +104,13 @@ class Lexer {
       const std::optional<double> t = parse_number(l.substr(1));
       if (!t) fail(line, "malformed time frame " + quoted_excerpt(l) + ": expected #<seconds>");
       if (auto p = finite_problem("time frame", *t)) fail(line, *p);
-      if (*t < time_s_)
+      // The first frame may be negative (before ReferenceTime): the records above it (the
+      // header's) are at time 0 without being a frame of their own.
+      if (seen_frame_ && *t < time_s_)
         fail(line, "time goes backwards: #" + format_number(*t) + " after #" +
                        format_number(time_s_));
       time_s_ = *t;
+      seen_frame_ = true;
       return;
     }
     Record rec;
@@ -142,6 +145,7 @@ class Lexer {
   const std::string& source_;
   const std::function<void(const Record&)>& on_record_;
   double time_s_ = 0.0;
+  bool seen_frame_ = false;  // a # line has been read
 };
 
 }  // namespace

@@ -103,6 +103,19 @@ TEST(AcmiReader, FollowsAnObjectWithReferencePointAndEmptyFields) {
   for (const auto& s : t.samples) EXPECT_TRUE(s.velocity_enu_mps.has_value());
 }
 
+// The first frame may lie before ReferenceTime: the header's records above it are at time 0
+// without being a frame, so a negative first frame is not "backwards"; later frames are.
+TEST(AcmiReader, AFirstFrameBeforeTheReferenceTime) {
+  const std::string text = kHeader + join({"0,ReferenceTime=2020-01-01T00:00:00Z", "#-5", "7,T=8|47|1000,Name=X",
+                                           "#-4.5", "7,T=8.1|47|1010"});
+  const PoseTrack t = parse_acmi(text, "rec.acmi", object("7"));
+  ASSERT_EQ(t.samples.size(), 2u);
+  EXPECT_DOUBLE_EQ(t.samples[0].unix_time_s, utc("2020-01-01T00:00:00Z") - 5.0);
+  EXPECT_DOUBLE_EQ(t.samples[1].unix_time_s, utc("2020-01-01T00:00:00Z") - 4.5);
+  expect_error(kHeader + join({"0,ReferenceTime=2020-01-01T00:00:00Z", "#-5", "7,T=8|47|1000", "#-6"}), {},
+               "rec.acmi:6: ", "time goes backwards: #-6 after #-5");
+}
+
 TEST(AcmiReader, FirstSampleWithoutOrientationGetsDerivedHeading) {
   // The 6-field T= of line 8 leaves Roll/Pitch/Yaw empty: orientation starts at 0 there,
   // given by the file from then on.

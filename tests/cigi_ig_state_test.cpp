@@ -206,15 +206,32 @@ TEST(CigiIgState, HostFrameAndTimestamp) {
   EXPECT_FALSE(s.host_timestamp_s());
 }
 
-TEST(CigiIgState, GlobalAndRegionalCloudLayers) {
-  IgState s;
-  const std::uint64_t g0 = s.weather_generation();
+// Global layer 1: a 400 m overcast stratus deck from 800 m.
+WeatherControl global_stratus() {
   WeatherControl stratus;
   stratus.layer_id = 1;
   stratus.cloud_type = 10;
   stratus.base_elevation_m = 800.0f;
   stratus.thickness_m = 400.0f;
   stratus.coverage_pct = 100.0f;
+  return stratus;
+}
+
+// Region 5: 40 x 20 km around 46 N, 7 E.
+EnvironmentalRegionControl region_5() {
+  EnvironmentalRegionControl r;
+  r.region_id = 5;
+  r.lat_deg = 46.0;
+  r.lon_deg = 7.0;
+  r.size_x_m = 40000.0f;
+  r.size_y_m = 20000.0f;
+  return r;
+}
+
+TEST(CigiIgState, GlobalAndRegionalCloudLayers) {
+  IgState s;
+  const std::uint64_t g0 = s.weather_generation();
+  WeatherControl stratus = global_stratus();
   WeatherControl rain;  // layer 4: precipitation, not drawn
   rain.layer_id = 4;
   s.apply(host_datagram({stratus, rain}));
@@ -232,12 +249,7 @@ TEST(CigiIgState, GlobalAndRegionalCloudLayers) {
   auto refused = s.apply(host_datagram({cb}));
   ASSERT_EQ(refused.size(), 1u);
   EXPECT_EQ(refused[0], "Weather Control of layer 2 in region 5: no such region (send its Environmental Region Control first)");
-  EnvironmentalRegionControl r;
-  r.region_id = 5;
-  r.lat_deg = 46.0;
-  r.lon_deg = 7.0;
-  r.size_x_m = 40000.0f;
-  r.size_y_m = 20000.0f;
+  EnvironmentalRegionControl r = region_5();
   r.transition_perimeter_m = 5000.0f;
   EXPECT_TRUE(s.apply(host_datagram({r, cb})).empty());
   ASSERT_EQ(s.regions().size(), 1u);
@@ -268,18 +280,8 @@ TEST(CigiIgState, ResentWeatherIsNotAChange) {
   s.apply(host_datagram({off}, 2));
   EXPECT_EQ(s.weather_generation(), first);
 
-  WeatherControl stratus;
-  stratus.layer_id = 1;
-  stratus.cloud_type = 10;
-  stratus.base_elevation_m = 800.0f;
-  stratus.thickness_m = 400.0f;
-  stratus.coverage_pct = 100.0f;
-  EnvironmentalRegionControl r;
-  r.region_id = 5;
-  r.lat_deg = 46.0;
-  r.lon_deg = 7.0;
-  r.size_x_m = 40000.0f;
-  r.size_y_m = 20000.0f;
+  WeatherControl stratus = global_stratus();
+  EnvironmentalRegionControl r = region_5();
   WeatherControl regional = stratus;
   regional.scope = WeatherScope::Regional;
   regional.entity_or_region_id = 5;

@@ -12,6 +12,9 @@
 // accuracy is cloudbench's.
 //
 //   build/bin/cloudbench --cost [--size 160x90] [--frames 16] [--presets naive,default] [--cumulus-domes on|off]
+//                               [--column-steps 0,3]
+// --column-steps measures each preset once per value given (RenderQuality::column_steps),
+// labelled "PRESET c=N", interleaved scene by scene.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -41,7 +44,7 @@ inline double process_cpu_ms() {
 
 inline int run(int argc, char** argv) {
   CLI::App app{"Cost of quality presets on the benchmark scenes, no reference (cloudbench --cost)"};
-  std::string size = "160x90", presets_text = "naive,default";
+  std::string size = "160x90", presets_text = "naive,default", column_steps_text;
   int frames = 16;
   RendererConfig config;
   app.add_option("--size", size, "frame size WxH");
@@ -49,6 +52,8 @@ inline int run(int argc, char** argv) {
   app.add_option("--noise-tiling", config.noise_tiling, "read the noise through its stochastic tiling (RendererConfig::noise_tiling)");
   app.add_option("--frames", frames, "timed frames after the first (median)")->check(CLI::Range(1, 1000));
   app.add_option("--presets", presets_text, "comma-separated quality presets; ratios are to the first");
+  app.add_option("--column-steps", column_steps_text,
+                 "comma-separated RenderQuality::column_steps; each preset is measured at each");
   CLI11_PARSE(app, argc, argv);
   int w = 0, h = 0;
   if (!bench::parse_frame_size(size, w, h)) {
@@ -63,7 +68,24 @@ inline int run(int argc, char** argv) {
       std::fprintf(stderr, "cloudbench --cost: unknown or CPU-only preset %s\n", name.c_str());
       return 2;
     }
-    presets.push_back({name, *q});
+    if (column_steps_text.empty()) {
+      presets.push_back({name, *q});
+      continue;
+    }
+    std::stringstream cs(column_steps_text);
+    for (std::string n; std::getline(cs, n, ',');) {
+      RenderQuality v = *q;
+      try {
+        v.column_steps = std::stoi(n);
+      } catch (const std::exception&) {
+        v.column_steps = -1;
+      }
+      if (v.column_steps < 0 || v.column_steps > 64) {
+        std::fprintf(stderr, "cloudbench --cost: --column-steps %s: expected integers 0..64\n", n.c_str());
+        return 2;
+      }
+      presets.push_back({name + " c=" + n, v});
+    }
   }
   if (presets.empty()) return 2;
 

@@ -105,15 +105,19 @@ CachedImage cached_render(const std::filesystem::path& file, const std::string& 
 
 // The scene's CPU reference (ReferenceSettings::pixel_samples = ref_samples) at w x h under
 // dir: <scene>_<W>x<H>[_ss<N>]_<key hash>.exr.
+// column_depths: ReferenceSettings::column_depths (the diffuse light's depths from each
+// point's own column).
 inline CachedImage reference_image(const BenchScene& s, const std::filesystem::path& dir, int w, int h,
-                                   int ref_samples) {
-  const std::string key = reference_key(s, ref_samples) + " light model " + std::to_string(reference::kLightModelRevision);
+                                   int ref_samples, bool column_depths = false) {
+  const std::string key = reference_key(s, ref_samples) + " light model " +
+                          std::to_string(reference::kLightModelRevision) + (column_depths ? " column depths" : "");
   const std::string samples = ref_samples > 1 ? "_ss" + std::to_string(ref_samples) : "";
   const std::filesystem::path file =
       dir / (slug(s.name) + "_" + std::to_string(w) + "x" + std::to_string(h) + samples + "_" + key_hash(key) + ".exr");
   return cached_render(file, key, w, h, [&] {
     reference::ReferenceSettings settings;
     settings.pixel_samples = ref_samples;
+    settings.column_depths = column_depths;
     CachedImage c;
     c.img = reference::render_reference(s.view, s.weather, settings);
     return c;

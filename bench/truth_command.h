@@ -202,7 +202,12 @@ inline int run(int argc, char** argv) {
   std::string scenes_text = "random:2026:32", size = "24x14", out = "bench-out-truth";
   int spp = 32, max_spp = 0, ref_samples = 3;
   std::uint64_t max_collisions = 50000;
+  int column_steps = 0;
   app.add_option("--scenes", scenes_text, "core or random:SEED:N");
+  app.add_option("--column-steps", column_steps,
+                 "RenderQuality::column_steps of every preset, and the reference's column depths if > 0 "
+                 "(the diffuse light's depths from each point's own column); default 0, the presets' own")
+      ->check(CLI::Range(0, 64));
   app.add_option("--size", size, "image size WxH of every render");
   app.add_option("--spp", spp, "paths per pixel of the truth (one batch)")->check(CLI::Range(2, 1 << 20));
   app.add_option("--max-spp", max_spp,
@@ -242,7 +247,7 @@ inline int run(int argc, char** argv) {
   for (const bench::BenchScene& s : scenes) {
     int scene_spp = 0;
     const bench::CachedImage truth = adaptive_truth(s, dir / "truth", w, h, spp, max_spp, max_collisions, scene_spp);
-    const bench::CachedImage ref = bench::reference_image(s, dir / "ref", w, h, ref_samples);
+    const bench::CachedImage ref = bench::reference_image(s, dir / "ref", w, h, ref_samples, column_steps > 0);
     truth_s += truth.seconds;
     ref_s += ref.seconds;
     truth_spp.push_back(scene_spp);
@@ -258,7 +263,8 @@ inline int run(int argc, char** argv) {
     rows.push_back({s.name, "reference", ref.evals_px, errors_of(ref.img, truth.img, ref.img, valid)});
     renderer.set_weather(s.weather);
     for (const std::string& name : configs) {
-      const RenderQuality q = *quality_preset(name);
+      RenderQuality q = *quality_preset(name);
+      if (column_steps > 0) q.column_steps = column_steps;
       ViewRequest v = s.view;
       v.reset_history = true;
       FrameImage last;
@@ -297,7 +303,7 @@ inline int run(int argc, char** argv) {
   std::ostringstream md;
   md << "# cloudbench --truth report\n\nCommand: `cloudbench --truth --scenes " << scenes_text << " --size " << size
      << " --spp " << spp << " --max-spp " << max_spp << " --ref-samples " << ref_samples << " --max-collisions "
-     << max_collisions << "`  \n"
+     << max_collisions << (column_steps > 0 ? " --column-steps " + std::to_string(column_steps) : std::string()) << "`  \n"
      << scenes.size() << " scenes at " << w << "x" << h << "; truth " << spp << " paths per pixel, more (up to "
      << max_spp << ") where a scene's first batch is too noisy (per scene below) ("
      << num("%.0f", truth_s) << " s of renders, 0 = cached), reference " << ref_samples << "x" << ref_samples

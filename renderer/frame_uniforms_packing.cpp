@@ -81,6 +81,7 @@ FrameUniforms pack_frame_uniforms(const FrameContext& c, const RenderQuality& qu
   u.primary_steps = quality.primary_steps;
   u.light_steps = quality.light_steps;
   u.ground_shadow_steps = quality.ground_shadow_steps;
+  u.column_steps = std::max(0, quality.column_steps);
   u.step_growth_ref_m = static_cast<float>(quality.step_growth_ref_m);
   u.long_step_factor = static_cast<float>(std::max(1, quality.long_step_factor));
   u.level_of_detail = quality.level_of_detail ? 1 : 0;

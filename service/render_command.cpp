@@ -93,6 +93,7 @@ int run_render(const RenderOptions& opt) {
     reference::ReferenceSettings settings;
     settings.cumulus_domes = opt.cumulus_domes;
     settings.noise_tiling = opt.noise_tiling;
+    settings.column_depths = opt.column_steps > 0;
     settings.cloud_phase = opt.cloud_phase;
     for (int f = 0; f < opt.frames; ++f) {
       view.frame_index = static_cast<std::uint32_t>(f);
@@ -100,7 +101,8 @@ int run_render(const RenderOptions& opt) {
       frame_ms.push_back(img.stats.render_ms);
     }
   } else {
-    const RenderQuality quality = *quality_preset(opt.quality);  // validated by the parser
+    RenderQuality quality = *quality_preset(opt.quality);  // validated by the parser
+    quality.column_steps = opt.column_steps;
     gl::EglContext context;
     CloudRenderer renderer(renderer_config(opt));
     set_render_weather(renderer, opt);

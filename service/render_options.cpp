@@ -93,6 +93,7 @@ struct RenderArgs {
   std::vector<std::string> weather;  // --weather: one preset or file, or several forecast files
   std::string quality, render_frames, spp, seed, max_order;  // --quality, --frames, --spp, --seed, --max-order
   std::string cloud_phase;                        // --cloud-phase
+  std::string column_steps;                       // --column-steps
   bool window = false;
   bool cumulus_domes = false;
   bool noise_tiling = false;
@@ -197,6 +198,12 @@ void add_quality_flags(CLI::App& cmd, RenderArgs& args, const RenderOptions& def
                "Draw cumulus layers as individual clouds (domes over a placement with a power-law spread of "
                "sizes, docs/MORPHOLOGY.md) instead of the thresholded noise field; GPU presets and --quality "
                "reference, not truth; slower on llvmpipe (docs/MORPHOLOGY.md); default off");
+  cmd.add_option("--column-steps", args.column_steps,
+                 "Give the diffuse light the optical depths of each point's own cloud column, marched in N "
+                 "steps up and N down (the independent column approximation, docs/RENDERING.md), instead of a "
+                 "homogeneous layer's; 0-64, GPU presets; any N > 0 makes --quality reference march the "
+                 "columns finely; not valid with truth; default 0 (off)")
+      ->type_name("N");
   cmd.add_flag("--noise-tiling", args.noise_tiling,
                "Read the cloud noise through its stochastic tiling, so the clouds do not repeat with the "
                "noise's period (4-50 km by cloud type, docs/MORPHOLOGY.md); every quality; the march costs "
@@ -305,6 +312,18 @@ void apply_quality(const RenderArgs& a, RenderOptions& opt) {
     opt.cumulus_domes = true;
   }
   opt.noise_tiling = a.noise_tiling;
+  if (given(cmd, "--column-steps")) {
+    if (truth) fail("--column-steps", a.column_steps, "not valid with --quality truth (the path tracer follows every path)");
+    int n = -1;
+    try {
+      std::size_t used = 0;
+      n = std::stoi(a.column_steps, &used);
+      if (used != a.column_steps.size()) n = -1;
+    } catch (const std::exception&) {
+    }
+    if (n < 0 || n > 64) fail("--column-steps", a.column_steps, "expected an integer in [0, 64]");
+    opt.column_steps = n;
+  }
   if (given(cmd, "--cloud-phase")) {
     const std::optional<model::CloudPhaseModel> m = model::cloud_phase_model_from_name(a.cloud_phase);
     if (!m) fail("--cloud-phase", a.cloud_phase, "expected fit or mie");

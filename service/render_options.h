@@ -47,6 +47,8 @@ struct RenderOptions {
   bool cumulus_domes = false;                    // --cumulus-domes: cumulus layers as individual
                                                  // domes (RendererConfig::cumulus_domes; GPU
                                                  // presets and reference, not truth)
+  int column_steps = 0;                          // --column-steps N: RenderQuality::column_steps of a
+                                                 // GPU preset; the reference's column_depths if N > 0
   bool noise_tiling = false;                     // --noise-tiling: RendererConfig::noise_tiling
                                                  // (every quality, truth included)
   model::CloudPhaseModel cloud_phase = model::CloudPhaseModel::kFit;  // --cloud-phase fit|mie

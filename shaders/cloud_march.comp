@@ -245,8 +245,19 @@ RaySample march_ray(ivec2 q, vec3 dir) {
         vec3 sun_h = sun - mu_s * up, w_h = -dir - w_up * up;
         float hh = dot(sun_h, sun_h) * dot(w_h, w_h);
         float cos_phi = hh > 1e-12 ? dot(sun_h, w_h) * inversesqrt(hh) : 1.0;
-        vec3 L_diffuse = diffuse_inscatter(L, alt, mu_s, T_atm, coverage, E_sun, ground_sun, ground_sky, ground_albedo, w_up,
-                                              cos_phi);
+        // the optical depths above and below the point: its own column's, or a homogeneous
+        // layer's of the map's coverage
+        float tau_above, tau_below;
+        if (frame.column_steps > 0) {
+          tau_above = column_optical_depth(li, p, alt, up, 1.0, frame.column_steps, w);
+          tau_below = column_optical_depth(li, p, alt, up, -1.0, frame.column_steps, w);
+        } else {
+          float sigma_nominal = L.extinction_max * L.density_scale * coverage;
+          tau_above = sigma_nominal * max(L.top_m - alt, 0.0);
+          tau_below = sigma_nominal * max(alt - L.base_m, 0.0);
+        }
+        vec3 L_diffuse = diffuse_inscatter(L, alt, tau_above, tau_below, mu_s, T_atm, coverage, E_sun, ground_sun, ground_sky,
+                                           ground_albedo, w_up, cos_phi);
         float absorbed = one_minus_exp_neg(sigma * dt);  // albedo 1: scattered fraction
         C += T * absorbed * (L_sun + L_diffuse);
         depth_acc += t * T * absorbed;

@@ -112,6 +112,11 @@ TEST_F(CliOptionsTest, RenderDefaults) {
   EXPECT_FALSE(o.noise_tiling);
   EXPECT_TRUE(render_with({"--noise-tiling"}).noise_tiling);
   EXPECT_TRUE(render_with({"--noise-tiling", "--quality", "truth"}).noise_tiling);  // every quality
+  EXPECT_EQ(o.column_steps, 0);
+  EXPECT_EQ(render_with({"--column-steps", "3"}).column_steps, 3);
+  EXPECT_EQ(render_with({"--column-steps", "4", "--quality", "reference"}).column_steps, 4);
+  for (const char* bad : {"-1", "65", "3.5", "x", ""}) expect_rejected({"render", "--column-steps", bad}, "--column-steps");
+  expect_rejected({"render", "--column-steps", "3", "--quality", "truth"}, "--column-steps");
   EXPECT_EQ(o.cloud_phase, model::CloudPhaseModel::kFit);
   EXPECT_EQ(render_with({"--cloud-phase", "mie"}).cloud_phase, model::CloudPhaseModel::kMie);
   EXPECT_EQ(render_with({"--cloud-phase", "mie", "--quality", "truth"}).cloud_phase, model::CloudPhaseModel::kMie);
@@ -145,7 +150,7 @@ TEST_F(CliOptionsTest, RenderHelpDocumentsEveryFlagWithUnits) {
   EXPECT_TRUE(r.err.empty());
   for (const char* text :
        {"--lat", "--lon", "--alt", "--heading", "--pitch", "--roll", "--time", "--fov", "--size",
-        "--weather", "--out", "--window", "--window-frames", "--exposure", "--cumulus-domes", "--noise-tiling", "--cloud-phase", "glory", "[-90, 90] (degrees)",
+        "--weather", "--out", "--window", "--window-frames", "--exposure", "--cumulus-domes", "--noise-tiling", "--column-steps", "--cloud-phase", "glory", "[-90, 90] (degrees)",
         "[-180, 180] (degrees)", "[-500, 100000] (metres above the WGS84 ellipsoid)",
         "[-360, 360] (degrees)", "(0, 170] (degrees)", "[1, 8192]", "pixels", "[-20, 20] (EV)",
         "UTC", "ISO 8601", ".json", ".exr", ".png", "default 47.45", "broken-cumulus"}) {

@@ -176,6 +176,46 @@ TEST(ReferenceClouds, LightMarchConverges) {
   EXPECT_LT(worst, 0.005);
 }
 
+// The diffuse light's depths are those of the point's own column: along one vertical they
+// add up to the same column total wherever the point is, they converge with the step, and
+// in a cumulus field they differ from column to column (clear gaps hold none) where a
+// homogeneous layer of the map's coverage would give every point of one altitude the same.
+TEST(ReferenceClouds, ColumnDepthsAreThePointsOwnColumn) {
+  const weather::Weather w = one_layer(weather::CloudType::Cumulus, 1200.0, 2400.0, 0.45);
+  const ReferenceScene s = make_reference_scene(level_view(47.45, 1000.0), w);
+  const auto inputs = reference_inputs(InputConfig{}, w.map_seed);
+  const CloudField field(s, *inputs);
+  std::uint64_t evals = 0;
+  double least = 1e30, most = 0.0, worst_total = 0.0, worst_step = 0.0;
+  for (int i = 0; i < 40; ++i) {
+    // a vertical line through the layer at a horizontal position 211 m further each time
+    const glm::dvec3 base_point(211.0 * i, -97.0 * i, 0.0);
+    const glm::dvec3 up = s.shell.up_at(base_point);
+    const double base_alt = s.shell.altitude_of(base_point);
+    double total0 = -1.0;
+    for (const double h : {1300.0, 1800.0, 2300.0}) {
+      const glm::dvec3 p = base_point + up * (h - base_alt);
+      const double alt = s.shell.altitude_of(p);
+      const ColumnDepths c = column_optical_depths(field, 0, p, alt, 2.0, evals);
+      const ColumnDepths fine = column_optical_depths(field, 0, p, alt, 0.5, evals);
+      EXPECT_GE(c.above, 0.0);
+      EXPECT_GE(c.below, 0.0);
+      const double total = c.above + c.below;
+      if (total0 < 0.0) total0 = total;
+      if (total0 > 1.0) worst_total = std::max(worst_total, std::abs(total / total0 - 1.0));
+      if (fine.above > 1.0) worst_step = std::max(worst_step, std::abs(c.above / fine.above - 1.0));
+    }
+    least = std::min(least, total0);
+    most = std::max(most, total0);
+  }
+  std::printf("column optical depth over 40 columns: %.2f .. %.2f; worst spread along a column %.2e, "
+              "2 m vs 0.5 m steps %.2e\n", least, most, worst_total, worst_step);
+  EXPECT_LT(worst_total, 0.01);  // one column, one total (up to the midpoint rule's error)
+  EXPECT_LT(worst_step, 0.01);
+  EXPECT_LT(least, 0.1);  // a gap between the cumulus
+  EXPECT_GT(most, 10.0);  // a cloud's column
+}
+
 TEST(ReferenceClouds, SunPhaseIsThePeakBeam) {
   const model::JdDParams p = model::jdd_params(20.0);
   // No shadow: the phase function itself; in shadow, the peak beam.
@@ -200,8 +240,8 @@ TEST(ReferenceClouds, DiffuseInscatterByHand) {
   L.density_scale = 1.0;
   L.phase = model::jdd_params(model::kMsTableDropletUm);  // similarity scale 1
   const glm::dvec3 e_sun(2.0), t_atm(0.8), e_sky(0.1), t_ground(0.7), e_sky_ground(0.12), albedo(0.1);
-  const double mu_s = 0.5, coverage = 0.4, alt = 1500.0;
-  // sigma_nominal = 0.02 /m; tau above = tau below = 10.
+  const double mu_s = 0.5, coverage = 0.4;
+  const ColumnDepths column{10.0, 10.0};  // the point's column: optical depth 10 above and below
   const double E_sky = 2.0 * 0.1;
   // The ground under the layer as independent columns: 0.6 of it in the clear, 0.4 under the
   // layer's full optical depth (0.05 /m over 1000 m: 50), sun and sky at ground level, with
@@ -225,18 +265,18 @@ TEST(ReferenceClouds, DiffuseInscatterByHand) {
   const double table = model::ms_source_table().lookup(10.0, 10.0, mu_s, w_up, std::acos(cos_phi) * 180.0 / kPi);
   EXPECT_GT(table, 0.0);
   const glm::dvec3 got =
-      diffuse_inscatter(L, alt, mu_s, coverage, e_sun, t_atm, e_sky, t_ground, e_sky_ground, albedo, w_up, cos_phi);
+      diffuse_inscatter(L, column, mu_s, coverage, e_sun, t_atm, e_sky, t_ground, e_sky_ground, albedo, w_up, cos_phi);
   EXPECT_NEAR(got.g, 2.0 * 0.8 * 0.5 * table + diffuse, 1e-12);
   // Looking up into the cloud (light travelling down) is brighter than looking down onto
   // it from its middle: more of the sun's light travels down there.
   const glm::dvec3 from_below =
-      diffuse_inscatter(L, alt, mu_s, coverage, e_sun, t_atm, e_sky, t_ground, e_sky_ground, albedo, -1.0, 1.0);
+      diffuse_inscatter(L, column, mu_s, coverage, e_sun, t_atm, e_sky, t_ground, e_sky_ground, albedo, -1.0, 1.0);
   const glm::dvec3 from_above =
-      diffuse_inscatter(L, alt, mu_s, coverage, e_sun, t_atm, e_sky, t_ground, e_sky_ground, albedo, 1.0, 1.0);
+      diffuse_inscatter(L, column, mu_s, coverage, e_sun, t_atm, e_sky, t_ground, e_sky_ground, albedo, 1.0, 1.0);
   EXPECT_GT(from_below.g, from_above.g);
   EXPECT_GE(from_above.g, 0.0);
   // Sun below the horizon: no sun term, sky light only (isotropic view, w_up = 0).
-  const glm::dvec3 night = diffuse_inscatter(L, alt, -0.1, coverage, e_sun, glm::dvec3(0.0), e_sky, glm::dvec3(0.0),
+  const glm::dvec3 night = diffuse_inscatter(L, column, -0.1, coverage, e_sun, glm::dvec3(0.0), e_sky, glm::dvec3(0.0),
                                              e_sky_ground, albedo, 0.0, 1.0);
   const double E_up_night = 0.1 * gain * 2.0 * 0.12 * (0.6 + 0.4 * T50);
   EXPECT_NEAR(night.r, (E_sky + E_up_night) * iso.lookup(10.0, 10.0, 1.0, 0.0, 0.0), 1e-12);

@@ -44,6 +44,31 @@ double light_optical_depth(const CloudField& field, int li, const glm::dvec3& p,
   return tau;
 }
 
+ColumnDepths column_optical_depths(const CloudField& field, int li, const glm::dvec3& p, double alt, double step_m,
+                                   std::uint64_t& evals) {
+  const ShellFrame& s = field.scene().shell;
+  const ReferenceLayer& L = field.scene().layers[static_cast<std::size_t>(li)];
+  const glm::dvec3 up = s.up_at(p);
+  // along the local vertical the distance to an altitude is the altitude difference
+  const auto depth = [&](double len, double sign) {
+    if (len <= 0.0) return 0.0;
+    const int n = std::max(1, static_cast<int>(std::ceil(len / step_m)));
+    const double dt = len / n;
+    double tau = 0.0;
+    for (int j = 0; j < n; ++j) {
+      const glm::dvec3 x = p + up * (sign * (j + 0.5) * dt);
+      tau += field.sample(li, x, s.altitude_of(x), false, evals).sigma_t * dt;
+    }
+    return tau;
+  };
+  return {depth(L.top_m - alt, 1.0), depth(alt - L.base_m, -1.0)};
+}
+
+ColumnDepths nominal_column_depths(const ReferenceLayer& L, double alt, double coverage) {
+  const double sigma_nominal = L.sigma_max_per_m * L.density_scale * coverage;
+  return {sigma_nominal * std::max(L.top_m - alt, 0.0), sigma_nominal * std::max(alt - L.base_m, 0.0)};
+}
+
 double ground_shadow_optical_depth(const CloudField& field, const glm::dvec3& p, double ground_alt,
                                    const glm::dvec3& sun, double mu_s, double light_step_m, std::uint64_t& evals) {
   const ShellFrame& s = field.scene().shell;
@@ -77,14 +102,12 @@ glm::dvec3 ground_cloud_gain(const glm::dvec3& albedo, double tau) {
   return 1.0 / (1.0 - albedo * (1.0 - slab_diffuse_transmittance(tau)));
 }
 
-glm::dvec3 diffuse_inscatter(const ReferenceLayer& L, double alt, double mu_s, double coverage,
+glm::dvec3 diffuse_inscatter(const ReferenceLayer& L, const ColumnDepths& column, double mu_s, double coverage,
                              const glm::dvec3& e_sun, const glm::dvec3& t_atm, const glm::dvec3& e_sky_here,
                              const glm::dvec3& t_atm_ground, const glm::dvec3& e_sky_ground,
                              const glm::dvec3& ground_albedo, double w_up, double cos_phi) {
   const double sim = model::ms_similarity_scale(L.phase);
-  const double sigma_nominal = L.sigma_max_per_m * L.density_scale * coverage;
-  const double tau_above = sigma_nominal * std::max(L.top_m - alt, 0.0);
-  const double tau_below = sigma_nominal * std::max(alt - L.base_m, 0.0);
+  const double tau_above = column.above, tau_below = column.below;
   const double mu_pos = std::max(mu_s, 0.0);
   glm::dvec3 J_sun(0.0);
   if (mu_pos > 0.0) {

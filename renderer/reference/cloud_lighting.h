@@ -37,6 +37,21 @@ double layer_step_scale(const ReferenceLayer& layer);
 double light_optical_depth(const CloudField& field, int li, const glm::dvec3& p, double alt, const glm::dvec3& sun,
                            double mu_s, double step_m, double tau_stop, std::uint64_t& evals);
 
+// The optical depths above and below a point through its own vertical column of layer li,
+// to the layer's top and base: the independent column approximation (Cahalan et al. 1994,
+// J. Atmos. Sci. 51, 3776) in which the diffuse light at a point is that of a plane-parallel
+// slab with the optical depths of the cloud actually above and below it. Midpoint rule with
+// steps <= step_m, without detail erosion (as the light march), no reach cap.
+struct ColumnDepths {
+  double above = 0.0, below = 0.0;
+};
+ColumnDepths column_optical_depths(const CloudField& field, int li, const glm::dvec3& p, double alt, double step_m,
+                                   std::uint64_t& evals);
+// ... of a homogeneous layer of the map's coverage instead: the layer's nominal extinction
+// sigma_max * density_scale * coverage times the distances to its top and base (the GPU's
+// RenderQuality::column_steps = 0).
+ColumnDepths nominal_column_depths(const ReferenceLayer& L, double alt, double coverage);
+
 // Optical depth of all layers from a ground point (local p, altitude ground_alt) towards
 // the sun, midpoint rule with each layer's step (light_step_m * layer_step_scale) between
 // the sun ray's crossings of the layer's base and top; no detail erosion.
@@ -60,8 +75,8 @@ using model::slab_diffuse_transmittance;
 glm::dvec3 ground_cloud_gain(const glm::dvec3& albedo, double tau);
 
 // Diffuse in-scattered radiance per unit scattering at altitude alt inside layer L
-// (docs/RENDERING.md; diffuse_inscatter in shaders/cloud_lighting.glsl): vertical optical
-// depths above/below from the nominal extinction sigma_max * density_scale * coverage.
+// (docs/RENDERING.md; diffuse_inscatter in shaders/cloud_lighting.glsl) at a point whose
+// column has the optical depths `column` above and below it (column_optical_depths).
 // The sun's part: model::ms_source_table() at those depths (scaled by
 // model::ms_similarity_scale) times F_sun = e_sun t_atm mu_s, for the scattered light's
 // zenith cosine w_up and azimuth from the sun's (cos_phi). The sky's and the ground's
@@ -69,13 +84,13 @@ glm::dvec3 ground_cloud_gain(const glm::dvec3& albedo, double tau);
 // through the top), J = E_sky J_dif(tau_a, tau_b, w_up) + E_up J_dif(tau_b, tau_a, -w_up),
 // the ground's light entering through the base (the table turned upside down); E_up = a E_g
 // is the light the ground sends up: its irradiance E_g under the layer as independent
-// columns (1 - c in the clear, c under the layer's full optical depth tau_c = sigma_max *
+// columns (1 - c in the clear, c = the map's coverage at the point, under the layer's full optical depth tau_c = sigma_max *
 // density_scale * thickness; sun and sky at ground level) with the ground-cloud round trips
 // (ground_cloud_gain(c a, tau_c)).
 // Inputs per unit solar irradiance except e_sun: t_atm = sun transmittance at the point,
 // e_sky_here = sky irradiance at the point, t_atm_ground / e_sky_ground at ground level
 // for the same mu_s; ground_albedo rgb.
-glm::dvec3 diffuse_inscatter(const ReferenceLayer& L, double alt, double mu_s, double coverage,
+glm::dvec3 diffuse_inscatter(const ReferenceLayer& L, const ColumnDepths& column, double mu_s, double coverage,
                              const glm::dvec3& e_sun, const glm::dvec3& t_atm, const glm::dvec3& e_sky_here,
                              const glm::dvec3& t_atm_ground, const glm::dvec3& e_sky_ground,
                              const glm::dvec3& ground_albedo, double w_up, double cos_phi);

@@ -75,8 +75,8 @@ glm::dvec3 PixelIntegrator::cloud_inscatter(int li, const glm::dvec3& p, double 
   const double mu_s = glm::dot(s.up_at(p), sun);
   const glm::dvec3 t_atm = sun_transmittance(alt, mu_s);
   glm::dvec3 sun_light(0.0);
+  const double step = settings_.light_step_m * layer_step_scale(L);
   if (std::max({t_atm.r, t_atm.g, t_atm.b}) > 0.0) {
-    const double step = settings_.light_step_m * layer_step_scale(L);
     const double tau = light_optical_depth(field_, li, p, alt, sun, mu_s, step, tau_stop_, evals);
     sun_light = e_sun_ * t_atm * sun_phase(L.phase, L.mie_phase.get(), cos_view_sun, tau);
   }
@@ -88,7 +88,10 @@ glm::dvec3 PixelIntegrator::cloud_inscatter(int li, const glm::dvec3& p, double 
   const double hh = glm::dot(sun_h, sun_h) * glm::dot(w_h, w_h);
   const double cos_phi = hh > 1e-24 ? glm::dot(sun_h, w_h) / std::sqrt(hh) : 1.0;
   const glm::dvec3 diffuse =
-      diffuse_inscatter(L, alt, mu_s, coverage, e_sun_, t_atm, tables_.sky_irradiance(alt, mu_s),
+      diffuse_inscatter(L,
+                        settings_.column_depths ? column_optical_depths(field_, li, p, alt, step, evals)
+                                                : nominal_column_depths(L, alt, coverage),
+                        mu_s, coverage, e_sun_, t_atm, tables_.sky_irradiance(alt, mu_s),
                         sun_transmittance(ground_alt, mu_s), tables_.sky_irradiance(ground_alt, mu_s), ground_albedo_,
                         w_up, cos_phi);
   return sun_light + diffuse;

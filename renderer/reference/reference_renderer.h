@@ -59,6 +59,9 @@ struct ReferenceSettings {
   bool honour_stratiform = true;
   // Cumulus layers as individual domes (RendererConfig::cumulus_domes; cloud_field.h)
   bool cumulus_domes = false;
+  // The diffuse light's depths from the point's own column (column_optical_depths, the GPU's
+  // RenderQuality::column_steps > 0) instead of a homogeneous layer's of the map's coverage.
+  bool column_depths = false;
   // The noise volumes' stochastic tiling (RendererConfig::noise_tiling; cloud_field.h)
   bool noise_tiling = false;
   // The layers' phase function (RendererConfig::cloud_phase; model/mie_phase_table.h)

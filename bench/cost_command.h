@@ -44,7 +44,8 @@ inline double process_cpu_ms() {
 
 inline int run(int argc, char** argv) {
   CLI::App app{"Cost of quality presets on the benchmark scenes, no reference (cloudbench --cost)"};
-  std::string size = "160x90", presets_text = "naive,default", column_steps_text;
+  std::string size = "160x90", presets_text = "naive,default";
+  std::vector<int> column_steps;
   int frames = 16;
   RendererConfig config;
   app.add_option("--size", size, "frame size WxH");
@@ -52,8 +53,10 @@ inline int run(int argc, char** argv) {
   app.add_option("--noise-tiling", config.noise_tiling, "read the noise through its stochastic tiling (RendererConfig::noise_tiling)");
   app.add_option("--frames", frames, "timed frames after the first (median)")->check(CLI::Range(1, 1000));
   app.add_option("--presets", presets_text, "comma-separated quality presets; ratios are to the first");
-  app.add_option("--column-steps", column_steps_text,
-                 "comma-separated RenderQuality::column_steps; each preset is measured at each");
+  app.add_option("--column-steps", column_steps,
+                 "comma-separated RenderQuality::column_steps; each preset is measured at each")
+      ->delimiter(',')
+      ->check(CLI::Range(0, 64));
   CLI11_PARSE(app, argc, argv);
   int w = 0, h = 0;
   if (!bench::parse_frame_size(size, w, h)) {
@@ -68,23 +71,11 @@ inline int run(int argc, char** argv) {
       std::fprintf(stderr, "cloudbench --cost: unknown or CPU-only preset %s\n", name.c_str());
       return 2;
     }
-    if (column_steps_text.empty()) {
-      presets.push_back({name, *q});
-      continue;
-    }
-    std::stringstream cs(column_steps_text);
-    for (std::string n; std::getline(cs, n, ',');) {
+    if (column_steps.empty()) presets.push_back({name, *q});
+    for (const int n : column_steps) {
       RenderQuality v = *q;
-      try {
-        v.column_steps = std::stoi(n);
-      } catch (const std::exception&) {
-        v.column_steps = -1;
-      }
-      if (v.column_steps < 0 || v.column_steps > 64) {
-        std::fprintf(stderr, "cloudbench --cost: --column-steps %s: expected integers 0..64\n", n.c_str());
-        return 2;
-      }
-      presets.push_back({name + " c=" + n, v});
+      v.column_steps = n;
+      presets.push_back({name + " c=" + std::to_string(n), v});
     }
   }
   if (presets.empty()) return 2;

@@ -314,15 +314,7 @@ void apply_quality(const RenderArgs& a, RenderOptions& opt) {
   opt.noise_tiling = a.noise_tiling;
   if (given(cmd, "--column-steps")) {
     if (truth) fail("--column-steps", a.column_steps, "not valid with --quality truth (the path tracer follows every path)");
-    int n = -1;
-    try {
-      std::size_t used = 0;
-      n = std::stoi(a.column_steps, &used);
-      if (used != a.column_steps.size()) n = -1;
-    } catch (const std::exception&) {
-    }
-    if (n < 0 || n > 64) fail("--column-steps", a.column_steps, "expected an integer in [0, 64]");
-    opt.column_steps = n;
+    opt.column_steps = parse_integer("--column-steps", a.column_steps, 0, 64, "steps");
   }
   if (given(cmd, "--cloud-phase")) {
     const std::optional<model::CloudPhaseModel> m = model::cloud_phase_model_from_name(a.cloud_phase);

@@ -225,11 +225,13 @@ FrameImage CloudRenderer::render(const ViewRequest& view, const RenderQuality& q
   timer_.end();
   timer_.begin(kShadowMapPass);  // 3.
   if (view.reset_history) shadow_map_.invalidate();  // a teleport starts from nothing
-  // The map serves the ground's pixels (and the light volume built with it, the march's):
-  // not updated while no ray sees the ground and none that needs the volume is marched.
-  const bool shadow_needed = rays.sees_ground || (quality.light_volume && rays.meets_a_layer);
-  const bool shadow_rebuilt = shadow_map_.update(frame, inputs, weather_generation_, quality.light_steps,
-                                                 !quality.ground_shadow_map, quality.light_volume, shadow_needed);
+  // The map serves the ground's pixels (and the light and column volumes built with it, the
+  // march's): not updated while no ray sees the ground and none that needs a volume is marched.
+  const bool volumes_read = quality.light_volume || quality.column_steps > 0;
+  const bool shadow_needed = rays.sees_ground || (volumes_read && rays.meets_a_layer);
+  const bool shadow_rebuilt =
+      shadow_map_.update(frame, inputs, weather_generation_, quality.light_steps, !quality.ground_shadow_map,
+                         quality.light_volume, quality.column_steps, shadow_needed);
   timer_.end();
   const TemporalPlan plan = march_and_resolve(frame, quality, rays.meets_a_layer, inputs, channel.cloud_buffer);  // 4., 5.
   timer_.begin(kCompositePass);  // 6.

@@ -9,7 +9,7 @@ namespace cloudsvc {
 bool density_loops_fit(const RenderQuality& q) {
   constexpr double kLoopIterationBudget = 65535.0;  // llvmpipe, per invocation (gallivm)
   constexpr double kMarchOverhead = 4.0;
-  const double evals = static_cast<double>(q.primary_steps) * (1.0 + q.light_steps + 2.0 * q.column_steps);
+  const double evals = static_cast<double>(q.primary_steps) * (1.0 + q.light_steps);
   return kMarchOverhead * evals * (1.0 + weather::kDomeLevels) <= kLoopIterationBudget;
 }
 

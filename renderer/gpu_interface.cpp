@@ -48,6 +48,8 @@ std::string make_preamble() {
 #undef CLOUDSVC_EMIT_SSBO
 #undef CLOUDSVC_EMIT_UBO
   s << "#define MAX_LAYERS " << kMaxLayers << '\n';
+  s << "#define COLUMN_VOLUME_TEXELS " << kColumnVolumeTexels << '\n';
+  s << "#define COLUMN_VOLUME_LEVELS " << kColumnVolumeLevels << '\n';
   s << "const float CLOUD_PIXEL_OPACITY = " << glsl_float(kCloudPixelOpacity) << ";\n";
 
   namespace m = model;

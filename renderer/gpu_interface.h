@@ -45,7 +45,8 @@ namespace cloudsvc::gpu {
   X(MS_DIFFUSE_INCIDENCE, 23) /* ... diffuse light's (ms_source_lookup.glsl) */ \
   X(GROUND_ALBEDO, 24)     /* the ground's albedo where tiles set it (ground_albedo.glsl) */ \
   X(LAYER_COVERAGE, 25)    /* the weather keyframe's per-layer coverage (forecast weather) */ \
-  X(LAYER_COVERAGE_NEXT, 26) /* ... of the next keyframe */
+  X(LAYER_COVERAGE_NEXT, 26) /* ... of the next keyframe */ \
+  X(COLUMN_VOLUME, 27)     /* per layer optical depths above and below a point (column_volume.glsl) */
 
 // Image units: each pass binds the images it writes right before its dispatch, so outputs
 // of different passes share units. GLSL: IMG_<NAME>.
@@ -60,6 +61,7 @@ namespace cloudsvc::gpu {
   X(FRAME_OUT, 0)                   \
   X(SHADOW_MAP_OUT, 0)              \
   X(LIGHT_VOLUME_OUT, 0)            \
+  X(COLUMN_VOLUME_OUT, 0)           \
   X(PLACEMENT_RINGS_OUT, 0)
 
 // Shader storage buffers. GLSL: SSBO_<NAME>.
@@ -89,6 +91,12 @@ namespace ubo { CLOUDSVC_GPU_UNIFORM_BLOCKS(CLOUDSVC_GPU_CONSTANT) }
 // have (weather::kMaxCloudLayers); the size of the per-layer arrays of the uniform blocks
 // and the layer slices of the ground shadow map and light volume.
 inline constexpr int kMaxLayers = weather::kMaxCloudLayers;
+
+// The column volume's grid (shaders/column_volume.glsl, renderer/ground_shadow_map.h; GLSL:
+// COLUMN_VOLUME_TEXELS, COLUMN_VOLUME_LEVELS): texels per side of the warped horizontal grid
+// and altitude intervals per layer (levels + 1 nodes from base to top).
+inline constexpr int kColumnVolumeTexels = 256;
+inline constexpr int kColumnVolumeLevels = 16;
 
 // GLSL text defining every name above and the model constants of
 // renderer/model/scene_constants.h and renderer/model/atmosphere_constants.h (the latter as

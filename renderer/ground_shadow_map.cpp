@@ -43,10 +43,12 @@ std::string shadow_map_stale_reason(const ShadowMapKey& key, const FrameContext&
 GroundShadowMap::GroundShadowMap()
     : map_(gl::make_texture_2d_array(GL_R32F, kSize, kSize, gpu::kMaxLayers)),
       volume_(gl::make_texture_3d(GL_R32F, kVolumeSize, kVolumeSize, kVolumeLevels * gpu::kMaxLayers, GL_CLAMP_TO_EDGE)),
+      columns_(gl::make_texture_3d(GL_RG32F, gpu::kColumnVolumeTexels, gpu::kColumnVolumeTexels,
+                                   (gpu::kColumnVolumeLevels + 1) * gpu::kMaxLayers, GL_CLAMP_TO_EDGE)),
       uniforms_(gl::make_buffer(sizeof(ShadowMapUniforms), nullptr, GL_DYNAMIC_DRAW)) {}
 
 void GroundShadowMap::build(const FrameContext& frame, const CloudPassInputs& inputs, const ShadowMapUniforms& su,
-                            bool light_volume) {
+                            bool light_volume, bool column_volume) {
   glNamedBufferSubData(uniforms_.id(), 0, sizeof(ShadowMapUniforms), &su);
   inputs.bind();
   glBindBufferBase(GL_UNIFORM_BUFFER, gpu::ubo::SHADOW_MAP, uniforms_.id());
@@ -58,11 +60,16 @@ void GroundShadowMap::build(const FrameContext& frame, const CloudPassInputs& in
     glBindImageTexture(gpu::img::LIGHT_VOLUME_OUT, volume_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
     gl::dispatch_2d(kVolumeSize, kVolumeSize, frame.layer_count * kVolumeLevels);
   }
+  if (column_volume) {
+    inputs.use(column_prog_);
+    glBindImageTexture(gpu::img::COLUMN_VOLUME_OUT, columns_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG32F);
+    gl::dispatch_2d(gpu::kColumnVolumeTexels, gpu::kColumnVolumeTexels, frame.layer_count);
+  }
 }
 
 bool GroundShadowMap::update(const FrameContext& frame, const CloudPassInputs& inputs,
                              std::uint64_t weather_generation, int light_steps, bool per_pixel, bool light_volume,
-                             bool needed) {
+                             int column_steps, bool needed) {
   ShadowMapUniforms su{};
   for (auto& m : su.to_anchor) m = glm::mat4(1.0f);
   const auto upload = [&] { glNamedBufferSubData(uniforms_.id(), 0, sizeof(ShadowMapUniforms), &su); };
@@ -78,21 +85,25 @@ bool GroundShadowMap::update(const FrameContext& frame, const CloudPassInputs& i
     su.march_per_pixel = 1;
   } else {
     const bool volume_missing = light_volume && key_ && (!key_->light_volume || key_->light_steps != light_steps);
-    const bool stale = !key_ || volume_missing || !shadow_map_stale_reason(*key_, frame, weather_generation).empty();
+    const bool columns_missing = column_steps > 0 && key_ && key_->column_steps != column_steps;
+    const bool stale = !key_ || volume_missing || columns_missing ||
+                       !shadow_map_stale_reason(*key_, frame, weather_generation).empty();
     if (stale)
-      key_ = ShadowMapKey{frame, weather_generation, shadow_map_warp(frame.camera_altitude_m), light_volume, light_steps};
+      key_ = ShadowMapKey{frame, weather_generation, shadow_map_warp(frame.camera_altitude_m), light_volume, light_steps,
+                          column_steps};
     su.warp_m = static_cast<float>(key_->warp_m);
     su.map_texels = kSize;
     su.map_valid = 1;
     su.volume_levels = kVolumeLevels;
     su.volume_texels = kVolumeSize;
     if (stale) {
-      build(frame, inputs, su, light_volume);  // this frame is the anchor: identity transforms, no volume read
+      build(frame, inputs, su, light_volume, column_steps > 0);  // this frame is the anchor: identity transforms, no volume read
       rebuilt = true;
     }
     const Reprojection r = make_reprojection(key_->anchor, frame);
     for (int i = 0; i < gpu::kMaxLayers; ++i) su.to_anchor[i] = glm::mat4(r.transform[i]);
     su.volume_valid = light_volume ? 1 : 0;
+    su.column_valid = column_steps > 0 ? 1 : 0;
   }
   upload();
   return rebuilt;
@@ -102,6 +113,7 @@ void GroundShadowMap::bind_lookups() const {
   glBindBufferBase(GL_UNIFORM_BUFFER, gpu::ubo::SHADOW_MAP, uniforms_.id());
   glBindTextureUnit(gpu::tex::GROUND_SHADOW_MAP, map_.id());
   glBindTextureUnit(gpu::tex::LIGHT_VOLUME, volume_.id());
+  glBindTextureUnit(gpu::tex::COLUMN_VOLUME, columns_.id());
 }
 
 }  // namespace cloudsvc

@@ -15,7 +15,10 @@
 // towards the sun from points inside it, on the map's warped grid (kVolumeSize per side)
 // times kVolumeLevels altitude levels, which the cloud march then looks up instead of
 // marching towards the sun from every sample (a Beer-law shadow volume: optical depth interpolated, Beer's law applied after the
-// lookup; docs/RENDERING.md).
+// lookup; docs/RENDERING.md). And the column volume (shaders/column_volume.glsl,
+// RenderQuality::column_steps): the optical depths of each layer's cloud above and below
+// points inside it along their vertical, from which the diffuse light is read (the
+// independent column approximation).
 #pragma once
 
 #include <string>
@@ -47,6 +50,7 @@ struct ShadowMapKey {
   double warp_m = 0.0;         // K
   bool light_volume = false;   // the light volume was built too
   int light_steps = 0;         // ... with this many light steps
+  int column_steps = 0;        // the column volume was built with this many steps (0: not built)
 };
 
 constexpr double kSunTolDeg = 0.05;
@@ -71,14 +75,16 @@ class GroundShadowMap {
   // `frame`), then uploads the lookup uniforms for this view. Returns true if it rebuilt.
   // per_pixel: no map; the composite marches the shadows of every ground pixel.
   // light_volume: also build the light volume (with the map, light_steps light steps;
-  // not with per_pixel). needed = false (no ground in view and no march that reads the
-  // volume): nothing is built or marched, the lookups
-  // are switched off for this frame, and the map kept for a later frame that needs it.
+  // not with per_pixel); column_steps > 0: also build the column volume with that many
+  // steps per column (not with per_pixel). needed = false (no ground in view and no march
+  // that reads a volume): nothing is built or marched, the lookups are switched off for
+  // this frame, and the map kept for a later frame that needs it.
   bool update(const FrameContext& frame, const CloudPassInputs& inputs, std::uint64_t weather_generation,
-              int light_steps, bool per_pixel, bool light_volume, bool needed = true);
+              int light_steps, bool per_pixel, bool light_volume, int column_steps, bool needed = true);
 
   // Binds the lookup uniforms (gpu::ubo::SHADOW_MAP), the map (gpu::tex::GROUND_SHADOW_MAP)
-  // and the light volume (gpu::tex::LIGHT_VOLUME) for the passes that read them.
+  // and the light and column volumes (gpu::tex::LIGHT_VOLUME, COLUMN_VOLUME) for the passes
+  // that read them.
   void bind_lookups() const;
 
   void invalidate() { key_.reset(); }
@@ -86,17 +92,23 @@ class GroundShadowMap {
   static constexpr int kVolumeLevels = 16;  // altitude levels per layer
   static constexpr std::size_t gpu_bytes() {
     return static_cast<std::size_t>(kSize) * kSize * gpu::kMaxLayers * sizeof(float) +
-           static_cast<std::size_t>(kVolumeSize) * kVolumeSize * kVolumeLevels * gpu::kMaxLayers * sizeof(float);
+           static_cast<std::size_t>(kVolumeSize) * kVolumeSize * kVolumeLevels * gpu::kMaxLayers * sizeof(float) +
+           static_cast<std::size_t>(gpu::kColumnVolumeTexels) * gpu::kColumnVolumeTexels *
+               (gpu::kColumnVolumeLevels + 1) * gpu::kMaxLayers * 2 * sizeof(float);
   }
 
  private:
-  // Builds the map (and the light volume) with the lookup uniforms su of the build frame.
-  void build(const FrameContext& frame, const CloudPassInputs& inputs, const ShadowMapUniforms& su, bool light_volume);
+  // Builds the map (and the light and column volumes if asked) with the lookup uniforms su
+  // of the build frame.
+  void build(const FrameContext& frame, const CloudPassInputs& inputs, const ShadowMapUniforms& su, bool light_volume,
+             bool column_volume);
 
   DensityPrograms build_prog_{"ground_shadow_map.comp"};
   DensityPrograms volume_prog_{"light_volume.comp"};
+  DensityPrograms column_prog_{"column_volume.comp"};
   gl::Texture map_;
   gl::Texture volume_;
+  gl::Texture columns_;
   gl::Buffer uniforms_;
   std::optional<ShadowMapKey> key_;
 };

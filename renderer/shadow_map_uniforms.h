@@ -20,7 +20,7 @@ struct ShadowMapUniforms {
   int volume_levels;    // light volume: altitude levels per layer
   int volume_texels;    // ... texels per side
   int volume_valid;     // 1: the march reads the light volume instead of a light march
-  int unused_pad;
+  int column_valid;     // 1: the diffuse light reads its depths from the column volume
 };
 static_assert(sizeof(ShadowMapUniforms) == gpu::kMaxLayers * 64 + 32, "std140 layout");
 

@@ -199,10 +199,11 @@ void add_quality_flags(CLI::App& cmd, RenderArgs& args, const RenderOptions& def
                "sizes, docs/MORPHOLOGY.md) instead of the thresholded noise field; GPU presets and --quality "
                "reference, not truth; slower on llvmpipe (docs/MORPHOLOGY.md); default off");
   cmd.add_option("--column-steps", args.column_steps,
-                 "Give the diffuse light the optical depths of each point's own cloud column, marched in N "
-                 "steps up and N down (the independent column approximation, docs/RENDERING.md), instead of a "
-                 "homogeneous layer's; 0-64, GPU presets; any N > 0 makes --quality reference march the "
-                 "columns finely; not valid with truth; default 0 (off)")
+                 "Give the diffuse light the optical depths of each point's own cloud column (the independent "
+                 "column approximation, docs/RENDERING.md), from a column volume marched in N steps from each "
+                 "layer's base to its top, instead of a homogeneous layer's; 0-64, GPU presets except naive; "
+                 "any N > 0 makes --quality reference march the columns finely; not valid with truth; "
+                 "default 0 (off)")
       ->type_name("N");
   cmd.add_flag("--noise-tiling", args.noise_tiling,
                "Read the cloud noise through its stochastic tiling, so the clouds do not repeat with the "

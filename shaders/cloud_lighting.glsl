@@ -34,27 +34,6 @@ float light_optical_depth(int li, vec3 p, float alt, vec3 sun, float mu_s, int n
   return tau;
 }
 
-// Optical depth of layer li along the local vertical from point p (altitude alt, up the
-// unit vertical there) to the layer's top (dir_sign 1) or base (-1), in n steps spaced
-// quadratically from p, base shape only, with the sample's weather map value w: the point's
-// own column (the independent column approximation, Cahalan et al. 1994), the depths at
-// which diffuse_inscatter reads its tables. The twin of reference::column_optical_depths.
-float column_optical_depth(int li, vec3 p, float alt, vec3 up, float dir_sign, int n, vec4 w) {
-  float len = dir_sign > 0.0 ? frame.layers[li].top_m - alt : alt - frame.layers[li].base_m;
-  if (len <= 0.0 || frame.layers[li].coverage <= 0.0) return 0.0;
-  float R = frame.shell_radius_m;
-  float tau = 0.0, s_prev = 0.0;
-  for (int j = 0; j < n; ++j) {
-    float f = float(j + 1) / float(n);
-    float s = len * f * f;
-    vec3 x = p + up * (dir_sign * 0.5 * (s + s_prev));
-    float coverage;
-    tau += cloud_extinction_in(li, x, altitude_of(x, R, frame.camera_altitude_m), DETAIL_NONE, w, coverage) * (s - s_prev);
-    s_prev = s;
-  }
-  return tau;
-}
-
 // Optical depth of layer li from a ground point p towards the sun (cloud shadows), in
 // n equal steps through the layer (base shape only).
 float layer_shadow_optical_depth(int li, vec3 p, float ground_alt, vec3 sun, float mu_s, int n) {
@@ -84,7 +63,8 @@ float layer_beam_transmittance(CloudLayerGpu L, float mu0) {
 
 // Diffuse in-scattered radiance (per unit scattering) at altitude alt inside layer L: the light
 // scattered more than once, with the optical depths tau_a above and tau_b below the point
-// through its own column (column_optical_depth) and the map's local coverage c.
+// through its own column (the column volume, column_volume.glsl, or a homogeneous layer's) and
+// the map's local coverage c.
 // * The sun's: the Monte Carlo source table (ms_source_over_mu) times the horizontal solar
 //   flux F_sun = E_sun T_atm mu_s, optical depths scaled to the table's droplets by
 //   (1 - g) / (1 - g_table) (similarity; L.ms_similarity). With the peak beam of the sun term

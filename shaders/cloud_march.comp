@@ -23,6 +23,7 @@
 #include "cloud_lighting.glsl"
 #include "ground_shadow_map.glsl"
 #include "light_volume.glsl"
+#include "column_volume.glsl"
 #include "aerial_perspective_lookup.glsl"
 #include "horizon_split.glsl"
 
@@ -245,12 +246,13 @@ RaySample march_ray(ivec2 q, vec3 dir) {
         vec3 sun_h = sun - mu_s * up, w_h = -dir - w_up * up;
         float hh = dot(sun_h, sun_h) * dot(w_h, w_h);
         float cos_phi = hh > 1e-12 ? dot(sun_h, w_h) * inversesqrt(hh) : 1.0;
-        // the optical depths above and below the point: its own column's, or a homogeneous
-        // layer's of the map's coverage
+        // the optical depths above and below the point: its own column's (the column volume),
+        // or a homogeneous layer's of the map's coverage
         float tau_above, tau_below;
-        if (frame.column_steps > 0) {
-          tau_above = column_optical_depth(li, p, alt, up, 1.0, frame.column_steps, w);
-          tau_below = column_optical_depth(li, p, alt, up, -1.0, frame.column_steps, w);
+        if (shadow.column_valid != 0) {
+          vec2 below_above = column_volume_depths(li, p, alt);
+          tau_below = below_above.x;
+          tau_above = below_above.y;
         } else {
           float sigma_nominal = L.extinction_max * L.density_scale * coverage;
           tau_above = sigma_nominal * max(L.top_m - alt, 0.0);

@@ -67,7 +67,7 @@ layout(std140, binding = UBO_FRAME) uniform FrameUniforms {
   float view_near_m;  // clouds drawn between the near and far planes (cloud_clip)
   float view_far_m;
   float aerosol_scale;  // on MIE_SCATTERING and MIE_EXTINCTION (the weather's visibility)
-  int column_steps;     // 0: the diffuse light's depths from the layer's nominal extinction
+  int column_steps;     // steps of each column of the column volume (column_volume.comp)
   vec4 noise_quantiles[4];
   vec4 weather_pole_south;
   vec4 weather_pole_north;

@@ -16,7 +16,7 @@ layout(std140, binding = UBO_SHADOW_MAP) uniform ShadowMapUniforms {
   int volume_levels;
   int volume_texels;
   int volume_valid;
-  int unused_pad;
+  int column_valid;
 } shadow;
 
 // Map coordinates [0,1]^2 of a point given in the anchor's local frame.

@@ -1,8 +1,8 @@
-// The diffuse light's column depths (RenderQuality::column_steps on the GPU,
-// ReferenceSettings::column_depths on the CPU; docs/RENDERING.md "Light"): the GPU draws the
-// reference's column model, and in a cumulus field that model differs from the homogeneous
-// layer's. Against the path-traced truth: cloudbench --truth --column-steps N
-// (docs/ACCURACY.md section 0).
+// The diffuse light's column depths (RenderQuality::column_steps on the GPU: the column
+// volume, shaders/column_volume.glsl; ReferenceSettings::column_depths on the CPU;
+// docs/RENDERING.md "Light"): the GPU draws the reference's column model, and in a cumulus
+// field that model differs from the homogeneous layer's. Against the path-traced truth:
+// cloudbench --truth --column-steps N (docs/ACCURACY.md section 0).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -23,7 +23,7 @@ struct Case {
   const char* preset;
   const char* time;
   double alt_m, pitch_deg;
-  bool thick;  // columns of ~10 km: the GPU's few quadratically spaced steps converge slowly
+  bool thick;  // columns of ~10 km: 16 steps of 600 m each
 };
 
 TEST(ColumnDepths, TheGpuDrawsTheReferencesColumns) {
@@ -38,7 +38,7 @@ TEST(ColumnDepths, TheGpuDrawsTheReferencesColumns) {
     CloudRenderer& r = shared_renderer();
     r.set_weather(w);
     RenderQuality with = *quality_preset("default"), without = with;
-    with.column_steps = 6;
+    with.column_steps = 16;
     const FrameImage gpu_columns = render_still_view(r, v, with);
     const FrameImage gpu_homogeneous = render_still_view(r, v, without);
     const double gpu_err = reference::compare_images(gpu_columns, ref_columns).relative_rmse;
@@ -49,24 +49,70 @@ TEST(ColumnDepths, TheGpuDrawsTheReferencesColumns) {
     std::printf("%s: GPU columns vs reference columns %.3f (GPU homogeneous vs them %.3f); the two models in the "
                 "reference differ by %.3f; GPU homogeneous vs reference homogeneous %.3f\n",
                 c.preset, gpu_err, gpu_other, models, gpu_homogeneous_err);
-    // Measured (2026-12-06): cumulus 0.185 against 0.857 and 0.851; cumulonimbus 0.167
-    // against 0.514 and 0.515 (the renderers agree within 0.005 there on the homogeneous
-    // model).
+    // Measured (2026-12-06, 16 steps): cumulus 0.303 against 0.857 and 0.851; cumulonimbus
+    // 0.184 against 0.514 and 0.515 (the renderers agree within 0.005 there on the
+    // homogeneous model). The cumulus's rest is the grid's: its texels are ~200 m where those
+    // clouds are, and a cloud's edge reads the empty columns beside it.
     // The two models differ by far more than the GPU's error in the one it draws ...
     EXPECT_GT(models, 2.5 * gpu_err);
     // ... and the GPU with columns draws the reference's column model, not the homogeneous one.
-    EXPECT_LT(gpu_err, 0.4 * gpu_other);
+    EXPECT_LT(gpu_err, 0.5 * gpu_other);
     if (c.thick) {
-      // Through a 10 km column the GPU's steps converge on the reference's: 0.167 at 6
-      // steps, 0.117 at 24, 0.070 at 64.
+      // Through a 10 km column the volume's steps converge on the reference's: 0.184 at
+      // 16 steps, 0.075 at 64.
       RenderQuality finer = with;
-      finer.column_steps = 24;
+      finer.column_steps = 64;
       const double finer_err =
           reference::compare_images(render_still_view(r, v, finer), ref_columns).relative_rmse;
-      std::printf("%s: 24 column steps %.3f\n", c.preset, finer_err);
-      EXPECT_LT(finer_err, 0.85 * gpu_err);
+      std::printf("%s: 64 column steps %.3f\n", c.preset, finer_err);
+      EXPECT_LT(finer_err, 0.6 * gpu_err);
     }
   }
+}
+
+// The column volume is built with the ground shadow map and kept while the map is: a frame
+// that reuses it marches exactly the density evaluations of one without columns, and its
+// image stays close to that of a volume built at that moment.
+TEST(ColumnDepths, TheVolumeIsReusedBetweenRebuilds) {
+  const weather::Weather w = *weather::preset("broken-cumulus");
+  const ViewRequest v0 = make_view(47.45, 8.56, 1500.0, 250.0, 5.0, "2026-06-21T09:00:00Z", 64, 36);
+  RenderQuality with = *quality_preset("default");
+  with.temporal_reuse = false;  // every pixel marched in every frame, through its centre
+  with.footprint_jitter = false;
+  with.column_steps = 16;
+  RenderQuality without = with;
+  without.column_steps = 0;
+  CloudRenderer& a = shared_renderer();
+  CloudRenderer b;
+  a.set_weather(w);
+  b.set_weather(w);
+  // 10 s later the sun has moved 0.04 deg, under the rebuild threshold, and the clouds have
+  // drifted with the wind
+  ViewRequest v10 = v0;
+  v10.unix_time_s += 10.0;
+  v10.frame_index = 1;
+  const FrameImage a0 = a.render(v0, with);
+  const FrameImage a1 = a.render(v10, with);  // reuses the volume built at v0, drifted 10 s
+  b.render(v0, without);
+  const FrameImage plain = b.render(v10, without);
+  ViewRequest fresh_view = v10;
+  fresh_view.reset_history = true;
+  const FrameImage fresh = b.render(fresh_view, with);  // builds it at v10
+  EXPECT_TRUE(fresh.stats.shadow_map_rebuilt);
+  EXPECT_TRUE(a0.stats.shadow_map_rebuilt);
+  EXPECT_FALSE(a1.stats.shadow_map_rebuilt);
+  EXPECT_EQ(a1.stats.nonfinite_pixels, 0);
+  std::printf("evals/px: build frame %.2f, reuse frame %.2f, without columns %.2f\n", a0.stats.density_evals_per_pixel,
+              a1.stats.density_evals_per_pixel, plain.stats.density_evals_per_pixel);
+  EXPECT_DOUBLE_EQ(a1.stats.density_evals_per_pixel, plain.stats.density_evals_per_pixel);
+  EXPECT_GT(a0.stats.density_evals_per_pixel, plain.stats.density_evals_per_pixel);
+  const double drifted_db = reference::compare_images(a1, fresh).psnr_db;
+  const double columns_db = reference::compare_images(plain, fresh).psnr_db;
+  std::printf("reused volume vs fresh %.2f dB; without columns vs fresh %.2f dB\n", drifted_db, columns_db);
+  // Measured (2026-12-06): 30.3 dB against 10.2 dB, in a view from inside the cumulus
+  // layer where the nearest clouds are a few hundred metres away and the grid's texels
+  // 62 m: the 85 m the clouds drift in 10 s resample the columns at their edges.
+  EXPECT_GT(drifted_db, columns_db + 15.0);
 }
 
 }  // namespace

@@ -10,12 +10,13 @@ struct RenderQuality {
   int primary_steps = 64;       // steps along the view ray through all layer intervals
   int light_steps = 6;          // steps of the secondary march towards the sun
   int ground_shadow_steps = 8;  // steps per layer of the ground-to-sun shadow march
-  // Steps of each of the two vertical marches (up to the layer's top, down to its base) that
-  // give the diffuse light the optical depths of the point's own column (the independent
-  // column approximation, shaders/cloud_lighting.glsl column_optical_depth). 0: the depths
-  // of a homogeneous layer of the map's coverage instead (no march; the layer's nominal
-  // extinction times the distances to its top and base). Off in every preset while the
-  // accuracy floors are re-measured with it (docs/ACCURACY.md section 0).
+  // The diffuse light's optical depths above and below each point from its own vertical
+  // column (the independent column approximation, Cahalan et al. 1994): the column volume
+  // (renderer/ground_shadow_map.h, shaders/column_volume.glsl), built with the ground shadow
+  // map by marching each of its columns from the layer's base to its top in this many
+  // steps (base shape). 0: the depths of a homogeneous layer of the map's coverage instead
+  // (the layer's nominal extinction times the distances to its top and base). Needs
+  // ground_shadow_map; ignored without it.
   int column_steps = 0;
   // Primary steps are uniform in ln(1 + t / t_ref): step length grows with distance t
   // like the pixel footprint. 0 = uniform steps in t (the naive march).

@@ -48,7 +48,8 @@ struct RenderOptions {
                                                  // domes (RendererConfig::cumulus_domes; GPU
                                                  // presets and reference, not truth)
   int column_steps = 0;                          // --column-steps N: RenderQuality::column_steps of a
-                                                 // GPU preset; the reference's column_depths if N > 0
+                                                 // GPU preset and the window; the reference's
+                                                 // column_depths if N > 0
   bool noise_tiling = false;                     // --noise-tiling: RendererConfig::noise_tiling
                                                  // (every quality, truth included)
   model::CloudPhaseModel cloud_phase = model::CloudPhaseModel::kFit;  // --cloud-phase fit|mie

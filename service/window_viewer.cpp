@@ -83,11 +83,13 @@ int run_window(const RenderOptions& opt) {
 
   CloudRenderer renderer(renderer_config(opt));
   set_render_weather(renderer, opt);
+  RenderQuality quality;  // every frame marched in full (the view changes by keystrokes)
+  quality.column_steps = opt.column_steps;
   int frames = 0;
   std::printf("window: arrows turn/pitch, W/S move, PgUp/PgDn altitude, T/G time +-10 min, shift x10, Esc quits\n");
   while (!window.close_requested()) {
     if (state.dirty) {
-      const FrameImage img = renderer.render(state.view);
+      const FrameImage img = renderer.render(state.view, quality);
       if (img.stats.nonfinite_pixels != 0) rc = 1;
       window.present(img, opt.exposure_ev);
       char title[256];

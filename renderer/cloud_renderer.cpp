@@ -273,7 +273,7 @@ FrameStats CloudRenderer::frame_stats(const FrameContext& frame, const Atmospher
   for (const auto& [id, channel] : channels_) channel_bytes += channel.target.gpu_bytes() + channel.cloud_buffer.gpu_bytes();
   s.gpu_memory_bytes = static_cast<std::int64_t>(field_.gpu_bytes() + AtmosphereLuts::gpu_bytes() +
                                                  MsSourceTextures::gpu_bytes() + ground_albedo_.gpu_bytes() +
-                                                 GroundShadowMap::gpu_bytes() +
+                                                 shadow_map_.gpu_bytes() +
                                                  channel_bytes +
                                                  (phase_ ? CloudPhaseTexture::gpu_bytes() : 0));
   s.luts_ms = timer_.ms(kLutsPass);

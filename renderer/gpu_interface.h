@@ -96,7 +96,7 @@ inline constexpr int kMaxLayers = weather::kMaxCloudLayers;
 // COLUMN_VOLUME_TEXELS, COLUMN_VOLUME_LEVELS): texels per side of the warped horizontal grid
 // and altitude intervals per layer (levels + 1 nodes from base to top).
 inline constexpr int kColumnVolumeTexels = 256;
-inline constexpr int kColumnVolumeLevels = 16;
+inline constexpr int kColumnVolumeLevels = 32;
 
 // GLSL text defining every name above and the model constants of
 // renderer/model/scene_constants.h and renderer/model/atmosphere_constants.h (the latter as

@@ -43,8 +43,6 @@ std::string shadow_map_stale_reason(const ShadowMapKey& key, const FrameContext&
 GroundShadowMap::GroundShadowMap()
     : map_(gl::make_texture_2d_array(GL_R32F, kSize, kSize, gpu::kMaxLayers)),
       volume_(gl::make_texture_3d(GL_R32F, kVolumeSize, kVolumeSize, kVolumeLevels * gpu::kMaxLayers, GL_CLAMP_TO_EDGE)),
-      columns_(gl::make_texture_3d(GL_RG32F, gpu::kColumnVolumeTexels, gpu::kColumnVolumeTexels,
-                                   (gpu::kColumnVolumeLevels + 1) * gpu::kMaxLayers, GL_CLAMP_TO_EDGE)),
       uniforms_(gl::make_buffer(sizeof(ShadowMapUniforms), nullptr, GL_DYNAMIC_DRAW)) {}
 
 void GroundShadowMap::build(const FrameContext& frame, const CloudPassInputs& inputs, const ShadowMapUniforms& su,
@@ -61,8 +59,11 @@ void GroundShadowMap::build(const FrameContext& frame, const CloudPassInputs& in
     gl::dispatch_2d(kVolumeSize, kVolumeSize, frame.layer_count * kVolumeLevels);
   }
   if (column_volume) {
+    if (!columns_)  // allocated when first asked for: 33 MiB that a renderer without columns never holds
+      columns_ = gl::make_texture_3d(GL_RG16F, gpu::kColumnVolumeTexels, gpu::kColumnVolumeTexels,
+                                     (gpu::kColumnVolumeLevels + 1) * gpu::kMaxLayers, GL_CLAMP_TO_EDGE);
     inputs.use(column_prog_);
-    glBindImageTexture(gpu::img::COLUMN_VOLUME_OUT, columns_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG32F);
+    glBindImageTexture(gpu::img::COLUMN_VOLUME_OUT, columns_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG16F);
     gl::dispatch_2d(gpu::kColumnVolumeTexels, gpu::kColumnVolumeTexels, frame.layer_count);
   }
 }
@@ -113,7 +114,7 @@ void GroundShadowMap::bind_lookups() const {
   glBindBufferBase(GL_UNIFORM_BUFFER, gpu::ubo::SHADOW_MAP, uniforms_.id());
   glBindTextureUnit(gpu::tex::GROUND_SHADOW_MAP, map_.id());
   glBindTextureUnit(gpu::tex::LIGHT_VOLUME, volume_.id());
-  glBindTextureUnit(gpu::tex::COLUMN_VOLUME, columns_.id());
+  glBindTextureUnit(gpu::tex::COLUMN_VOLUME, columns_.id());  // 0 until first built: read only when column_valid
 }
 
 }  // namespace cloudsvc

@@ -90,11 +90,14 @@ class GroundShadowMap {
   void invalidate() { key_.reset(); }
   static constexpr int kVolumeSize = 128;   // texels per side (2K/128 under the anchor: 125 m at K = 8 km)
   static constexpr int kVolumeLevels = 16;  // altitude levels per layer
-  static constexpr std::size_t gpu_bytes() {
+  static constexpr std::size_t kColumnVolumeBytes = static_cast<std::size_t>(gpu::kColumnVolumeTexels) *
+                                                    gpu::kColumnVolumeTexels * (gpu::kColumnVolumeLevels + 1) *
+                                                    gpu::kMaxLayers * 2 * sizeof(std::uint16_t);  // RG16F
+  // GPU memory held: the map, the light volume and, once it has been built, the column volume.
+  std::size_t gpu_bytes() const {
     return static_cast<std::size_t>(kSize) * kSize * gpu::kMaxLayers * sizeof(float) +
            static_cast<std::size_t>(kVolumeSize) * kVolumeSize * kVolumeLevels * gpu::kMaxLayers * sizeof(float) +
-           static_cast<std::size_t>(gpu::kColumnVolumeTexels) * gpu::kColumnVolumeTexels *
-               (gpu::kColumnVolumeLevels + 1) * gpu::kMaxLayers * 2 * sizeof(float);
+           (columns_ ? kColumnVolumeBytes : 0);
   }
 
  private:
@@ -108,7 +111,7 @@ class GroundShadowMap {
   DensityPrograms column_prog_{"column_volume.comp"};
   gl::Texture map_;
   gl::Texture volume_;
-  gl::Texture columns_;
+  gl::Texture columns_;  // the column volume, allocated when first built
   gl::Buffer uniforms_;
   std::optional<ShadowMapKey> key_;
 };

@@ -17,7 +17,7 @@
 #include "cloud_density.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(rg32f, binding = IMG_COLUMN_VOLUME_OUT) uniform writeonly image3D volume_out;
+layout(rg16f, binding = IMG_COLUMN_VOLUME_OUT) uniform writeonly image3D volume_out;
 
 void main() {
   ivec3 id = ivec3(gl_GlobalInvocationID);

@@ -9,7 +9,7 @@
 // layers' wind drift like the ground shadow map. Needs frame_uniforms.glsl and
 // ground_shadow_map.glsl.
 
-layout(binding = TEX_COLUMN_VOLUME) uniform sampler3D column_volume;  // N x N x (nodes * MAX_LAYERS), rg32f
+layout(binding = TEX_COLUMN_VOLUME) uniform sampler3D column_volume;  // N x N x (nodes * MAX_LAYERS), rg16f
 
 const int COLUMN_VOLUME_NODES = COLUMN_VOLUME_LEVELS + 1;
 

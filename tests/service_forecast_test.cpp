@@ -67,6 +67,7 @@ TEST(ServiceForecast, FramesShowTheForecastsCloudsUntilAClientSendsLayers) {
   w.layers = {protocol::CloudLayer{10, 1000.0, 1500.0, 1.0, 1.0, 20.0, 0.0, 0.0}};
   c.send(w);
   EXPECT_GT(frame_of(c, svc, looking_down(30.0, -40.0, kT)).cloud_fraction, 0.95);
+  EXPECT_EQ(svc.stop(), 0);
 }
 
 TEST(ServiceForecast, SimClientStreamsAForecastThatFramesShow) {
@@ -96,6 +97,7 @@ TEST(ServiceForecast, SimClientStreamsAForecastThatFramesShow) {
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_EQ(bad.err, "sim_client weather: --grib " + text.string() + ": not a GRIB file (no GRIB message found)\n");
   EXPECT_GT(frame_of(c, svc, looking_down(30.5, 15.5, kT)).cloud_fraction, 0.95);
+  EXPECT_EQ(svc.stop(), 0);
 }
 
 TEST(ServiceForecast, ABadForecastFileStopsTheServiceAtStart) {

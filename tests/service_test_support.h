@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <sys/mman.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -68,9 +69,10 @@ class ServiceProcess {
     }
   }
   ~ServiceProcess() {
-    if (pid_ > 0) {
+    if (pid_ > 0) {  // not stopped by the test: killed, so it cannot remove its frame segment
       ::kill(pid_, SIGKILL);
       ::waitpid(pid_, nullptr, 0);
+      ::shm_unlink(("/" + shm_).c_str());
     }
     std::error_code ec;
     std::filesystem::remove_all(dir_, ec);

@@ -108,6 +108,17 @@ TEST(Metar, MalformedGroupsAreQuoted) {
   EXPECT_EQ(error("LSZH 052450Z 24008KT"), "time group '052450Z' out of range (day 01-31, hour 00-23, minute 00-59)");
   EXPECT_EQ(error("lszh 051150Z"), "malformed station code 'lszh' (expected 4 letters, e.g. LSZH)");
   EXPECT_EQ(error("METAR"), "empty report");
+  // the reference time's calendar starts in 1900: day 15 before 1900-01-03 is in 1899
+  try {
+    parse_metar("LSZH 151150Z 24008KT 9999 BKN025 05/01 Q1021", utc("1900-01-03T00:00:00Z"));
+    ADD_FAILURE() << "a report dated before 1900 was accepted";
+  } catch (const MetarError& e) {
+    EXPECT_STREQ(e.what(), "time group '151150Z': its latest day 15 before the reference time falls before 1900-01-01 "
+                           "(times are 1900-2199)");
+  }
+  EXPECT_EQ(cloudsvc::geo::format_utc_iso8601(
+                parse_metar("LSZH 021150Z 24008KT 9999 BKN025 05/01 Q1021", utc("1900-01-03T00:00:00Z")).utc_s),
+            "1900-01-02T11:50:00Z");
 }
 
 // The prevailing visibility of the published reports above (their sky groups are checked

@@ -205,7 +205,10 @@ MetarReport parse_metar(std::string_view report, double reference_utc_s) {
   if (r.day < 1 || r.day > 31 || r.hour > 23 || r.minute > 59)
     throw MetarError("time group '" + std::string(time) + "' out of range (day 01-31, hour 00-23, minute 00-59)");
   const std::optional<double> t = latest_date(r.day, r.hour, r.minute, reference_utc_s + 86400.0);
-  if (!t) throw MetarError("time group '" + std::string(time) + "': no such day in the year before the reference time");
+  // every day 01-31 occurs within 13 months back, so only the calendar's start can stop it
+  if (!t)
+    throw MetarError("time group '" + std::string(time) + "': its latest day " + std::string(time.substr(0, 2)) +
+                     " before the reference time falls before 1900-01-01 (times are 1900-2199)");
   r.utc_s = *t;
   bool visibility_read = false;  // the prevailing visibility is the first visibility group
   for (; k < tokens.size(); ++k) {

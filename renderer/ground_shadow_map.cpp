@@ -59,7 +59,7 @@ void GroundShadowMap::build(const FrameContext& frame, const CloudPassInputs& in
     gl::dispatch_2d(kVolumeSize, kVolumeSize, frame.layer_count * kVolumeLevels);
   }
   if (column_volume) {
-    if (!columns_)  // allocated when first asked for: 33 MiB that a renderer without columns never holds
+    if (!columns_)  // allocated when first asked for: kColumnVolumeBytes a renderer without columns never holds
       columns_ = gl::make_texture_3d(GL_RG16F, gpu::kColumnVolumeTexels, gpu::kColumnVolumeTexels,
                                      (gpu::kColumnVolumeLevels + 1) * gpu::kMaxLayers, GL_CLAMP_TO_EDGE);
     inputs.use(column_prog_);

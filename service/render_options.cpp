@@ -201,9 +201,9 @@ void add_quality_flags(CLI::App& cmd, RenderArgs& args, const RenderOptions& def
   cmd.add_option("--column-steps", args.column_steps,
                  "Give the diffuse light the optical depths of each point's own cloud column (the independent "
                  "column approximation, docs/RENDERING.md), from a column volume marched in N steps from each "
-                 "layer's base to its top, instead of a homogeneous layer's; 0-64, GPU presets except naive, and --window; "
-                 "any N > 0 makes --quality reference march the columns finely; not valid with truth; "
-                 "default 0 (off)")
+                 "layer's base to its top, instead of a homogeneous layer's; 0-64, GPU presets except naive, "
+                 "and --window; any N > 0 makes --quality reference march the columns finely; not valid with "
+                 "truth; default 0 (off)")
       ->type_name("N");
   cmd.add_flag("--noise-tiling", args.noise_tiling,
                "Read the cloud noise through its stochastic tiling, so the clouds do not repeat with the "

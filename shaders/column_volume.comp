@@ -25,20 +25,15 @@ void main() {
   if (id.x >= COLUMN_VOLUME_TEXELS || id.y >= COLUMN_VOLUME_TEXELS || li >= frame.layer_count) return;
   float base = frame.layers[li].base_m, top = frame.layers[li].top_m;
   vec2 d = shadow_map_offset((vec2(id.xy) + 0.5) / float(COLUMN_VOLUME_TEXELS));
-  // the column's foot: the point at offset d on the sphere of radius R + base around
-  // (0, 0, -(R + h)), without cancellation (as in ground_shadow_map.comp)
-  float R = frame.shell_radius_m, h = frame.camera_altitude_m;
-  float d2 = dot(d, d);
   float below[COLUMN_VOLUME_NODES];
   for (int k = 0; k < COLUMN_VOLUME_NODES; ++k) below[k] = 0.0;
   float total = 0.0;
-  if (d2 < (R + base) * (R + base) && frame.layers[li].coverage > 0.0) {
-    float z = ((base - h) * (2.0 * R + base + h) - d2) / (sqrt((R + base) * (R + base) - d2) + R + h);
-    vec3 foot = vec3(d, z);
-    vec3 up = up_at(foot, R, h);
+  vec3 foot;  // the column's foot: the point at offset d and the layer's base
+  if (point_at_offset(d, base, foot) && frame.layers[li].coverage > 0.0) {
+    vec3 up = up_at(foot, frame.shell_radius_m, frame.camera_altitude_m);
     vec4 w = layer_weather_at(li, foot);
     int n = max(frame.column_steps, 1);
-    float H = top - base, dz = H / float(n);
+    float H = top - base, dz = H / float(n), node_dz = H / float(COLUMN_VOLUME_LEVELS);
     int k = 1;  // the next node above the foot
     // one sample per step at the same place in every step of a column, a different place in
     // each column (stratified: no column's samples all fall in the same part of the domes'
@@ -50,8 +45,8 @@ void main() {
       // the line is radial: the altitude of a point s above the foot is base + s
       float sigma = cloud_extinction_in(li, foot + up * (s0 + u * dz), base + s0 + u * dz, DETAIL_NONE, w, coverage);
       // nodes inside this step get the depth up to them
-      for (; k < COLUMN_VOLUME_NODES && float(k) * H / float(COLUMN_VOLUME_LEVELS) <= s0 + dz * 1.0001; ++k)
-        below[k] = total + sigma * (float(k) * H / float(COLUMN_VOLUME_LEVELS) - s0);
+      for (; k < COLUMN_VOLUME_NODES && float(k) * node_dz <= s0 + dz * 1.0001; ++k)
+        below[k] = total + sigma * (float(k) * node_dz - s0);
       total += sigma * dz;
     }
     for (; k < COLUMN_VOLUME_NODES; ++k) below[k] = total;

@@ -21,14 +21,10 @@ void main() {
   int n = shadow.map_texels;
   if (id.x >= n || id.y >= n || id.z >= frame.layer_count) return;
   vec2 d = shadow_map_offset((vec2(id.xy) + 0.5) / float(n));
-  // ground point under offset d: on the sphere of radius R + g around (0, 0, -(R + h)),
-  // z = sqrt((R+g)^2 - |d|^2) - (R+h) written without cancellation
   float R = frame.shell_radius_m, h = frame.camera_altitude_m, g = frame.ground_altitude_m;
-  float d2 = dot(d, d);
   float tau = 0.0;
-  if (d2 < (R + g) * (R + g)) {
-    float z = ((g - h) * (2.0 * R + g + h) - d2) / (sqrt((R + g) * (R + g) - d2) + R + h);
-    vec3 p = vec3(d, z);
+  vec3 p;  // the ground point under offset d
+  if (point_at_offset(d, g, p)) {
     float mu_s = dot(up_at(p, R, h), frame.sun_direction);
     if (mu_s > 0.0) tau = layer_shadow_optical_depth(id.z, p, g, frame.sun_direction, mu_s, frame.ground_shadow_steps);
   }

@@ -33,3 +33,15 @@ vec2 shadow_map_offset(vec2 uv) {
   float r = length(u);
   return u * shadow.warp_m / max(1.0 - r, 1e-6);
 }
+
+// The point at horizontal offset d (m, the anchor's local frame) and altitude alt: on the
+// sphere of radius R + alt around (0, 0, -(R + h)), z = sqrt((R+alt)^2 - |d|^2) - (R+h)
+// written without cancellation. False where |d| reaches past that sphere.
+bool point_at_offset(vec2 d, float alt, out vec3 p) {
+  float R = frame.shell_radius_m, h = frame.camera_altitude_m;
+  float d2 = dot(d, d);
+  p = vec3(d, 0.0);
+  if (d2 >= (R + alt) * (R + alt)) return false;
+  p.z = ((alt - h) * (2.0 * R + alt + h) - d2) / (sqrt((R + alt) * (R + alt) - d2) + R + h);
+  return true;
+}

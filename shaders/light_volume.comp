@@ -25,15 +25,10 @@ void main() {
   if (id.x >= n || id.y >= n || li >= frame.layer_count) return;
   float alt = light_volume_altitude(li, float(id.z - li * levels));
   vec2 d = shadow_map_offset((vec2(id.xy) + 0.5) / float(n));
-  // the point at offset d and altitude alt, on the sphere of radius R + alt around
-  // (0, 0, -(R + h)), without cancellation (as in ground_shadow_map.comp)
-  float R = frame.shell_radius_m, h = frame.camera_altitude_m;
-  float d2 = dot(d, d);
   float tau = 0.0;
-  if (d2 < (R + alt) * (R + alt)) {
-    float z = ((alt - h) * (2.0 * R + alt + h) - d2) / (sqrt((R + alt) * (R + alt) - d2) + R + h);
-    vec3 p = vec3(d, z);
-    float mu_s = dot(up_at(p, R, h), frame.sun_direction);
+  vec3 p;
+  if (point_at_offset(d, alt, p)) {
+    float mu_s = dot(up_at(p, frame.shell_radius_m, frame.camera_altitude_m), frame.sun_direction);
     tau = light_optical_depth(li, p, alt, frame.sun_direction, mu_s, frame.light_steps, layer_weather_at(li, p), 1e30);  // no cut-off: the volume is interpolated
   }
   if (frame.count_density_evaluations != 0) atomicAdd(counters.density_evals, g_density_evals);

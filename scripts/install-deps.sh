@@ -12,7 +12,7 @@ PACKAGES=(
   libgtest-dev libgmock-dev
   libcli11-dev nlohmann-json3-dev libspdlog-dev libfmt-dev
   libflatbuffers-dev flatbuffers-compiler libasio-dev
-  libeccodes-dev
+  libeccodes-dev libeccodes-tools  # the tools: eccodes-targets.cmake checks /usr/bin/codes_info exists
   xvfb xauth
 )
 

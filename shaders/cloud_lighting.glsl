@@ -79,12 +79,16 @@ float layer_beam_transmittance(CloudLayerGpu L, float mu0) {
 //   (ground_cloud_gain(c a, tau_c)):
 //     J = E_sky J_dif(tau_a, tau_b, w_up) + E_up J_dif(tau_b, tau_a, -w_up).
 // cos_phi: cosine of the azimuth between w and the sun (0 where either is vertical).
+// above: what the layers above the point let through (layers_above_light, layers_above.glsl:
+// x the sun's direct beam, y the sky's light, z the sun's light they scatter, entering the
+// top as diffuse light), applied to the sun's source, the light entering the top and the
+// ground's irradiance alike; (1, 1, 0) without layers above.
 // ground_sun and ground_sky (cloud_free_ground_irradiance below) are the irradiance the
 // ground under the point would receive without clouds, albedo its albedo (ground_albedo_at);
 // the march holds all three over 10 km of its ray (the sun's zenith angle at the ground below
 // a sample moves by 1.6e-4 rad per km).
 vec3 diffuse_inscatter(CloudLayerGpu L, float alt, float tau_above, float tau_below, float mu_s, vec3 T_atm, float coverage,
-                       vec3 E_sun, vec3 ground_sun, vec3 ground_sky, vec3 albedo, float w_up, float cos_phi) {
+                       vec3 E_sun, vec3 ground_sun, vec3 ground_sky, vec3 albedo, float w_up, float cos_phi, vec3 above) {
   // the optical depths above and below the point, scaled to the tables' droplets
   float sa = L.ms_similarity * tau_above;
   float sb = L.ms_similarity * tau_below;
@@ -92,9 +96,10 @@ vec3 diffuse_inscatter(CloudLayerGpu L, float alt, float tau_above, float tau_be
   vec3 J_sun = vec3(0.0);
   if (mu_pos > 0.0) {
     float phi_deg = degrees(acos(clamp(cos_phi, -1.0, 1.0)));
-    J_sun = E_sun * T_atm * (mu_pos * ms_source_over_mu(sa, sb, mu_pos, w_up, phi_deg));
+    J_sun = E_sun * T_atm * (above.x * mu_pos * ms_source_over_mu(sa, sb, mu_pos, w_up, phi_deg));
   }
-  vec3 E_sky = E_sun * sky_irradiance(alt, mu_s);
+  // diffuse light onto the layer's top: the sky's, and the sun's the layers above scatter
+  vec3 E_sky = E_sun * (sky_irradiance(alt, mu_s) * above.y + T_atm * (mu_pos * above.z));
   float mu0 = max(mu_pos, 0.05);
   // the ground under the layer: a fraction 1 - c in the clear, c under cloud of the layer's
   // full optical depth (independent columns), with the round trips to the cloud's base
@@ -104,7 +109,7 @@ vec3 diffuse_inscatter(CloudLayerGpu L, float alt, float tau_above, float tau_be
   float T_sun_ground = 1.0 - c + c * (mu_pos > 0.0 ? layer_beam_transmittance(L, mu0) : 0.0);
   float T_sky_ground = 1.0 - c + c * T_sky_cloud;
   vec3 E_up = albedo * ground_cloud_gain_for_transmittance(albedo * c, T_sky_cloud) *
-              (ground_sun * T_sun_ground + ground_sky * T_sky_ground);
+              (ground_sun * (above.x * T_sun_ground + above.z * T_sky_ground) + ground_sky * (above.y * T_sky_ground));
   return J_sun + E_sky * ms_diffuse_incidence_source(sa, sb, w_up) + E_up * ms_diffuse_incidence_source(sb, sa, -w_up);
 }
 

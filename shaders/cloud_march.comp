@@ -22,6 +22,7 @@
 #include "coverage_pyramid.glsl"
 #include "cloud_lighting.glsl"
 #include "ground_shadow_map.glsl"
+#include "layers_above.glsl"
 #include "light_volume.glsl"
 #include "column_volume.glsl"
 #include "aerial_perspective_lookup.glsl"
@@ -154,6 +155,10 @@ RaySample march_ray(ivec2 q, vec3 dir) {
                                   peak_beam_cutoff_tau(cos_view_sun, L.g_hg, L.g_d, L.draine_alpha, L.w_d,
                                                        PEAK_BEAM_NEGLIGIBLE * max(sun.z, 0.05)))
                             : frame.light_march_cutoff_tau;
+      // does any layer lie above this one (layers_above.glsl)?
+      bool layers_above = false;
+      for (int lj = 0; lj < frame.layer_count; ++lj)
+        layers_above = layers_above || (lj != li && frame.layers[lj].base_m >= L.top_m && frame.layers[lj].coverage > 0.0);
       float u0 = march_coordinate(iv[k].t0, t_ref), u1 = march_coordinate(iv[k].t1, t_ref);
       // with steps growing with distance (t_ref > 0), a near layer's share of the budget
       // can leave a far one a few steps: every layer crossing gets at least a quarter of
@@ -223,6 +228,11 @@ RaySample march_ray(ivec2 q, vec3 dir) {
         vec3 up = up_at(p, R, h);
         float mu_s = dot(up, sun);
         vec3 T_atm = transmittance_to_space(alt, mu_s);
+        // what the layers above let through (layers_above.glsl)
+        vec3 above = layers_above
+                         ? layers_above_light(layers_above_optical_depth(li, p, alt, sun, mu_s), mu_s,
+                                              layer_diffuse_reflectance(L, coverage))
+                         : vec3(1.0, 1.0, 0.0);
         // direct sun: the peak beam (single scattering and the light scattered only
         // through the diffraction peak) over the light-march optical depth
         vec3 L_sun = vec3(0.0);
@@ -234,7 +244,7 @@ RaySample march_ray(ivec2 q, vec3 dir) {
           // single scattering with the layer's Mie table per wavelength instead of the fit
           s_sum += (tabulated_phase(li, cos_view_sun) - cloud_phase(cos_view_sun, L.g_hg, L.g_d, L.draine_alpha, L.w_d)) * exp(-tau);
 #endif
-          L_sun = E_sun * T_atm * s_sum;
+          L_sun = E_sun * T_atm * (above.x * s_sum);
         }
         if (abs(t - t_ground_irradiance) > GROUND_IRRADIANCE_SPACING) {
           cloud_free_ground_irradiance(ground_alt, mu_s, E_sun, ground_sun, ground_sky);
@@ -259,7 +269,7 @@ RaySample march_ray(ivec2 q, vec3 dir) {
           tau_below = sigma_nominal * max(alt - L.base_m, 0.0);
         }
         vec3 L_diffuse = diffuse_inscatter(L, alt, tau_above, tau_below, mu_s, T_atm, coverage, E_sun, ground_sun, ground_sky,
-                                           ground_albedo, w_up, cos_phi);
+                                           ground_albedo, w_up, cos_phi, above);
         float absorbed = one_minus_exp_neg(sigma * dt);  // albedo 1: scattered fraction
         C += T * absorbed * (L_sun + L_diffuse);
         depth_acc += t * T * absorbed;

@@ -34,7 +34,6 @@ layout(rgba32f, binding = IMG_FRAME_OUT) uniform writeonly image2D out_image;
 layout(binding = TEX_SKY_VIEW_LUT) uniform sampler2D sky_view_lut;
 layout(binding = TEX_CLOUD_RADIANCE) uniform sampler2D cloud_radiance;  // resolved cloud buffer (temporal_uniforms.glsl)
 layout(binding = TEX_CLOUD_DEPTH) uniform sampler2D cloud_depth;        // ... its depth, ground-share shift, layer
-layout(binding = TEX_GROUND_SHADOW_MAP) uniform sampler2DArray ground_shadow;  // ground_shadow_map.glsl
 
 
 // The cloud-buffer texels that make frame pixel px (n of them: 1 at divisor 1, else 4)
@@ -133,7 +132,7 @@ vec3 ground_radiance(vec3 dir, float t_ground) {
 #else
   if (shadow.map_valid != 0 && mu_s > 0.0)
     for (int li = 0; li < frame.layer_count; ++li)
-      tau += textureLod(ground_shadow, vec3(shadow_map_uv((shadow.to_anchor[li] * vec4(p, 1.0)).xyz), float(li)), 0.0).r;
+      tau += shadow_map_optical_depth(li, p);
 #endif
   // sun through the clouds: the slab's beam transmittance at their vertical optical depth
   // (direct + forward-scattered + diffuse); sky light: the diffuse one; and the round trips

@@ -19,6 +19,8 @@ layout(std140, binding = UBO_SHADOW_MAP) uniform ShadowMapUniforms {
   int column_valid;
 } shadow;
 
+layout(binding = TEX_GROUND_SHADOW_MAP) uniform sampler2DArray ground_shadow;  // the map (read where map_valid)
+
 // Map coordinates [0,1]^2 of a point given in the anchor's local frame.
 vec2 shadow_map_uv(vec3 q) {
   vec2 d = q.xy;
@@ -44,4 +46,10 @@ bool point_at_offset(vec2 d, float alt, out vec3 p) {
   if (d2 >= (R + alt) * (R + alt)) return false;
   p.z = ((alt - h) * (2.0 * R + alt + h) - d2) / (sqrt((R + alt) * (R + alt) - d2) + R + h);
   return true;
+}
+
+// Layer li's optical depth towards the sun above ground point p (local frame): the map's
+// texel, after carrying p back along the layer's drift (shadow.to_anchor).
+float shadow_map_optical_depth(int li, vec3 p) {
+  return textureLod(ground_shadow, vec3(shadow_map_uv((shadow.to_anchor[li] * vec4(p, 1.0)).xyz), float(li)), 0.0).r;
 }

@@ -60,8 +60,12 @@ const std::vector<Scene>& scenes() {
     // box-filtered one on the GPU, with each side's clouds marched, 9 point samples in the
     // reference: in the overcast and sunset views, where cloud lies on both sides of the
     // horizon, that point sampling sets the floor — HorizonClouds.* compares with 9 x 9 rays)
+    // The cumulonimbus's fine floor was re-measured 2026-12-06 with the layers above a layer
+    // (shaders/layers_above.glsl: the cumulus under the Cb's anvils): 57.3 dB, the GPU
+    // marching the Cb above each sample in 16 steps without the map (LAYERS_ABOVE_MAX_STEPS;
+    // 128 steps give 57.8: the rest is the two models' own difference in that shade).
     const double floors[][2] = {{41.0, 41.0}, {45.0, 45.0}, {46.5, 46.5}, {39.0, 39.5}, {49.5, 48.0},
-                                {39.0, 38.5}, {56.5, 64.5}, {40.0, 54.5}, {34.0, 57.5}, {35.5, 41.5}};
+                                {39.0, 38.5}, {56.5, 64.5}, {40.0, 54.5}, {34.0, 55.5}, {35.5, 41.5}};
     std::vector<Scene> out;
     const auto& all = accuracy::accuracy_scenes();
     // the default preset's own 17-frame output (footprint jitter, 1-2 samples per pixel)

@@ -128,7 +128,8 @@ double relative_change(const FrameImage& a, const FrameImage& b, const std::vect
 
 // Looking up from 300 m through gaps in all four layers: every layer shows in the image,
 // more layers never make the sky more transparent, the highest layer (cirrus) is seen only
-// through the gaps of the three below it, and where all four have gaps the clear sky shows.
+// through the gaps of the three below it and shades them, and where all four have gaps the
+// clear sky shows.
 TEST(RenderLayers, FourLayersEachContributeAndTheSkyShowsThroughTheGaps) {
   const weather::Weather w = four_layers();
   ASSERT_EQ(weather::validate(w), "");
@@ -172,8 +173,9 @@ TEST(RenderLayers, FourLayersEachContributeAndTheSkyShowsThroughTheGaps) {
     EXPECT_LT(more_opaque, v.width * v.height / 100) << "a layer made the sky more transparent, layer " << i;
   }
 
-  // The cirrus (top) layer is seen through the gaps of the three below it: where those are
-  // opaque, removing it hardly changes anything; where they have gaps, it does.
+  // The cirrus (top) layer is seen through the gaps of the three below it. Where those are
+  // opaque it is hidden, but it still shades them (shaders/layers_above.glsl): removing it
+  // leaves their opacity as it is and makes them brighter.
   const FrameImage& below3 = without[3];
   std::vector<bool> opaque_below(v.width * v.height), gaps_below(v.width * v.height);
   int n_opaque = 0, n_gaps = 0;
@@ -196,7 +198,23 @@ TEST(RenderLayers, FourLayersEachContributeAndTheSkyShowsThroughTheGaps) {
               "mean opacity there %.3f\n", change_opaque, n_opaque, change_gaps, n_gaps, cirrus_alpha);
   EXPECT_GT(cirrus_alpha, 0.03) << "the cirrus should be visible through the gaps";
   EXPECT_GT(change_gaps, 0.05);
-  EXPECT_LT(change_opaque, 0.25 * change_gaps);
+  double alpha_change = 0.0, lum_full = 0.0, lum_below3 = 0.0;
+  for (int p = 0; p < v.width * v.height; ++p) {
+    if (!opaque_below[p]) continue;
+    alpha_change += std::abs(full.rgba[4 * p + 3] - below3.rgba[4 * p + 3]);
+    lum_full += luminance(&full.rgba[4 * p]);
+    lum_below3 += luminance(&below3.rgba[4 * p]);
+  }
+  alpha_change /= n_opaque;
+  const double shade = lum_full / lum_below3;
+  std::printf("behind opaque lower layers: mean opacity change %.4f; with the cirrus above they are %.3f as bright\n",
+              alpha_change, shade);
+  // Measured (2026-12-06): change 0.104 there (0.189 in the gaps), opacity change < 0.001,
+  // brightness 0.90: the cirrus (vertical optical depth up to ~2.4) shades the sun's beam
+  // and passes most of it on as diffuse light.
+  EXPECT_LT(alpha_change, 0.005);
+  EXPECT_LT(shade, 0.98);
+  EXPECT_GT(shade, 0.6);
 
   // Where all four layers have gaps the clear sky shows (the sky behind clouds is not
   // changed by them).

@@ -69,27 +69,61 @@ ColumnDepths nominal_column_depths(const ReferenceLayer& L, double alt, double c
   return {sigma_nominal * std::max(L.top_m - alt, 0.0), sigma_nominal * std::max(alt - L.base_m, 0.0)};
 }
 
-double ground_shadow_optical_depth(const CloudField& field, const glm::dvec3& p, double ground_alt,
-                                   const glm::dvec3& sun, double mu_s, double light_step_m, std::uint64_t& evals) {
+double layer_sun_optical_depth(const CloudField& field, int li, const glm::dvec3& p, double alt, const glm::dvec3& sun,
+                               double mu_s, double light_step_m, std::uint64_t& evals) {
   const ShellFrame& s = field.scene().shell;
+  const ReferenceLayer& L = field.scene().layers[static_cast<std::size_t>(li)];
+  const auto top = sphere_crossings(s.radius_m, alt, L.top_m, mu_s);
+  if (!top || top->t1 <= 0.0) return 0.0;
+  const auto base = sphere_crossings(s.radius_m, alt, L.base_m, mu_s);
+  const double t_base = (base && base->t1 > 0.0) ? base->t1 : 0.0;
+  const double t_top = top->t1;
+  if (t_top <= t_base) return 0.0;
+  const double step = light_step_m * layer_step_scale(L);
+  const int n = std::max(1, static_cast<int>(std::ceil((t_top - t_base) / step)));
+  const double dt = (t_top - t_base) / n;
   double tau = 0.0;
-  for (std::size_t li = 0; li < field.scene().layers.size(); ++li) {
-    const ReferenceLayer& L = field.scene().layers[li];
-    const auto top = sphere_crossings(s.radius_m, ground_alt, L.top_m, mu_s);
-    if (!top || top->t1 <= 0.0) continue;
-    const auto base = sphere_crossings(s.radius_m, ground_alt, L.base_m, mu_s);
-    const double t_base = (base && base->t1 > 0.0) ? base->t1 : 0.0;
-    const double t_top = top->t1;
-    if (t_top <= t_base) continue;
-    const double step = light_step_m * layer_step_scale(L);
-    const int n = std::max(1, static_cast<int>(std::ceil((t_top - t_base) / step)));
-    const double dt = (t_top - t_base) / n;
-    for (int j = 0; j < n; ++j) {
-      const glm::dvec3 x = p + sun * (t_base + (j + 0.5) * dt);
-      tau += field.sample(static_cast<int>(li), x, s.altitude_of(x), false, evals).sigma_t * dt;
-    }
+  for (int j = 0; j < n; ++j) {
+    const glm::dvec3 x = p + sun * (t_base + (j + 0.5) * dt);
+    tau += field.sample(li, x, s.altitude_of(x), false, evals).sigma_t * dt;
   }
   return tau;
+}
+
+double ground_shadow_optical_depth(const CloudField& field, const glm::dvec3& p, double ground_alt,
+                                   const glm::dvec3& sun, double mu_s, double light_step_m, std::uint64_t& evals) {
+  double tau = 0.0;
+  for (std::size_t li = 0; li < field.scene().layers.size(); ++li)
+    tau += layer_sun_optical_depth(field, static_cast<int>(li), p, ground_alt, sun, mu_s, light_step_m, evals);
+  return tau;
+}
+
+double layers_above_optical_depth(const CloudField& field, int li, const glm::dvec3& p, double alt,
+                                  const glm::dvec3& sun, double mu_s, double light_step_m, std::uint64_t& evals) {
+  if (mu_s <= 0.0) return 0.0;
+  const auto& layers = field.scene().layers;
+  const double top = layers[static_cast<std::size_t>(li)].top_m;
+  double tau = 0.0;
+  for (std::size_t lj = 0; lj < layers.size(); ++lj)
+    if (static_cast<int>(lj) != li && layers[lj].base_m >= top)
+      tau += layer_sun_optical_depth(field, static_cast<int>(lj), p, alt, sun, mu_s, light_step_m, evals);
+  return tau;
+}
+
+LightFromAbove layers_above_light(double tau, double mu_s, double r_low) {
+  if (!(tau > 0.0)) return {};
+  const double tau_v = tau * std::max(mu_s, 0.0);
+  const double T_dif = slab_diffuse_transmittance(tau_v);
+  const double gain = 1.0 / (1.0 - std::clamp(r_low, 0.0, 1.0) * (1.0 - T_dif));
+  const double direct = std::exp(-tau);
+  const double sun_diffuse =
+      mu_s > 0.0 ? std::max(slab_beam_transmittance(tau_v, std::max(mu_s, 0.05)) * gain - direct, 0.0) : 0.0;
+  return {direct, T_dif * gain, sun_diffuse};
+}
+
+double layer_diffuse_reflectance(const ReferenceLayer& L, double coverage) {
+  const double tau_cloud = L.sigma_max_per_m * L.density_scale * (L.top_m - L.base_m);
+  return std::clamp(coverage, 0.0, 1.0) * (1.0 - slab_diffuse_transmittance(tau_cloud));
 }
 
 glm::dvec3 sun_phase(const model::JdDParams& phase, const model::PhaseTable* mie, double cos_view_sun, double tau) {
@@ -105,7 +139,8 @@ glm::dvec3 ground_cloud_gain(const glm::dvec3& albedo, double tau) {
 glm::dvec3 diffuse_inscatter(const ReferenceLayer& L, const ColumnDepths& column, double mu_s, double coverage,
                              const glm::dvec3& e_sun, const glm::dvec3& t_atm, const glm::dvec3& e_sky_here,
                              const glm::dvec3& t_atm_ground, const glm::dvec3& e_sky_ground,
-                             const glm::dvec3& ground_albedo, double w_up, double cos_phi) {
+                             const glm::dvec3& ground_albedo, double w_up, double cos_phi,
+                             const LightFromAbove& above) {
   const double sim = model::ms_similarity_scale(L.phase);
   const double tau_above = column.above, tau_below = column.below;
   const double mu_pos = std::max(mu_s, 0.0);
@@ -113,9 +148,10 @@ glm::dvec3 diffuse_inscatter(const ReferenceLayer& L, const ColumnDepths& column
   if (mu_pos > 0.0) {
     const double phi_deg = std::acos(std::clamp(cos_phi, -1.0, 1.0)) * 180.0 / std::numbers::pi;
     J_sun = e_sun * t_atm *
-            (mu_pos * model::ms_source_table().lookup(sim * tau_above, sim * tau_below, mu_pos, w_up, phi_deg));
+            (above.direct * mu_pos * model::ms_source_table().lookup(sim * tau_above, sim * tau_below, mu_pos, w_up, phi_deg));
   }
-  const glm::dvec3 E_sky = e_sun * e_sky_here;
+  // diffuse light onto the layer's top: the sky's, and the sun's the layers above scatter
+  const glm::dvec3 E_sky = e_sun * (e_sky_here * above.sky + t_atm * (mu_pos * above.sun_diffuse));
   const double mu0 = std::max(mu_pos, 0.05);
   // The ground under the layer: a fraction 1 - c in the clear, c under cloud of the layer's
   // full optical depth (independent columns), with the round trips to the cloud's base.
@@ -124,7 +160,8 @@ glm::dvec3 diffuse_inscatter(const ReferenceLayer& L, const ColumnDepths& column
   const double T_sun_ground = 1.0 - c + c * (mu_pos > 0.0 ? slab_beam_transmittance(tau_cloud, mu0) : 0.0);
   const double T_sky_ground = 1.0 - c + c * slab_diffuse_transmittance(tau_cloud);
   const glm::dvec3 E_up = ground_albedo * ground_cloud_gain(ground_albedo * c, tau_cloud) * e_sun *
-                          (t_atm_ground * mu_pos * T_sun_ground + e_sky_ground * T_sky_ground);
+                          (t_atm_ground * mu_pos * (above.direct * T_sun_ground + above.sun_diffuse * T_sky_ground) +
+                           e_sky_ground * (above.sky * T_sky_ground));
   // the sky's light enters through the layer's top, the ground's through its base: the
   // Monte Carlo source of diffuse incident light, the base's turned upside down
   const model::MsSourceTable& iso = model::ms_diffuse_incidence_table();

@@ -58,6 +58,32 @@ ColumnDepths nominal_column_depths(const ReferenceLayer& L, double alt, double c
 double ground_shadow_optical_depth(const CloudField& field, const glm::dvec3& p, double ground_alt,
                                    const glm::dvec3& sun, double mu_s, double light_step_m, std::uint64_t& evals);
 
+// Optical depth of layer li alone along the sun ray from local point p (altitude alt, sun
+// zenith cosine mu_s there) below or inside it, between the ray's crossings of the layer's
+// base and top; midpoint rule with the layer's step (light_step_m * layer_step_scale), no
+// detail erosion. The part of ground_shadow_optical_depth for one layer.
+double layer_sun_optical_depth(const CloudField& field, int li, const glm::dvec3& p, double alt, const glm::dvec3& sun,
+                               double mu_s, double light_step_m, std::uint64_t& evals);
+
+// The light a layer receives through the layers above it (twin of shaders/layers_above.glsl).
+// Optical depth towards the sun, along the slant path, of the layers above layer li (those
+// whose base is at or above li's top) from local point p: layer_sun_optical_depth summed.
+double layers_above_optical_depth(const CloudField& field, int li, const glm::dvec3& p, double alt,
+                                  const glm::dvec3& sun, double mu_s, double light_step_m, std::uint64_t& evals);
+// What layers of slant optical depth tau towards the sun let through to a layer below whose
+// diffuse reflectance from above is r_low, as factors of the light above the clouds: the
+// sun's direct beam e^-tau; the sky's diffuse light T_dif(tau_v) g; the sun's light arriving
+// diffuse, T_beam(tau_v, mu0) g - e^-tau (per unit horizontal solar flux); tau_v = tau mu_s
+// their vertical optical depth as a plane-parallel slab, g = 1 / (1 - r_low (1 - T_dif(tau_v)))
+// the round trips between the two (the adding method; Liou 2002 §6.2). tau = 0: {1, 1, 0}.
+struct LightFromAbove {
+  double direct = 1.0, sky = 1.0, sun_diffuse = 0.0;
+};
+LightFromAbove layers_above_light(double tau, double mu_s, double r_low);
+// Diffuse reflectance from above of layer L where the map's coverage is c: c (1 - T_dif) of
+// its full optical depth.
+double layer_diffuse_reflectance(const ReferenceLayer& L, double coverage);
+
 // The sun's light scattered towards the camera per unit sun irradiance after a light-march
 // optical depth tau (sr^-1, rgb): the peak beam (model::peak_beam_phase: single scattering
 // and the light scattered only through the diffraction peak). Where `mie` is given, single
@@ -87,12 +113,16 @@ glm::dvec3 ground_cloud_gain(const glm::dvec3& albedo, double tau);
 // columns (1 - c in the clear, c = the map's coverage at the point, under the layer's full optical depth tau_c = sigma_max *
 // density_scale * thickness; sun and sky at ground level) with the ground-cloud round trips
 // (ground_cloud_gain(c a, tau_c)).
+// above: what the layers above the point let through (layers_above_light), applied to the
+// sun's source, the light entering the top (the sun's scattered part joins the sky's) and the
+// ground's irradiance alike.
 // Inputs per unit solar irradiance except e_sun: t_atm = sun transmittance at the point,
 // e_sky_here = sky irradiance at the point, t_atm_ground / e_sky_ground at ground level
 // for the same mu_s; ground_albedo rgb.
 glm::dvec3 diffuse_inscatter(const ReferenceLayer& L, const ColumnDepths& column, double mu_s, double coverage,
                              const glm::dvec3& e_sun, const glm::dvec3& t_atm, const glm::dvec3& e_sky_here,
                              const glm::dvec3& t_atm_ground, const glm::dvec3& e_sky_ground,
-                             const glm::dvec3& ground_albedo, double w_up, double cos_phi);
+                             const glm::dvec3& ground_albedo, double w_up, double cos_phi,
+                             const LightFromAbove& above = {});
 
 }  // namespace cloudsvc::reference

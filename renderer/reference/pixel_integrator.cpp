@@ -74,11 +74,15 @@ glm::dvec3 PixelIntegrator::cloud_inscatter(int li, const glm::dvec3& p, double 
   const glm::dvec3& sun = scene_.sun_local;
   const double mu_s = glm::dot(s.up_at(p), sun);
   const glm::dvec3 t_atm = sun_transmittance(alt, mu_s);
+  // what the layers above let through (layers_above_light)
+  const LightFromAbove above =
+      layers_above_light(layers_above_optical_depth(field_, li, p, alt, sun, mu_s, settings_.light_step_m, evals), mu_s,
+                         layer_diffuse_reflectance(L, coverage));
   glm::dvec3 sun_light(0.0);
   const double step = settings_.light_step_m * layer_step_scale(L);
   if (std::max({t_atm.r, t_atm.g, t_atm.b}) > 0.0) {
     const double tau = light_optical_depth(field_, li, p, alt, sun, mu_s, step, tau_stop_, evals);
-    sun_light = e_sun_ * t_atm * sun_phase(L.phase, L.mie_phase.get(), cos_view_sun, tau);
+    sun_light = e_sun_ * t_atm * (above.direct * sun_phase(L.phase, L.mie_phase.get(), cos_view_sun, tau));
   }
   const double ground_alt = s.ground_alt_m;
   // the scattered light travels along -dir: its zenith cosine and azimuth from the sun's
@@ -93,7 +97,7 @@ glm::dvec3 PixelIntegrator::cloud_inscatter(int li, const glm::dvec3& p, double 
                                                 : nominal_column_depths(L, alt, coverage),
                         mu_s, coverage, e_sun_, t_atm, tables_.sky_irradiance(alt, mu_s),
                         sun_transmittance(ground_alt, mu_s), tables_.sky_irradiance(ground_alt, mu_s), ground_albedo_,
-                        w_up, cos_phi);
+                        w_up, cos_phi, above);
   return sun_light + diffuse;
 }
 

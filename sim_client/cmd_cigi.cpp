@@ -18,6 +18,7 @@
 #include "sim_client/cigi_host_link.h"
 #include "sim_client/commands.h"
 #include "sim_client/flight_log.h"
+#include "sim_client/pacing.h"
 #include "sim_client/replay_poses.h"
 #include "sim_client/sweep_plan.h"
 #include "sim_client/usage_errors.h"
@@ -181,12 +182,9 @@ class CigiHost {
   }
 
   // Asynchronous: frames at --fps of wall time; the IG's datagrams are read meanwhile.
-  // Host frame k is due k / fps seconds after the first; that offset is at most a log's span
-  // (years 1900-2199), held to 200 years (6.3e9 s) before it becomes the clock's int64 ns.
+  // Host frame k is due k / fps seconds after the first (due_after: no clock overflow).
   void pace(Clock::time_point start, std::size_t frames_sent) {
-    constexpr double kMaxOffset_s = 200.0 * 365.25 * 86400.0;
-    const double offset_s = std::min(static_cast<double>(frames_sent) / o_.fps, kMaxOffset_s);
-    const auto due = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(offset_s));
+    const auto due = due_after(start, static_cast<double>(frames_sent) / o_.fps);
     while (Clock::now() < due)
       if (!take(due)) break;
   }

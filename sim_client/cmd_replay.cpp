@@ -15,6 +15,7 @@
 #include "sim_client/commands.h"
 #include "sim_client/contact_sheet.h"
 #include "sim_client/flight_log.h"
+#include "sim_client/pacing.h"
 #include "sim_client/progress.h"
 #include "sim_client/replay_poses.h"
 #include "sim_client/run_summary.h"
@@ -162,7 +163,7 @@ class Replay {
     const double t0 = poses_.front().sim_time_s;
     std::uint64_t first_seq = 0;
     for (std::size_t i = 0; i < poses_.size(); ++i) {
-      const auto due = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(poses_[i].sim_time_s - t0));
+      const auto due = due_after(start, poses_[i].sim_time_s - t0);
       while (Clock::now() < due)
         if (auto m = session.next(due)) take(*m, first_seq);
       const std::uint64_t seq = session.send(poses_[i]);

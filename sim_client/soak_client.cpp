@@ -6,6 +6,7 @@
 #include "protocol/codec.h"
 #include "sim_client/client_session.h"
 #include "sim_client/connection_failure.h"
+#include "sim_client/pacing.h"
 #include "sim_client/service_address.h"
 
 namespace cloudsvc::sim {
@@ -307,7 +308,7 @@ std::chrono::steady_clock::time_point soak_pose_due(std::chrono::steady_clock::t
   const double offset_s = static_cast<double>(k) / rate_hz;            // s after start
   const double span_s = std::chrono::duration<double>(end - start).count();  // s, the run
   if (!(offset_s < span_s)) return end;  // also inf and NaN: never cast to the clock
-  return start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(offset_s));
+  return due_after(start, offset_s);
 }
 
 SoakClient::Clock::time_point SoakClient::due(std::uint64_t k) const {

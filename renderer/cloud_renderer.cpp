@@ -225,10 +225,12 @@ FrameImage CloudRenderer::render(const ViewRequest& view, const RenderQuality& q
   timer_.end();
   timer_.begin(kShadowMapPass);  // 3.
   if (view.reset_history) shadow_map_.invalidate();  // a teleport starts from nothing
-  // The map serves the ground's pixels (and the light and column volumes built with it, the
-  // march's): not updated while no ray sees the ground and none that needs a volume is marched.
+  // The map serves the ground's pixels, the march's layers under another (their light from
+  // above) and the light and column volumes built with it (the march's): not updated while
+  // no ray sees the ground and none that reads the map or a volume is marched.
   const bool volumes_read = quality.light_volume || quality.column_steps > 0;
-  const bool shadow_needed = rays.sees_ground || (volumes_read && rays.meets_a_layer);
+  const bool shadow_needed =
+      rays.sees_ground || rays.meets_a_layer_under_another || (volumes_read && rays.meets_a_layer);
   const bool shadow_rebuilt =
       shadow_map_.update(frame, inputs, weather_generation_, quality.light_steps, !quality.ground_shadow_map,
                          quality.light_volume, quality.column_steps, shadow_needed);

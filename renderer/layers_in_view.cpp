@@ -62,16 +62,27 @@ FrameRays classify_frame_rays(const FrameContext& c) {
   const double mu_ground = h > ground ? -std::sqrt(std::max(0.0, one_minus_ratio_sq(R, h, ground))) : 0.0;
   FrameRays out;
   out.sees_ground = mu.min < mu_ground + margin;
-  for (int i = 0; i < c.layer_count && !out.meets_a_layer; ++i) {
+  // a drawn layer whose base is at or above layer i's top (shaders/layers_above.glsl)
+  const auto has_layer_above = [&c](int i) {
+    for (int j = 0; j < c.layer_count; ++j)
+      if (j != i && c.layers[static_cast<size_t>(j)].drawn_coverage() > 0.0 &&
+          c.layers[static_cast<size_t>(j)].layer.base_m >= c.layers[static_cast<size_t>(i)].layer.top_m)
+        return true;
+    return false;
+  };
+  for (int i = 0; i < c.layer_count; ++i) {
     const LayerFrame& L = c.layers[static_cast<size_t>(i)];
     if (L.drawn_coverage() <= 0.0) continue;  // culled or clear: not marched
     const double base = L.layer.base_m, top = L.layer.top_m;
+    bool in_view;
     if (h >= top)  // rays below the top sphere's tangent meet it
-      out.meets_a_layer = mu.min < -std::sqrt(std::max(0.0, one_minus_ratio_sq(R, h, top))) + margin;
+      in_view = mu.min < -std::sqrt(std::max(0.0, one_minus_ratio_sq(R, h, top))) + margin;
     else if (h >= base)  // inside the layer
-      out.meets_a_layer = true;
+      in_view = true;
     else  // below the base: every ray that does not hit the ground first reaches the base sphere
-      out.meets_a_layer = mu.max > mu_ground - margin;
+      in_view = mu.max > mu_ground - margin;
+    out.meets_a_layer = out.meets_a_layer || in_view;
+    out.meets_a_layer_under_another = out.meets_a_layer_under_another || (in_view && has_layer_above(i));
   }
   return out;
 }

@@ -31,6 +31,9 @@ struct FrameRays {
   // some ray meets a layer with coverage > 0 (culled layers do not count: the march skips
   // them anyway)
   bool meets_a_layer = false;
+  // ... one of them under another drawn layer, whose light the march reads from the ground
+  // shadow map (shaders/layers_above.glsl)
+  bool meets_a_layer_under_another = false;
   // some ray hits the ground sphere (whose pixels need the ground shadow map); false, for
   // example, for a camera looking up
   bool sees_ground = false;

@@ -83,5 +83,47 @@ TEST(LayersAbove, ADeckShadesTheLayerBelowAndSendsItsLightDown) {
   EXPECT_LT(err[1], err[0] + 0.02);
 }
 
+// Looking up from under the cumulus no ray sees the ground, yet the cumulus samples read the
+// deck's light from the ground shadow map: it is built for them, and reading it costs no
+// density evaluation (a march of the deck per sample would).
+TEST(LayersAbove, TheMapIsBuiltForALayerUnderAnotherWithoutGroundInView) {
+  const weather::Weather cumulus = *weather::preset("scattered-cumulus");
+  weather::Weather decked = cumulus;
+  weather::CloudLayer deck = weather::default_layer(weather::CloudType::Altostratus);
+  deck.base_m = 4000.0;
+  deck.top_m = 4800.0;
+  deck.coverage = 0.9;
+  decked.layers.push_back(deck);
+  const ViewRequest v = make_view(47.45, 8.56, 600.0, 135.0, 45.0, "2026-06-21T08:00Z", 32, 18, 60.0);
+  RenderQuality q = *quality_preset("default");
+  RenderQuality per_sample = q;
+  per_sample.ground_shadow_map = false;  // no map: each upper layer marched from every sample
+  CloudRenderer& open_sky = shared_renderer();  // (creates the GL context the other two share)
+  CloudRenderer with_map, without_map;
+  open_sky.set_weather(cumulus);
+  with_map.set_weather(decked);
+  without_map.set_weather(decked);
+  ViewRequest fresh = v;
+  fresh.reset_history = true;  // the shared renderer may hold a map of another view
+  const FrameImage a = open_sky.render(fresh, q);
+  const FrameImage b = with_map.render(v, q);
+  without_map.render(v, per_sample);
+  // the next frame, 1 s later: the map is kept (evaluations of the march alone)
+  ViewRequest next = v;
+  next.unix_time_s += 1.0;
+  next.frame_index = 1;
+  const FrameImage b1 = with_map.render(next, q);
+  const FrameImage c1 = without_map.render(next, per_sample);
+  std::printf("map rebuilt: open sky %d, under the deck %d; next frame's evals/px with the map %.2f, marched per "
+              "sample %.2f\n",
+              a.stats.shadow_map_rebuilt, b.stats.shadow_map_rebuilt, b1.stats.density_evals_per_pixel,
+              c1.stats.density_evals_per_pixel);
+  EXPECT_FALSE(a.stats.shadow_map_rebuilt);  // nothing reads it
+  EXPECT_TRUE(b.stats.shadow_map_rebuilt);
+  EXPECT_FALSE(b1.stats.shadow_map_rebuilt);
+  EXPECT_LT(b1.stats.density_evals_per_pixel, c1.stats.density_evals_per_pixel);
+  EXPECT_EQ(b1.stats.nonfinite_pixels, 0);
+}
+
 }  // namespace
 }  // namespace cloudsvc::test

@@ -45,17 +45,22 @@ TEST(LayersAbove, TheDeckPassesTheSlabsLightOn) {
   EXPECT_GT(thick.sun_diffuse, 1e6 * thick.direct);
 }
 
+// w with an altostratus deck at 4.0-4.8 km over 90 % of the sky above its layers.
+weather::Weather with_deck(weather::Weather w) {
+  weather::CloudLayer deck = weather::default_layer(weather::CloudType::Altostratus);
+  deck.base_m = 4000.0;
+  deck.top_m = 4800.0;
+  deck.coverage = 0.9;
+  w.layers.push_back(deck);
+  return w;
+}
+
 // Scattered cumulus seen from 3.2 km, between it and an altostratus deck (4.0-4.8 km, 90 %)
 // under a sun 40 degrees high: the deck darkens the view by the share the two renderers
 // agree on, and the GPU stays as close to the reference with the deck as without it.
 TEST(LayersAbove, ADeckShadesTheLayerBelowAndSendsItsLightDown) {
   const weather::Weather cumulus = *weather::preset("scattered-cumulus");
-  weather::Weather decked = cumulus;
-  weather::CloudLayer deck = weather::default_layer(weather::CloudType::Altostratus);
-  deck.base_m = 4000.0;
-  deck.top_m = 4800.0;
-  deck.coverage = 0.9;
-  decked.layers.push_back(deck);
+  const weather::Weather decked = with_deck(cumulus);
   const ViewRequest v = make_view(47.45, 8.56, 3200.0, 135.0, -20.0, "2026-06-21T08:00Z", 32, 18, 60.0);
   const reference::ReferenceSettings settings;
   CloudRenderer& r = shared_renderer();
@@ -88,12 +93,7 @@ TEST(LayersAbove, ADeckShadesTheLayerBelowAndSendsItsLightDown) {
 // density evaluation (a march of the deck per sample would).
 TEST(LayersAbove, TheMapIsBuiltForALayerUnderAnotherWithoutGroundInView) {
   const weather::Weather cumulus = *weather::preset("scattered-cumulus");
-  weather::Weather decked = cumulus;
-  weather::CloudLayer deck = weather::default_layer(weather::CloudType::Altostratus);
-  deck.base_m = 4000.0;
-  deck.top_m = 4800.0;
-  deck.coverage = 0.9;
-  decked.layers.push_back(deck);
+  const weather::Weather decked = with_deck(cumulus);
   const ViewRequest v = make_view(47.45, 8.56, 600.0, 135.0, 45.0, "2026-06-21T08:00Z", 32, 18, 60.0);
   RenderQuality q = *quality_preset("default");
   RenderQuality per_sample = q;

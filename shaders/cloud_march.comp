@@ -158,7 +158,7 @@ RaySample march_ray(ivec2 q, vec3 dir) {
       // does any layer lie above this one (layers_above.glsl)?
       bool layers_above = false;
       for (int lj = 0; lj < frame.layer_count; ++lj)
-        layers_above = layers_above || (lj != li && frame.layers[lj].base_m >= L.top_m && frame.layers[lj].coverage > 0.0);
+        layers_above = layers_above || layer_is_above(lj, li);
       float u0 = march_coordinate(iv[k].t0, t_ref), u1 = march_coordinate(iv[k].t1, t_ref);
       // with steps growing with distance (t_ref > 0), a near layer's share of the budget
       // can leave a far one a few steps: every layer crossing gets at least a quarter of

@@ -9,6 +9,11 @@
 #include "ground_shadow_map.glsl"
 #include "cloud_lighting.glsl"
 
+// Is layer lj drawn above layer li (its base at or above li's top, its coverage > 0)?
+bool layer_is_above(int lj, int li) {
+  return lj != li && frame.layers[lj].base_m >= frame.layers[li].top_m && frame.layers[lj].coverage > 0.0;
+}
+
 // Optical depth towards the sun (along the slant path) of the layers above layer li, those
 // whose base is at or above li's top, from local point p at altitude alt, sun zenith cosine
 // mu_s there. From the ground shadow map where there is one: each upper layer's depth at the
@@ -23,7 +28,6 @@
 const int LAYERS_ABOVE_MAX_STEPS = 16;
 float layers_above_optical_depth(int li, vec3 p, float alt, vec3 sun, float mu_s) {
   if (mu_s <= 0.0) return 0.0;
-  float top = frame.layers[li].top_m;
   float tau = 0.0;
   bool map = shadow.map_valid != 0;
   vec3 g = p;
@@ -35,7 +39,7 @@ float layers_above_optical_depth(int li, vec3 p, float alt, vec3 sun, float mu_s
     g = p - sun * t;
   }
   for (int lj = 0; lj < frame.layer_count; ++lj) {
-    if (lj == li || frame.layers[lj].base_m < top || frame.layers[lj].coverage <= 0.0) continue;
+    if (!layer_is_above(lj, li)) continue;
     tau += map ? shadow_map_optical_depth(lj, g) : layer_shadow_optical_depth(lj, p, alt, sun, mu_s, min(frame.ground_shadow_steps, LAYERS_ABOVE_MAX_STEPS));
   }
   return tau;

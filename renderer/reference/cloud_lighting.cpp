@@ -14,6 +14,12 @@ namespace cloudsvc::reference {
 namespace {
 constexpr double kCumulusPeriod_m = 8000.0;
 constexpr double kCumulusPeakSigma_per_m = 0.15;  // 0.1885 /m (d = 20 um) * 0.40 * 2
+
+// The layer's full nominal optical depth: peak extinction times density scale times
+// thickness (a homogeneous layer at full coverage).
+double nominal_optical_depth(const ReferenceLayer& L) {
+  return L.sigma_max_per_m * L.density_scale * (L.top_m - L.base_m);
+}
 }  // namespace
 
 double layer_step_scale(const ReferenceLayer& layer) {
@@ -122,7 +128,7 @@ LightFromAbove layers_above_light(double tau, double mu_s, double r_low) {
 }
 
 double layer_diffuse_reflectance(const ReferenceLayer& L, double coverage) {
-  const double tau_cloud = L.sigma_max_per_m * L.density_scale * (L.top_m - L.base_m);
+  const double tau_cloud = nominal_optical_depth(L);
   return std::clamp(coverage, 0.0, 1.0) * (1.0 - slab_diffuse_transmittance(tau_cloud));
 }
 
@@ -156,7 +162,7 @@ glm::dvec3 diffuse_inscatter(const ReferenceLayer& L, const ColumnDepths& column
   // The ground under the layer: a fraction 1 - c in the clear, c under cloud of the layer's
   // full optical depth (independent columns), with the round trips to the cloud's base.
   const double c = std::clamp(coverage, 0.0, 1.0);
-  const double tau_cloud = L.sigma_max_per_m * L.density_scale * (L.top_m - L.base_m);
+  const double tau_cloud = nominal_optical_depth(L);
   const double T_sun_ground = 1.0 - c + c * (mu_pos > 0.0 ? slab_beam_transmittance(tau_cloud, mu0) : 0.0);
   const double T_sky_ground = 1.0 - c + c * slab_diffuse_transmittance(tau_cloud);
   const glm::dvec3 E_up = ground_albedo * ground_cloud_gain(ground_albedo * c, tau_cloud) * e_sun *

@@ -23,6 +23,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -54,9 +55,10 @@ inline int run(int argc, char** argv) {
   app.add_option("--frames", frames, "timed frames after the first (median)")->check(CLI::Range(1, 1000));
   app.add_option("--presets", presets_text, "comma-separated quality presets; ratios are to the first");
   app.add_option("--column-steps", column_steps,
-                 "comma-separated RenderQuality::column_steps; each preset is measured at each")
+                 "comma-separated RenderQuality::column_steps; each preset is measured at each; -N: N steps "
+                 "marched from each lit sample instead of the column volume (RenderQuality::column_volume off)")
       ->delimiter(',')
-      ->check(CLI::Range(0, 64));
+      ->check(CLI::Range(-64, 64));
   CLI11_PARSE(app, argc, argv);
   int w = 0, h = 0;
   if (!bench::parse_frame_size(size, w, h)) {
@@ -74,8 +76,9 @@ inline int run(int argc, char** argv) {
     if (column_steps.empty()) presets.push_back({name, *q});
     for (const int n : column_steps) {
       RenderQuality v = *q;
-      v.column_steps = n;
-      presets.push_back({name + " c=" + std::to_string(n), v});
+      v.column_steps = std::abs(n);
+      v.column_volume = n >= 0;
+      presets.push_back({name + (n >= 0 ? " c=" : " marched c=") + std::to_string(std::abs(n)), v});
     }
   }
   if (presets.empty()) return 2;

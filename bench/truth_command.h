@@ -208,6 +208,10 @@ inline int run(int argc, char** argv) {
                  "RenderQuality::column_steps of every preset, and the reference's column depths if > 0 "
                  "(the diffuse light's depths from each point's own column); default 0, the presets' own")
       ->check(CLI::Range(0, 64));
+  bool column_march = false;
+  app.add_flag("--column-march", column_march,
+               "with --column-steps: every preset marches the column depths from each lit sample instead of "
+               "reading the column volume (RenderQuality::column_volume off)");
   app.add_option("--size", size, "image size WxH of every render");
   app.add_option("--spp", spp, "paths per pixel of the truth (one batch)")->check(CLI::Range(2, 1 << 20));
   app.add_option("--max-spp", max_spp,
@@ -265,6 +269,7 @@ inline int run(int argc, char** argv) {
     for (const std::string& name : configs) {
       RenderQuality q = *quality_preset(name);
       if (column_steps > 0) q.column_steps = column_steps;
+      if (column_march) q.column_volume = false;
       ViewRequest v = s.view;
       v.reset_history = true;
       FrameImage last;
@@ -303,7 +308,8 @@ inline int run(int argc, char** argv) {
   std::ostringstream md;
   md << "# cloudbench --truth report\n\nCommand: `cloudbench --truth --scenes " << scenes_text << " --size " << size
      << " --spp " << spp << " --max-spp " << max_spp << " --ref-samples " << ref_samples << " --max-collisions "
-     << max_collisions << (column_steps > 0 ? " --column-steps " + std::to_string(column_steps) : std::string()) << "`  \n"
+     << max_collisions << (column_steps > 0 ? " --column-steps " + std::to_string(column_steps) : std::string())
+     << (column_march ? " --column-march" : "") << "`  \n"
      << scenes.size() << " scenes at " << w << "x" << h << "; truth " << spp << " paths per pixel, more (up to "
      << max_spp << ") where a scene's first batch is too noisy (per scene below) ("
      << num("%.0f", truth_s) << " s of renders, 0 = cached), reference " << ref_samples << "x" << ref_samples

@@ -228,12 +228,17 @@ FrameImage CloudRenderer::render(const ViewRequest& view, const RenderQuality& q
   // The map serves the ground's pixels, the march's layers under another (their light from
   // above) and the light and column volumes built with it (the march's): not updated while
   // no ray sees the ground and none that reads the map or a volume is marched.
-  const bool volumes_read = quality.light_volume || quality.column_steps > 0;
+  // The diffuse light's column depths: from the column volume, or marched per lit sample
+  // where there is no map to build it with or the quality asks for that.
+  const bool column_volume = quality.column_volume && quality.ground_shadow_map;
+  const int volume_column_steps = column_volume ? quality.column_steps : 0;
+  const int marched_column_steps = column_volume ? 0 : quality.column_steps;
+  const bool volumes_read = quality.light_volume || volume_column_steps > 0;
   const bool shadow_needed =
       rays.sees_ground || rays.meets_a_layer_under_another || (volumes_read && rays.meets_a_layer);
   const bool shadow_rebuilt =
       shadow_map_.update(frame, inputs, weather_generation_, quality.light_steps, !quality.ground_shadow_map,
-                         quality.light_volume, quality.column_steps, shadow_needed);
+                         quality.light_volume, volume_column_steps, marched_column_steps, shadow_needed);
   timer_.end();
   const TemporalPlan plan = march_and_resolve(frame, quality, rays.meets_a_layer, inputs, channel.cloud_buffer);  // 4., 5.
   timer_.begin(kCompositePass);  // 6.

@@ -70,9 +70,10 @@ void GroundShadowMap::build(const FrameContext& frame, const CloudPassInputs& in
 
 bool GroundShadowMap::update(const FrameContext& frame, const CloudPassInputs& inputs,
                              std::uint64_t weather_generation, int light_steps, bool per_pixel, bool light_volume,
-                             int column_steps, bool needed) {
+                             int column_steps, int column_march_steps, bool needed) {
   ShadowMapUniforms su{};
   for (auto& m : su.to_anchor) m = glm::mat4(1.0f);
+  su.column_march_steps = std::max(column_march_steps, 0);
   const auto upload = [&] { glNamedBufferSubData(uniforms_.id(), 0, sizeof(ShadowMapUniforms), &su); };
   if (!needed) {  // everything off: no map, no per-pixel shadows, no volume this frame
     upload();

@@ -76,11 +76,14 @@ class GroundShadowMap {
   // per_pixel: no map; the composite marches the shadows of every ground pixel.
   // light_volume: also build the light volume (with the map, light_steps light steps;
   // not with per_pixel); column_steps > 0: also build the column volume with that many
-  // steps per column (not with per_pixel). needed = false (no ground in view and no march
-  // that reads a volume): nothing is built or marched, the lookups are switched off for
-  // this frame, and the map kept for a later frame that needs it.
+  // steps per column (not with per_pixel). column_march_steps > 0: the march marches each
+  // lit sample's column in that many steps instead (every frame, needed or not). needed =
+  // false (no ground in view and no march that reads a volume): nothing is built or
+  // marched, the lookups are switched off for this frame, and the map kept for a later
+  // frame that needs it.
   bool update(const FrameContext& frame, const CloudPassInputs& inputs, std::uint64_t weather_generation,
-              int light_steps, bool per_pixel, bool light_volume, int column_steps, bool needed = true);
+              int light_steps, bool per_pixel, bool light_volume, int column_steps, int column_march_steps,
+              bool needed = true);
 
   // Binds the lookup uniforms (gpu::ubo::SHADOW_MAP), the map (gpu::tex::GROUND_SHADOW_MAP)
   // and the light and column volumes (gpu::tex::LIGHT_VOLUME, COLUMN_VOLUME) for the passes

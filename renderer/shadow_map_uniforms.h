@@ -21,7 +21,9 @@ struct ShadowMapUniforms {
   int volume_texels;    // ... texels per side
   int volume_valid;     // 1: the march reads the light volume instead of a light march
   int column_valid;     // 1: the diffuse light reads its depths from the column volume
+  int column_march_steps;  // > 0: ... or marches them from each lit sample in this many steps
+  int pad_[3];             // C++ only: std140 rounds the block's size up to 16 bytes
 };
-static_assert(sizeof(ShadowMapUniforms) == gpu::kMaxLayers * 64 + 32, "std140 layout");
+static_assert(sizeof(ShadowMapUniforms) == gpu::kMaxLayers * 64 + 48, "std140 layout");
 
 }  // namespace cloudsvc

@@ -103,6 +103,7 @@ int run_render(const RenderOptions& opt) {
   } else {
     RenderQuality quality = *quality_preset(opt.quality);  // validated by the parser
     quality.column_steps = opt.column_steps;
+    quality.column_volume = !opt.column_march;
     gl::EglContext context;
     CloudRenderer renderer(renderer_config(opt));
     set_render_weather(renderer, opt);

@@ -97,6 +97,7 @@ struct RenderArgs {
   bool window = false;
   bool cumulus_domes = false;
   bool noise_tiling = false;
+  bool column_march = false;                      // --column-march
 };
 
 // Raw text of each `demo` flag.
@@ -205,6 +206,10 @@ void add_quality_flags(CLI::App& cmd, RenderArgs& args, const RenderOptions& def
                  "and --window; any N > 0 makes --quality reference march the columns finely; not valid with "
                  "truth; default 0 (off)")
       ->type_name("N");
+  cmd.add_flag("--column-march", args.column_march,
+               "With --column-steps N: march each lit sample's own column in N steps, as the reference does, "
+               "instead of reading the column volume (exact at any distance, N density evaluations per lit sample "
+               "every frame; docs/RENDERING.md \"Column volume\"); GPU presets and --window");
   cmd.add_flag("--noise-tiling", args.noise_tiling,
                "Read the cloud noise through its stochastic tiling, so the clouds do not repeat with the "
                "noise's period (4-50 km by cloud type, docs/MORPHOLOGY.md); every quality; the march costs "
@@ -316,6 +321,11 @@ void apply_quality(const RenderArgs& a, RenderOptions& opt) {
   if (given(cmd, "--column-steps")) {
     if (truth) fail("--column-steps", a.column_steps, "not valid with --quality truth (the path tracer follows every path)");
     opt.column_steps = parse_integer("--column-steps", a.column_steps, 0, 64, "steps");
+  }
+  if (a.column_march) {
+    if (!given(cmd, "--column-steps") || opt.column_steps == 0)
+      fail("--column-march", "given", "needs --column-steps N > 0 (the steps of each marched column)");
+    opt.column_march = true;
   }
   if (given(cmd, "--cloud-phase")) {
     const std::optional<model::CloudPhaseModel> m = model::cloud_phase_model_from_name(a.cloud_phase);

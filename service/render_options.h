@@ -50,6 +50,9 @@ struct RenderOptions {
   int column_steps = 0;                          // --column-steps N: RenderQuality::column_steps of a
                                                  // GPU preset and the window; the reference's
                                                  // column_depths if N > 0
+  bool column_march = false;                     // --column-march: with --column-steps N, march
+                                                 // each lit sample's column instead of the
+                                                 // column volume (RenderQuality::column_volume off)
   bool noise_tiling = false;                     // --noise-tiling: RendererConfig::noise_tiling
                                                  // (every quality, truth included)
   model::CloudPhaseModel cloud_phase = model::CloudPhaseModel::kFit;  // --cloud-phase fit|mie

@@ -34,6 +34,33 @@ float light_optical_depth(int li, vec3 p, float alt, vec3 sun, float mu_s, int n
   return tau;
 }
 
+// Without the column volume (column_volume.glsl; RenderQuality::column_steps > 0 with
+// ground_shadow_map off: the map's grid holds the volume): the column's depths (below,
+// above) marched from the point along its own vertical, as the reference's
+// column_optical_depths does. The column from the layer's base
+// to its top gets n steps, shared between the parts below and above alt by their lengths;
+// midpoints, base shape, the weather map value w of the point read once (the line is
+// vertical; up is the local vertical at p, so the altitude along it is alt + s).
+vec2 marched_column_depths(int li, vec3 p, float alt, vec3 up, vec4 w, int n) {
+  float base = frame.layers[li].base_m, top = frame.layers[li].top_m;
+  float len_above = max(top - alt, 0.0), len_below = max(alt - base, 0.0);
+  float H = max(len_above + len_below, 1.0);
+  int n_above = n > 0 ? max(int(ceil(float(n) * len_above / H)), 1) : 0;
+  int n_below = n > 0 ? max(int(ceil(float(n) * len_below / H)), 1) : 0;
+  float d_above = len_above / float(max(n_above, 1)), d_below = len_below / float(max(n_below, 1));
+  vec2 tau = vec2(0.0);
+  float coverage;
+  for (int j = 0; j < n_below; ++j) {
+    float s = -(float(j) + 0.5) * d_below;
+    tau.x += cloud_extinction_in(li, p + up * s, alt + s, DETAIL_NONE, w, coverage) * d_below;
+  }
+  for (int j = 0; j < n_above; ++j) {
+    float s = (float(j) + 0.5) * d_above;
+    tau.y += cloud_extinction_in(li, p + up * s, alt + s, DETAIL_NONE, w, coverage) * d_above;
+  }
+  return tau;
+}
+
 // Optical depth of layer li from a ground point p towards the sun (cloud shadows), in
 // n equal steps through the layer (base shape only).
 float layer_shadow_optical_depth(int li, vec3 p, float ground_alt, vec3 sun, float mu_s, int n) {

@@ -17,6 +17,7 @@ layout(std140, binding = UBO_SHADOW_MAP) uniform ShadowMapUniforms {
   int volume_texels;
   int volume_valid;
   int column_valid;
+  int column_march_steps;
 } shadow;
 
 layout(binding = TEX_GROUND_SHADOW_MAP) uniform sampler2DArray ground_shadow;  // the map (read where map_valid)

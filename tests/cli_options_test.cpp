@@ -117,6 +117,10 @@ TEST_F(CliOptionsTest, RenderDefaults) {
   EXPECT_EQ(render_with({"--column-steps", "4", "--quality", "reference"}).column_steps, 4);
   for (const char* bad : {"-1", "65", "3.5", "x", ""}) expect_rejected({"render", "--column-steps", bad}, "--column-steps");
   expect_rejected({"render", "--column-steps", "3", "--quality", "truth"}, "--column-steps");
+  EXPECT_FALSE(o.column_march);
+  EXPECT_TRUE(render_with({"--column-steps", "8", "--column-march"}).column_march);
+  expect_rejected({"render", "--column-march"}, "--column-march");
+  expect_rejected({"render", "--column-steps", "0", "--column-march"}, "--column-march");
   EXPECT_EQ(o.cloud_phase, model::CloudPhaseModel::kFit);
   EXPECT_EQ(render_with({"--cloud-phase", "mie"}).cloud_phase, model::CloudPhaseModel::kMie);
   EXPECT_EQ(render_with({"--cloud-phase", "mie", "--quality", "truth"}).cloud_phase, model::CloudPhaseModel::kMie);

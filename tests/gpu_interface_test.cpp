@@ -117,7 +117,7 @@ Offsets expected_shadow_map_uniforms() {
           MEMBER(ShadowMapUniforms, map_texels),      MEMBER(ShadowMapUniforms, map_valid),
           MEMBER(ShadowMapUniforms, march_per_pixel), MEMBER(ShadowMapUniforms, volume_levels),
           MEMBER(ShadowMapUniforms, volume_texels),   MEMBER(ShadowMapUniforms, volume_valid),
-          MEMBER(ShadowMapUniforms, column_valid)};
+          MEMBER(ShadowMapUniforms, column_valid),    MEMBER(ShadowMapUniforms, column_march_steps)};
 }
 
 void expect_same_layout(const Offsets& gl, const Offsets& cpp, const char* block) {

@@ -15,9 +15,15 @@ struct RenderQuality {
   // (renderer/ground_shadow_map.h, shaders/column_volume.glsl), built with the ground shadow
   // map by marching each of its columns from the layer's base to its top in this many
   // steps (base shape). 0: the depths of a homogeneous layer of the map's coverage instead
-  // (the layer's nominal extinction times the distances to its top and base). Needs
-  // ground_shadow_map; ignored without it.
+  // (the layer's nominal extinction times the distances to its top and base).
   int column_steps = 0;
+  // Where the column depths come from: the column volume (built with the ground shadow map,
+  // free between rebuilds, but its texels grow with distance: hundreds of metres a few km
+  // away, kilometres from 30 km up), or, if false or without ground_shadow_map, marched from
+  // each lit sample along its own vertical in column_steps steps as the reference does (N
+  // base-shape evaluations per lit sample; at any distance the point's own column;
+  // docs/RENDERING.md "Column volume").
+  bool column_volume = true;
   // Primary steps are uniform in ln(1 + t / t_ref): step length grows with distance t
   // like the pixel footprint. 0 = uniform steps in t (the naive march).
   double step_growth_ref_m = 1000.0;

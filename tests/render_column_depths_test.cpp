@@ -26,15 +26,22 @@ struct Case {
   bool thick;  // columns of ~10 km: 32 steps of 300 m each
 };
 
+// The reference's image of v with its column depths and with a homogeneous layer's.
+struct ReferencePair {
+  FrameImage columns, homogeneous;
+};
+ReferencePair reference_pair(const ViewRequest& v, const weather::Weather& w) {
+  reference::ReferenceSettings columns, homogeneous;
+  columns.column_depths = true;
+  return {reference::render_reference(v, w, columns), reference::render_reference(v, w, homogeneous)};
+}
+
 TEST(ColumnDepths, TheGpuDrawsTheReferencesColumns) {
   for (const Case& c : {Case{"scattered-cumulus", "2026-06-21T05:30Z", 3000.0, -25.0, false},
                         Case{"cumulonimbus", "2026-06-21T10:00Z", 1500.0, 5.0, true}}) {
     const weather::Weather w = *weather::preset(c.preset);
     const ViewRequest v = make_view(47.45, 8.56, c.alt_m, 90.0, c.pitch_deg, c.time, 32, 18, 60.0);
-    reference::ReferenceSettings columns, homogeneous;
-    columns.column_depths = true;
-    const FrameImage ref_columns = reference::render_reference(v, w, columns);
-    const FrameImage ref_homogeneous = reference::render_reference(v, w, homogeneous);
+    const auto [ref_columns, ref_homogeneous] = reference_pair(v, w);
     CloudRenderer& r = shared_renderer();
     r.set_weather(w);
     RenderQuality with = *quality_preset("default"), without = with;
@@ -78,10 +85,7 @@ TEST(ColumnDepths, TheGpuDrawsTheReferencesColumns) {
 TEST(ColumnDepths, MarchedColumnsFollowTheReferenceWhereTheVolumesTexelsAreKilometres) {
   const weather::Weather w = *weather::preset("broken-cumulus");
   const ViewRequest v = make_view(47.45, 8.56, 30000.0, 180.0, -25.0, "2026-06-21T11:30Z", 32, 18, 60.0);
-  reference::ReferenceSettings columns, homogeneous;
-  columns.column_depths = true;
-  const FrameImage ref_columns = reference::render_reference(v, w, columns);
-  const FrameImage ref_homogeneous = reference::render_reference(v, w, homogeneous);
+  const auto [ref_columns, ref_homogeneous] = reference_pair(v, w);
   CloudRenderer& r = shared_renderer();
   r.set_weather(w);
   RenderQuality volume = *quality_preset("default");

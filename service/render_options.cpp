@@ -323,7 +323,7 @@ void apply_quality(const RenderArgs& a, RenderOptions& opt) {
     opt.column_steps = parse_integer("--column-steps", a.column_steps, 0, 64, "steps");
   }
   if (a.column_march) {
-    if (!given(cmd, "--column-steps") || opt.column_steps == 0)
+    if (opt.column_steps == 0)
       fail("--column-march", "given", "needs --column-steps N > 0 (the steps of each marched column)");
     opt.column_march = true;
   }

@@ -40,25 +40,25 @@ float light_optical_depth(int li, vec3 p, float alt, vec3 sun, float mu_s, int n
 // column_optical_depths does. The column from the layer's base
 // to its top gets n steps, shared between the parts below and above alt by their lengths;
 // midpoints, base shape, the weather map value w of the point read once (the line is
-// vertical; up is the local vertical at p, so the altitude along it is alt + s).
+// vertical; up is the local vertical at p, so the altitude along it is alt + s). n = 0
+// marches nothing (llvmpipe runs the caller's untaken branch with its lanes masked).
+float vertical_optical_depth(int li, vec3 p, float alt, vec3 up, vec4 w, float len, int n) {
+  float ds = len / float(max(n, 1));  // signed: up (len > 0) or down (len < 0)
+  float tau = 0.0, coverage;
+  for (int j = 0; j < n; ++j) {
+    float s = (float(j) + 0.5) * ds;
+    tau += cloud_extinction_in(li, p + up * s, alt + s, DETAIL_NONE, w, coverage) * abs(ds);
+  }
+  return tau;
+}
+
 vec2 marched_column_depths(int li, vec3 p, float alt, vec3 up, vec4 w, int n) {
-  float base = frame.layers[li].base_m, top = frame.layers[li].top_m;
-  float len_above = max(top - alt, 0.0), len_below = max(alt - base, 0.0);
+  float len_above = max(frame.layers[li].top_m - alt, 0.0), len_below = max(alt - frame.layers[li].base_m, 0.0);
   float H = max(len_above + len_below, 1.0);
   int n_above = n > 0 ? max(int(ceil(float(n) * len_above / H)), 1) : 0;
   int n_below = n > 0 ? max(int(ceil(float(n) * len_below / H)), 1) : 0;
-  float d_above = len_above / float(max(n_above, 1)), d_below = len_below / float(max(n_below, 1));
-  vec2 tau = vec2(0.0);
-  float coverage;
-  for (int j = 0; j < n_below; ++j) {
-    float s = -(float(j) + 0.5) * d_below;
-    tau.x += cloud_extinction_in(li, p + up * s, alt + s, DETAIL_NONE, w, coverage) * d_below;
-  }
-  for (int j = 0; j < n_above; ++j) {
-    float s = (float(j) + 0.5) * d_above;
-    tau.y += cloud_extinction_in(li, p + up * s, alt + s, DETAIL_NONE, w, coverage) * d_above;
-  }
-  return tau;
+  return vec2(vertical_optical_depth(li, p, alt, up, w, -len_below, n_below),
+              vertical_optical_depth(li, p, alt, up, w, len_above, n_above));
 }
 
 // Optical depth of layer li from a ground point p towards the sun (cloud shadows), in

@@ -259,16 +259,15 @@ RaySample march_ray(ivec2 q, vec3 dir) {
         // the optical depths above and below the point: its own column's (the column volume,
         // or marched from the point: RenderQuality::column_volume), or a homogeneous layer's
         // of the map's coverage
-        // (llvmpipe runs every branch with its lanes masked: the marched column's step count
-        // is 0 unless it is the one used, so its loops cost nothing elsewhere)
-        int marched_steps = shadow.column_valid == 0 ? shadow.column_march_steps : 0;
+        // (llvmpipe runs every branch with its lanes masked: column_march_steps is 0 unless
+        // the march is the one used, so its loops cost nothing elsewhere)
         float tau_above, tau_below;
         if (shadow.column_valid != 0) {
           vec2 below_above = column_volume_depths(li, p, alt);
           tau_below = below_above.x;
           tau_above = below_above.y;
-        } else if (marched_steps > 0) {
-          vec2 below_above = marched_column_depths(li, p, alt, up, w, marched_steps);
+        } else if (shadow.column_march_steps > 0) {
+          vec2 below_above = marched_column_depths(li, p, alt, up, w, shadow.column_march_steps);
           tau_below = below_above.x;
           tau_above = below_above.y;
         } else {

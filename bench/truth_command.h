@@ -208,6 +208,10 @@ inline int run(int argc, char** argv) {
                  "RenderQuality::column_steps of every preset, and the reference's column depths if > 0 "
                  "(the diffuse light's depths from each point's own column); default 0, the presets' own")
       ->check(CLI::Range(0, 64));
+  bool sun_slab_tilt = false;
+  app.add_flag("--sun-slab-tilt", sun_slab_tilt,
+               "every preset and the reference read the sun's diffuse source from the slab tilted towards the sun "
+               "(RenderQuality::sun_slab_tilt, ReferenceSettings::sun_slab_tilt); needs --column-steps");
   bool column_march = false;
   app.add_flag("--column-march", column_march,
                "with --column-steps: every preset marches the column depths from each lit sample instead of "
@@ -228,6 +232,11 @@ inline int run(int argc, char** argv) {
   int w = 0, h = 0;
   if (!bench::parse_frame_size(size, w, h)) {
     std::fprintf(stderr, "cloudbench --truth: --size expects WxH\n");
+    return 2;
+  }
+  if (sun_slab_tilt && column_steps <= 0) {
+    std::fprintf(stderr, "cloudbench --truth: --sun-slab-tilt needs --column-steps N > 0 (the tilt compares the sun's "
+                         "depth with each point's own column)\n");
     return 2;
   }
   const auto set = bench::parse_scene_set(scenes_text);
@@ -251,7 +260,7 @@ inline int run(int argc, char** argv) {
   for (const bench::BenchScene& s : scenes) {
     int scene_spp = 0;
     const bench::CachedImage truth = adaptive_truth(s, dir / "truth", w, h, spp, max_spp, max_collisions, scene_spp);
-    const bench::CachedImage ref = bench::reference_image(s, dir / "ref", w, h, ref_samples, column_steps > 0);
+    const bench::CachedImage ref = bench::reference_image(s, dir / "ref", w, h, ref_samples, column_steps > 0, sun_slab_tilt);
     truth_s += truth.seconds;
     ref_s += ref.seconds;
     truth_spp.push_back(scene_spp);
@@ -270,6 +279,7 @@ inline int run(int argc, char** argv) {
       RenderQuality q = *quality_preset(name);
       if (column_steps > 0) q.column_steps = column_steps;
       if (column_march) q.column_volume = false;
+      if (sun_slab_tilt) q.sun_slab_tilt = true;
       ViewRequest v = s.view;
       v.reset_history = true;
       FrameImage last;
@@ -309,7 +319,7 @@ inline int run(int argc, char** argv) {
   md << "# cloudbench --truth report\n\nCommand: `cloudbench --truth --scenes " << scenes_text << " --size " << size
      << " --spp " << spp << " --max-spp " << max_spp << " --ref-samples " << ref_samples << " --max-collisions "
      << max_collisions << (column_steps > 0 ? " --column-steps " + std::to_string(column_steps) : std::string())
-     << (column_march ? " --column-march" : "") << "`  \n"
+     << (column_march ? " --column-march" : "") << (sun_slab_tilt ? " --sun-slab-tilt" : "") << "`  \n"
      << scenes.size() << " scenes at " << w << "x" << h << "; truth " << spp << " paths per pixel, more (up to "
      << max_spp << ") where a scene's first batch is too noisy (per scene below) ("
      << num("%.0f", truth_s) << " s of renders, 0 = cached), reference " << ref_samples << "x" << ref_samples

@@ -91,7 +91,7 @@ struct FrameUniforms {
   float view_far_m;               // along camera_forward (cloud_clip); far 1e30 = no plane
   float aerosol_scale;             // factor on the aerosol's scattering and extinction (FrameContext)
   int column_steps;                // RenderQuality::column_steps
-  float pad2 = 0.0f;               // std140 aligns the next member to a vec4
+  int sun_slab_tilt;               // RenderQuality::sun_slab_tilt, with column_steps > 0
   glm::vec4 noise_quantiles[4];   // base-noise value below which a fraction i/15 lies, i = 0..15
   glm::vec4 weather_pole_south;   // weather map value at the south pole (row mean)
   glm::vec4 weather_pole_north;   // ... at the north pole

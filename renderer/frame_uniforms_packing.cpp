@@ -82,6 +82,7 @@ FrameUniforms pack_frame_uniforms(const FrameContext& c, const RenderQuality& qu
   u.light_steps = quality.light_steps;
   u.ground_shadow_steps = quality.ground_shadow_steps;
   u.column_steps = std::max(0, quality.column_steps);
+  u.sun_slab_tilt = quality.sun_slab_tilt && quality.column_steps > 0 ? 1 : 0;  // needs the columns' depths
   u.step_growth_ref_m = static_cast<float>(quality.step_growth_ref_m);
   u.long_step_factor = static_cast<float>(std::max(1, quality.long_step_factor));
   u.level_of_detail = quality.level_of_detail ? 1 : 0;

@@ -14,7 +14,7 @@ constexpr int kOrder4[16][2] = {{0, 0}, {2, 2}, {2, 0}, {0, 2}, {1, 1}, {3, 3}, 
 
 bool same_march(const RenderQuality& a, const RenderQuality& b) {
   return a.primary_steps == b.primary_steps && a.light_steps == b.light_steps && a.column_steps == b.column_steps &&
-         a.column_volume == b.column_volume &&
+         a.column_volume == b.column_volume && a.sun_slab_tilt == b.sun_slab_tilt &&
          a.ground_shadow_steps == b.ground_shadow_steps &&
          a.step_growth_ref_m == b.step_growth_ref_m && a.temporal_stride == b.temporal_stride &&
          a.cloud_resolution_divisor == b.cloud_resolution_divisor && a.long_step_factor == b.long_step_factor &&

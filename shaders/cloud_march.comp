@@ -236,9 +236,14 @@ RaySample march_ray(ivec2 q, vec3 dir) {
         // direct sun: the peak beam (single scattering and the light scattered only
         // through the diffraction peak) over the light-march optical depth
         vec3 L_sun = vec3(0.0);
+        float tau = 0.0, marched = 0.0;  // the sun's optical depth over the marched length (m)
         if (max(T_atm.r, max(T_atm.g, T_atm.b)) > 0.0) {
-          float tau = shadow.volume_valid != 0 ? light_volume_optical_depth(li, p, alt)
-                                         : light_optical_depth(li, p, alt, sun, mu_s, light_steps_at(t, L), w, light_cut);
+          if (shadow.volume_valid != 0) {
+            tau = light_volume_optical_depth(li, p, alt);
+            marched = light_march_length(li, alt, mu_s);
+          } else {
+            tau = light_optical_depth(li, p, alt, sun, mu_s, light_steps_at(t, L), w, light_cut, marched);
+          }
           vec3 s_sum = vec3(peak_beam_phase(cos_view_sun, tau, L.g_hg, L.g_d, L.draine_alpha, L.w_d));
 #ifdef CLOUDSVC_MIE_PHASE
           // single scattering with the layer's Mie table per wavelength instead of the fit
@@ -251,11 +256,6 @@ RaySample march_ray(ivec2 q, vec3 dir) {
           ground_albedo = ground_albedo_at(from_shell_centre(p));
           t_ground_irradiance = t;
         }
-        // the scattered light travels along -dir: its azimuth from the sun's about up
-        float w_up = -dot(dir, up);
-        vec3 sun_h = sun - mu_s * up, w_h = -dir - w_up * up;
-        float hh = dot(sun_h, sun_h) * dot(w_h, w_h);
-        float cos_phi = hh > 1e-12 ? dot(sun_h, w_h) * inversesqrt(hh) : 1.0;
         // the optical depths above and below the point: its own column's (the column volume,
         // or marched from the point: RenderQuality::column_volume), or a homogeneous layer's
         // of the map's coverage
@@ -275,8 +275,14 @@ RaySample march_ray(ivec2 q, vec3 dir) {
           tau_above = sigma_nominal * max(L.top_m - alt, 0.0);
           tau_below = sigma_nominal * max(alt - L.base_m, 0.0);
         }
-        vec3 L_diffuse = diffuse_inscatter(L, alt, tau_above, tau_below, mu_s, T_atm, coverage, E_sun, ground_sun, ground_sky,
-                                           ground_albedo, w_up, cos_phi, above);
+        // the sun's slab: tilted towards the sun (RenderQuality::sun_slab_tilt) or the
+        // column's horizontal one; the scattered light travels along -dir
+        SunSlab sun_slab = frame.sun_slab_tilt != 0
+                               ? tilted_sun_slab(vec2(tau_below, tau_above), tau,
+                                                 sun_window(marched, mu_s, L.top_m - alt), up, sun, -dir)
+                               : vertical_sun_slab(vec2(tau_below, tau_above), up, sun, -dir);
+        vec3 L_diffuse = diffuse_inscatter(L, alt, tau_above, tau_below, sun_slab, mu_s, T_atm, coverage, E_sun, ground_sun,
+                                           ground_sky, ground_albedo, -dot(dir, up), above);
         float absorbed = one_minus_exp_neg(sigma * dt);  // albedo 1: scattered fraction
         C += T * absorbed * (L_sun + L_diffuse);
         depth_acc += t * T * absorbed;

@@ -68,6 +68,7 @@ layout(std140, binding = UBO_FRAME) uniform FrameUniforms {
   float view_far_m;
   float aerosol_scale;  // on MIE_SCATTERING and MIE_EXTINCTION (the weather's visibility)
   int column_steps;     // steps of each column of the column volume (column_volume.comp)
+  int sun_slab_tilt;    // 1: the sun's diffuse source from the tilted slab (tilted_sun_slab)
   vec4 noise_quantiles[4];
   vec4 weather_pole_south;
   vec4 weather_pole_north;

@@ -29,7 +29,9 @@ void main() {
   vec3 p;
   if (point_at_offset(d, alt, p)) {
     float mu_s = dot(up_at(p, frame.shell_radius_m, frame.camera_altitude_m), frame.sun_direction);
-    tau = light_optical_depth(li, p, alt, frame.sun_direction, mu_s, frame.light_steps, layer_weather_at(li, p), 1e30);  // no cut-off: the volume is interpolated
+    float marched;  // the whole path: no cut-off, the volume is interpolated
+    tau = light_optical_depth(li, p, alt, frame.sun_direction, mu_s, frame.light_steps, layer_weather_at(li, p), 1e30,
+                              marched);
   }
   if (frame.count_density_evaluations != 0) atomicAdd(counters.density_evals, g_density_evals);
   imageStore(volume_out, id, vec4(tau));

@@ -76,6 +76,7 @@ Offsets expected_frame_uniforms() {
       MEMBER(FrameUniforms, view_far_m),
       MEMBER(FrameUniforms, aerosol_scale),
       MEMBER(FrameUniforms, column_steps),
+      MEMBER(FrameUniforms, sun_slab_tilt),
       ARRAY_MEMBER(FrameUniforms, noise_quantiles), MEMBER(FrameUniforms, weather_pole_south),
       MEMBER(FrameUniforms, weather_pole_north), MEMBER(FrameUniforms, layer_coverage_pole_south),
       MEMBER(FrameUniforms, layer_coverage_pole_north), MEMBER(FrameUniforms, ground_albedo),

@@ -265,21 +265,106 @@ TEST(ReferenceClouds, DiffuseInscatterByHand) {
   const double table = model::ms_source_table().lookup(10.0, 10.0, mu_s, w_up, std::acos(cos_phi) * 180.0 / kPi);
   EXPECT_GT(table, 0.0);
   const glm::dvec3 got =
-      diffuse_inscatter(L, column, mu_s, coverage, e_sun, t_atm, e_sky, t_ground, e_sky_ground, albedo, w_up, cos_phi);
+      diffuse_inscatter(L, column, vertical_sun_slab(column, mu_s, w_up, cos_phi), mu_s, coverage, e_sun, t_atm, e_sky,
+                        t_ground, e_sky_ground, albedo, w_up);
   EXPECT_NEAR(got.g, 2.0 * 0.8 * 0.5 * table + diffuse, 1e-12);
   // Looking up into the cloud (light travelling down) is brighter than looking down onto
   // it from its middle: more of the sun's light travels down there.
   const glm::dvec3 from_below =
-      diffuse_inscatter(L, column, mu_s, coverage, e_sun, t_atm, e_sky, t_ground, e_sky_ground, albedo, -1.0, 1.0);
+      diffuse_inscatter(L, column, vertical_sun_slab(column, mu_s, -1.0, 1.0), mu_s, coverage, e_sun, t_atm, e_sky,
+                        t_ground, e_sky_ground, albedo, -1.0);
   const glm::dvec3 from_above =
-      diffuse_inscatter(L, column, mu_s, coverage, e_sun, t_atm, e_sky, t_ground, e_sky_ground, albedo, 1.0, 1.0);
+      diffuse_inscatter(L, column, vertical_sun_slab(column, mu_s, 1.0, 1.0), mu_s, coverage, e_sun, t_atm, e_sky,
+                        t_ground, e_sky_ground, albedo, 1.0);
   EXPECT_GT(from_below.g, from_above.g);
   EXPECT_GE(from_above.g, 0.0);
   // Sun below the horizon: no sun term, sky light only (isotropic view, w_up = 0).
-  const glm::dvec3 night = diffuse_inscatter(L, column, -0.1, coverage, e_sun, glm::dvec3(0.0), e_sky, glm::dvec3(0.0),
-                                             e_sky_ground, albedo, 0.0, 1.0);
+  const glm::dvec3 night = diffuse_inscatter(L, column, vertical_sun_slab(column, -0.1, 0.0, 1.0), -0.1, coverage, e_sun,
+                                             glm::dvec3(0.0), e_sky, glm::dvec3(0.0), e_sky_ground, albedo, 0.0);
   const double E_up_night = 0.1 * gain * 2.0 * 0.12 * (0.6 + 0.4 * T50);
   EXPECT_NEAR(night.r, (E_sky + E_up_night) * iso.lookup(10.0, 10.0, 1.0, 0.0, 0.0), 1e-12);
+}
+
+// The sun's slab tilted towards the sun (tilted_sun_slab): the horizontal slab wherever the
+// sun's depth is that of a horizontally homogeneous layer, the sun's own face where the sun's
+// path leaves the cloud at once, and never shallower than the column where a neighbour
+// shades the point.
+TEST(ReferenceClouds, TheSunsSlabTiltsOnlyWhereTheSunsPathLeavesTheCloudEarly) {
+  const glm::dvec3 up(0.0, 0.0, 1.0);
+  const double mu_s = 0.2;  // sun 11.5 deg above the horizon, towards +x
+  const glm::dvec3 sun(std::sqrt(1.0 - mu_s * mu_s), 0.0, mu_s);
+  const glm::dvec3 w = glm::normalize(glm::dvec3(-0.3, 0.5, 0.6));  // scattered light, towards the camera
+  const ColumnDepths column{12.0, 30.0};
+  const SunSlab flat = vertical_sun_slab(column, up, sun, w);
+  EXPECT_DOUBLE_EQ(flat.mu, mu_s);
+  EXPECT_DOUBLE_EQ(flat.above, 12.0);
+  EXPECT_DOUBLE_EQ(flat.below, 30.0);
+  EXPECT_DOUBLE_EQ(flat.w_n, glm::dot(w, up));
+  // A homogeneous layer: the sun's path to the top is tau_a / mu_s deep; over half of it (a
+  // march stopped at its reach), half as deep with window 0.5.
+  for (const double window : {1.0, 0.5}) {
+    const SunSlab s = tilted_sun_slab(column, window * 12.0 / mu_s, window, up, sun, w);
+    EXPECT_NEAR(s.mu, mu_s, 1e-12) << window;
+    EXPECT_NEAR(s.above, 12.0, 1e-12) << window;
+    EXPECT_NEAR(s.below, 30.0, 1e-12) << window;
+    EXPECT_NEAR(s.w_n, flat.w_n, 1e-12) << window;
+    EXPECT_NEAR(s.cos_phi, flat.cos_phi, 1e-12) << window;
+  }
+  // The sun's path leaves the cloud after an optical depth of 1 (through its side): the face
+  // looks at the sun; the point is 1 deep, the column's cloud lies behind it.
+  const SunSlab side = tilted_sun_slab(column, 1.0, 1.0, up, sun, w);
+  EXPECT_DOUBLE_EQ(side.mu, 1.0);
+  EXPECT_NEAR(side.above, 1.0, 1e-12);
+  EXPECT_NEAR(side.below, 30.0 + 12.0 - 1.0, 1e-12);
+  EXPECT_NEAR(side.w_n, glm::dot(w, sun), 1e-12);  // the normal is the sun's direction
+  // Between the two: the cosine grows as the path gets shallower, and the point's depth along
+  // the normal stays that of its column.
+  const SunSlab half = tilted_sun_slab(column, 0.5 * 12.0 / mu_s, 1.0, up, sun, w);
+  EXPECT_NEAR(half.mu, 2.0 * mu_s, 1e-12);
+  EXPECT_NEAR(half.above, 12.0, 1e-12);
+  // A neighbour shades the point (twice the horizontal slab's depth): the slab stays
+  // horizontal but as deep as the sun's path says.
+  const SunSlab shaded = tilted_sun_slab(column, 2.0 * 12.0 / mu_s, 1.0, up, sun, w);
+  EXPECT_NEAR(shaded.mu, mu_s, 1e-12);
+  EXPECT_NEAR(shaded.above, 24.0, 1e-12);
+  EXPECT_NEAR(shaded.below, 30.0, 1e-12);
+  // No sun, or the sun overhead: the horizontal slab whatever the depths.
+  const glm::dvec3 below_horizon = glm::normalize(glm::dvec3(1.0, 0.0, -0.05));
+  EXPECT_DOUBLE_EQ(tilted_sun_slab(column, 0.0, 1.0, up, below_horizon, w).above, 12.0);
+  EXPECT_DOUBLE_EQ(tilted_sun_slab(column, 0.0, 1.0, up, up, w).mu, 1.0);
+  EXPECT_DOUBLE_EQ(tilted_sun_slab(column, 0.0, 1.0, up, up, w).above, 12.0);
+  // The window: the vertical span of the marched path over the column above, at most 1.
+  EXPECT_DOUBLE_EQ(sun_window(1000.0, 0.2, 400.0), 0.5);
+  EXPECT_DOUBLE_EQ(sun_window(4000.0, 0.2, 400.0), 1.0);
+  EXPECT_DOUBLE_EQ(sun_window(0.0, 0.2, 400.0), 0.0);
+  EXPECT_DOUBLE_EQ(sun_window(100.0, 0.2, 0.0), 1.0);  // at the top
+}
+
+// The sunlit face of a cloud under a low sun receives the sun's flux at a cosine near 1: its
+// diffuse light is several times the horizontal slab's there.
+TEST(ReferenceClouds, ALowSunLightsTheFaceThatLooksAtIt) {
+  ReferenceLayer L;
+  L.phase = model::jdd_params(20.0);
+  const glm::dvec3 up(0.0, 0.0, 1.0);
+  const double mu_s = 0.15;
+  const glm::dvec3 sun(std::sqrt(1.0 - mu_s * mu_s), 0.0, mu_s);
+  const glm::dvec3 w = glm::normalize(glm::dvec3(1.0, 0.2, 0.3));  // seen from the sun's side
+  const ColumnDepths column{20.0, 20.0};
+  const glm::dvec3 e_sun(1.0), t_atm(1.0), zero(0.0);
+  const auto sun_part = [&](const SunSlab& slab) {
+    return diffuse_inscatter(L, column, slab, mu_s, 1.0, e_sun, t_atm, zero, zero, zero, zero, glm::dot(w, up)).g;
+  };
+  const double flat = sun_part(vertical_sun_slab(column, up, sun, w));
+  const double face = sun_part(tilted_sun_slab(column, 0.5, 1.0, up, sun, w));
+  std::printf("diffuse light 0.5 deep behind the sunlit face: %.4f, the horizontal slab's at 20 deep: %.4f\n", face,
+              flat);
+  EXPECT_GT(flat, 0.0);
+  EXPECT_GT(face, 3.0 * flat);
+  // ... and the horizontal slab's own top, 0.5 deep under the same low sun, is dimmer than
+  // the face.
+  const ColumnDepths top{0.5, 39.5};
+  const SunSlab top_slab = vertical_sun_slab(top, up, sun, w);
+  EXPECT_GT(face, diffuse_inscatter(L, top, top_slab, mu_s, 1.0, e_sun, t_atm, zero, zero, zero, zero, glm::dot(w, up)).g);
 }
 
 TEST(ReferenceClouds, LayerStepScale) {

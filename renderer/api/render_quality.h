@@ -24,6 +24,13 @@ struct RenderQuality {
   // base-shape evaluations per lit sample; at any distance the point's own column;
   // docs/RENDERING.md "Column volume").
   bool column_volume = true;
+  // The sun's diffuse source from a slab tilted towards the sun (side illumination of 3-D
+  // clouds; tilted_sun_slab in shaders/cloud_lighting.glsl, docs/RENDERING.md "Light"), its
+  // depth from the light march; false: the horizontal slab of the column. Only with
+  // column_steps > 0: the tilt compares the sun's depth with the point's own column, and a
+  // homogeneous layer's depths are not those of the cloud the light march crosses. Off in
+  // every preset (docs/ACCURACY.md section 0 has the measurements).
+  bool sun_slab_tilt = false;
   // Primary steps are uniform in ln(1 + t / t_ref): step length grows with distance t
   // like the pixel footprint. 0 = uniform steps in t (the naive march).
   double step_growth_ref_m = 1000.0;

@@ -65,7 +65,9 @@ namespace {
 
 // diffuse_inscatter (cloud_lighting.glsl) with T_atm = 1, coverage 1, density scale 1,
 // E_sun = 1, E_sky = 0 (sky_irradiance) and ground albedo 0: the sun's part alone,
-// F_sun times the source table (J_sun).
+// F_sun times the source table (J_sun). The sun's slab (tilted_sun_slab) is the horizontal
+// one here: in a homogeneous slab the light march's depth over its window is w tau_a / mu_s,
+// which leaves mu' = mu_s and the column's depths.
 // sim: the similarity scale of the slab's phase function (CloudLayerGpu::ms_similarity).
 double diffuse_inscatter_scaled(const SlabSpec& slab, double z, const SlabRendererModelOptions& o, const glm::dvec3& w,
                                 double sim) {

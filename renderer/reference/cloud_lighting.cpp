@@ -31,7 +31,7 @@ double layer_step_scale(const ReferenceLayer& layer) {
 }
 
 double light_optical_depth(const CloudField& field, int li, const glm::dvec3& p, double alt, const glm::dvec3& sun,
-                           double mu_s, double step_m, double tau_stop, std::uint64_t& evals) {
+                           double mu_s, double step_m, double tau_stop, std::uint64_t& evals, double* marched_m) {
   const ShellFrame& s = field.scene().shell;
   const ReferenceLayer& L = field.scene().layers[static_cast<std::size_t>(li)];
   double len = 0.0;
@@ -39,15 +39,55 @@ double light_optical_depth(const CloudField& field, int li, const glm::dvec3& p,
   if (const auto base = sphere_crossings(s.radius_m, alt, L.base_m, mu_s); base && base->t0 > 0.0)
     len = std::min(len, base->t0);
   len = std::min(len, kLightMarchCap_m);
+  if (marched_m) *marched_m = 0.0;
   if (len <= 0.0) return 0.0;
   const int n = std::max(1, static_cast<int>(std::ceil(len / step_m)));
   const double dt = len / n;
   double tau = 0.0;
-  for (int j = 0; j < n && tau < tau_stop; ++j) {
+  int j = 0;
+  for (; j < n && tau < tau_stop; ++j) {
     const glm::dvec3 x = p + sun * ((j + 0.5) * dt);
     tau += field.sample(li, x, s.altitude_of(x), false, evals).sigma_t * dt;
   }
+  if (marched_m) *marched_m = j * dt;
   return tau;
+}
+
+SunSlab vertical_sun_slab(const ColumnDepths& column, double mu_s, double w_up, double cos_phi) {
+  return {mu_s, column.above, column.below, w_up, cos_phi};
+}
+
+SunSlab vertical_sun_slab(const ColumnDepths& column, const glm::dvec3& up, const glm::dvec3& sun, const glm::dvec3& w) {
+  const double mu_s = glm::dot(up, sun), w_up = glm::dot(w, up);
+  const glm::dvec3 sun_h = sun - mu_s * up, w_h = w - w_up * up;
+  const double hh = glm::dot(sun_h, sun_h) * glm::dot(w_h, w_h);
+  return vertical_sun_slab(column, mu_s, w_up, hh > 1e-24 ? glm::dot(sun_h, w_h) / std::sqrt(hh) : 1.0);
+}
+
+double sun_window(double marched_m, double mu_s, double to_top_m) {
+  if (!(to_top_m > 0.0)) return 1.0;
+  return std::clamp(marched_m * std::max(mu_s, 0.0) / to_top_m, 0.0, 1.0);
+}
+
+SunSlab tilted_sun_slab(const ColumnDepths& column, double tau_sun, double window, const glm::dvec3& up,
+                        const glm::dvec3& sun, const glm::dvec3& w) {
+  const double mu_s = glm::dot(up, sun);
+  const double s_h = std::sqrt(std::max(1.0 - mu_s * mu_s, 0.0));  // the sun's component across the vertical
+  if (!(mu_s > 0.0) || s_h < 1e-9) return vertical_sun_slab(column, up, sun, w);  // no sun, or overhead
+  const double f = std::clamp(window, 0.0, 1.0);
+  const double mu = std::clamp(f * column.above / std::max(tau_sun, 1e-30), mu_s, 1.0);
+  SunSlab slab;
+  slab.mu = mu;
+  slab.above = mu * tau_sun + (1.0 - f) * column.above;
+  slab.below = column.below + std::max(column.above - slab.above, 0.0);
+  // the normal: in the plane of up and sun, at cosine mu from the sun (mu = mu_s: up)
+  const glm::dvec3 towards_up = (up - mu_s * sun) / s_h;
+  const glm::dvec3 n = mu * sun + std::sqrt(std::max(1.0 - mu * mu, 0.0)) * towards_up;
+  slab.w_n = glm::dot(w, n);
+  const glm::dvec3 sun_t = sun - mu * n, w_t = w - slab.w_n * n;
+  const double tt = glm::dot(sun_t, sun_t) * glm::dot(w_t, w_t);
+  slab.cos_phi = tt > 1e-24 ? glm::dot(sun_t, w_t) / std::sqrt(tt) : 1.0;
+  return slab;
 }
 
 ColumnDepths column_optical_depths(const CloudField& field, int li, const glm::dvec3& p, double alt, double step_m,
@@ -142,19 +182,20 @@ glm::dvec3 ground_cloud_gain(const glm::dvec3& albedo, double tau) {
   return 1.0 / (1.0 - albedo * (1.0 - slab_diffuse_transmittance(tau)));
 }
 
-glm::dvec3 diffuse_inscatter(const ReferenceLayer& L, const ColumnDepths& column, double mu_s, double coverage,
-                             const glm::dvec3& e_sun, const glm::dvec3& t_atm, const glm::dvec3& e_sky_here,
-                             const glm::dvec3& t_atm_ground, const glm::dvec3& e_sky_ground,
-                             const glm::dvec3& ground_albedo, double w_up, double cos_phi,
+glm::dvec3 diffuse_inscatter(const ReferenceLayer& L, const ColumnDepths& column, const SunSlab& sun_slab, double mu_s,
+                             double coverage, const glm::dvec3& e_sun, const glm::dvec3& t_atm,
+                             const glm::dvec3& e_sky_here, const glm::dvec3& t_atm_ground,
+                             const glm::dvec3& e_sky_ground, const glm::dvec3& ground_albedo, double w_up,
                              const LightFromAbove& above) {
   const double sim = model::ms_similarity_scale(L.phase);
   const double tau_above = column.above, tau_below = column.below;
   const double mu_pos = std::max(mu_s, 0.0);
   glm::dvec3 J_sun(0.0);
   if (mu_pos > 0.0) {
-    const double phi_deg = std::acos(std::clamp(cos_phi, -1.0, 1.0)) * 180.0 / std::numbers::pi;
+    const double phi_deg = std::acos(std::clamp(sun_slab.cos_phi, -1.0, 1.0)) * 180.0 / std::numbers::pi;
     J_sun = e_sun * t_atm *
-            (above.direct * mu_pos * model::ms_source_table().lookup(sim * tau_above, sim * tau_below, mu_pos, w_up, phi_deg));
+            (above.direct * sun_slab.mu *
+             model::ms_source_table().lookup(sim * sun_slab.above, sim * sun_slab.below, sun_slab.mu, sun_slab.w_n, phi_deg));
   }
   // diffuse light onto the layer's top: the sky's, and the sun's the layers above scatter
   const glm::dvec3 E_sky = e_sun * (e_sky_here * above.sky + t_atm * (mu_pos * above.sun_diffuse));

@@ -34,8 +34,10 @@ double layer_step_scale(const ReferenceLayer& layer);
 // [0, min(exit through the top, entry through the base, 4 km)], without detail erosion
 // (the model's light march uses the base shape only). Stops early once the depth exceeds
 // tau_stop (beyond it the peak beam's e^{-w_D tau} is negligible).
+// marched_m (if given) receives the length marched: the whole path, or up to the early stop.
 double light_optical_depth(const CloudField& field, int li, const glm::dvec3& p, double alt, const glm::dvec3& sun,
-                           double mu_s, double step_m, double tau_stop, std::uint64_t& evals);
+                           double mu_s, double step_m, double tau_stop, std::uint64_t& evals,
+                           double* marched_m = nullptr);
 
 // The optical depths above and below a point through its own vertical column of layer li,
 // to the layer's top and base: the independent column approximation (Cahalan et al. 1994,
@@ -51,6 +53,43 @@ ColumnDepths column_optical_depths(const CloudField& field, int li, const glm::d
 // sigma_max * density_scale * coverage times the distances to its top and base (the GPU's
 // RenderQuality::column_steps = 0).
 ColumnDepths nominal_column_depths(const ReferenceLayer& L, double alt, double coverage);
+
+// The slab the sun's diffuse source is read from (model::ms_source_table), tilted towards the
+// sun: side illumination of 3-D clouds. A plane-parallel slab takes the sun through its
+// horizontal top at the sun's zenith cosine mu_s; near the sunlit side of a cumulus under a
+// low sun the light arrives through a face that looks towards the sun, at a cosine closer
+// to 1 and much less deep. As in the tilted independent column approximation (Varnai &
+// Davies 1999, J. Atmos. Sci. 56, 4206; Wapler & Mayer 2008, J. Appl. Meteor. Climatol. 47,
+// 3061) the sun's depth is read along the sun's own path (the light march); the slab's
+// normal is turned towards the sun until that path crosses it at the depth the point's
+// vertical column gives:
+//   mu' = clamp(w tau_a / tau_sun, mu_s, 1),
+// tau_sun the light march's depth over the part of the path it marched, w the fraction of
+// the column above the point that part spans vertically (sun_window: 1 unless the march
+// stopped at its reach or cut-off; the rest of the column keeps its vertical depth). In a
+// horizontally homogeneous slab tau_sun = w tau_a / mu_s and the slab is the horizontal one
+// (mu' = mu_s) exactly; with the sun's path leaving the cloud through a side, mu' -> 1.
+// The slab's depths: above = mu' tau_sun + (1 - w) tau_a, below = tau_b + max(tau_a -
+// above, 0) (the cloud the sun's path does not cross stays behind the point). The scattered
+// light's direction is measured from the tilted normal (w_n, cos_phi about it).
+struct SunSlab {
+  double mu = 1.0;                  // cosine between the slab's normal and the sun
+  double above = 0.0, below = 0.0;  // optical depths from the point to the sunlit face, and beyond it
+  double w_n = 1.0;                 // cosine between the scattered light's direction and the normal
+  double cos_phi = 1.0;             // azimuth of that direction from the sun's, about the normal
+};
+// The horizontal slab of the column (no tilt): mu_s, the column's depths, w_up, cos_phi;
+// or from the local vertical up, the unit sun direction and the scattered light's w.
+SunSlab vertical_sun_slab(const ColumnDepths& column, double mu_s, double w_up, double cos_phi);
+SunSlab vertical_sun_slab(const ColumnDepths& column, const glm::dvec3& up, const glm::dvec3& sun, const glm::dvec3& w);
+// up: local vertical, sun: unit sun direction, w: unit direction of the scattered light
+// (towards the camera); tau_sun, window: light_optical_depth and sun_window. No sun
+// (mu_s <= 0) or the sun overhead: the vertical slab.
+SunSlab tilted_sun_slab(const ColumnDepths& column, double tau_sun, double window, const glm::dvec3& up,
+                        const glm::dvec3& sun, const glm::dvec3& w);
+// The fraction of the column above a point (to_top_m below the layer's top) that a light
+// march of marched_m towards a sun of zenith cosine mu_s spans vertically, at most 1.
+double sun_window(double marched_m, double mu_s, double to_top_m);
 
 // Optical depth of all layers from a ground point (local p, altitude ground_alt) towards
 // the sun, midpoint rule with each layer's step (light_step_m * layer_step_scale) between
@@ -103,9 +142,10 @@ glm::dvec3 ground_cloud_gain(const glm::dvec3& albedo, double tau);
 // Diffuse in-scattered radiance per unit scattering at altitude alt inside layer L
 // (docs/RENDERING.md; diffuse_inscatter in shaders/cloud_lighting.glsl) at a point whose
 // column has the optical depths `column` above and below it (column_optical_depths).
-// The sun's part: model::ms_source_table() at those depths (scaled by
-// model::ms_similarity_scale) times F_sun = e_sun t_atm mu_s, for the scattered light's
-// zenith cosine w_up and azimuth from the sun's (cos_phi). The sky's and the ground's
+// The sun's part: model::ms_source_table() at the depths of the sun's slab (scaled by
+// model::ms_similarity_scale; tilted_sun_slab, or vertical_sun_slab) times the solar flux
+// through its face F_sun = e_sun t_atm mu', for the scattered light's cosine and azimuth
+// about the slab's normal. The sky's and the ground's
 // parts: model::ms_diffuse_incidence_table() (the Monte Carlo source of diffuse light entering
 // through the top), J = E_sky J_dif(tau_a, tau_b, w_up) + E_up J_dif(tau_b, tau_a, -w_up),
 // the ground's light entering through the base (the table turned upside down); E_up = a E_g
@@ -119,10 +159,11 @@ glm::dvec3 ground_cloud_gain(const glm::dvec3& albedo, double tau);
 // Inputs per unit solar irradiance except e_sun: t_atm = sun transmittance at the point,
 // e_sky_here = sky irradiance at the point, t_atm_ground / e_sky_ground at ground level
 // for the same mu_s; ground_albedo rgb.
-glm::dvec3 diffuse_inscatter(const ReferenceLayer& L, const ColumnDepths& column, double mu_s, double coverage,
-                             const glm::dvec3& e_sun, const glm::dvec3& t_atm, const glm::dvec3& e_sky_here,
-                             const glm::dvec3& t_atm_ground, const glm::dvec3& e_sky_ground,
-                             const glm::dvec3& ground_albedo, double w_up, double cos_phi,
+// w_up: the scattered light's zenith cosine (for the sky's and the ground's parts).
+glm::dvec3 diffuse_inscatter(const ReferenceLayer& L, const ColumnDepths& column, const SunSlab& sun_slab, double mu_s,
+                             double coverage, const glm::dvec3& e_sun, const glm::dvec3& t_atm,
+                             const glm::dvec3& e_sky_here, const glm::dvec3& t_atm_ground,
+                             const glm::dvec3& e_sky_ground, const glm::dvec3& ground_albedo, double w_up,
                              const LightFromAbove& above = {});
 
 }  // namespace cloudsvc::reference

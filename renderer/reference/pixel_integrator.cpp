@@ -80,24 +80,25 @@ glm::dvec3 PixelIntegrator::cloud_inscatter(int li, const glm::dvec3& p, double 
                          layer_diffuse_reflectance(L, coverage));
   glm::dvec3 sun_light(0.0);
   const double step = settings_.light_step_m * layer_step_scale(L);
+  double tau_sun = 0.0, marched_m = 0.0;
   if (std::max({t_atm.r, t_atm.g, t_atm.b}) > 0.0) {
-    const double tau = light_optical_depth(field_, li, p, alt, sun, mu_s, step, tau_stop_, evals);
-    sun_light = e_sun_ * t_atm * (above.direct * sun_phase(L.phase, L.mie_phase.get(), cos_view_sun, tau));
+    tau_sun = light_optical_depth(field_, li, p, alt, sun, mu_s, step, tau_stop_, evals, &marched_m);
+    sun_light = e_sun_ * t_atm * (above.direct * sun_phase(L.phase, L.mie_phase.get(), cos_view_sun, tau_sun));
   }
   const double ground_alt = s.ground_alt_m;
-  // the scattered light travels along -dir: its zenith cosine and azimuth from the sun's
+  // the scattered light travels along -dir
   const glm::dvec3 up = s.up_at(p);
-  const double w_up = -glm::dot(dir, up);
-  const glm::dvec3 sun_h = sun - mu_s * up, w_h = -dir - w_up * up;
-  const double hh = glm::dot(sun_h, sun_h) * glm::dot(w_h, w_h);
-  const double cos_phi = hh > 1e-24 ? glm::dot(sun_h, w_h) / std::sqrt(hh) : 1.0;
+  const ColumnDepths column = settings_.column_depths ? column_optical_depths(field_, li, p, alt, step, evals)
+                                                      : nominal_column_depths(L, alt, coverage);
+  // the sun's slab: tilted towards the sun (needs the point's own column), or the column's
+  // horizontal one (t_atm = 0 leaves the sun's source 0 whatever its slab)
+  const SunSlab sun_slab = settings_.sun_slab_tilt && settings_.column_depths
+                               ? tilted_sun_slab(column, tau_sun, sun_window(marched_m, mu_s, L.top_m - alt), up, sun, -dir)
+                               : vertical_sun_slab(column, up, sun, -dir);
   const glm::dvec3 diffuse =
-      diffuse_inscatter(L,
-                        settings_.column_depths ? column_optical_depths(field_, li, p, alt, step, evals)
-                                                : nominal_column_depths(L, alt, coverage),
-                        mu_s, coverage, e_sun_, t_atm, tables_.sky_irradiance(alt, mu_s),
+      diffuse_inscatter(L, column, sun_slab, mu_s, coverage, e_sun_, t_atm, tables_.sky_irradiance(alt, mu_s),
                         sun_transmittance(ground_alt, mu_s), tables_.sky_irradiance(ground_alt, mu_s), ground_albedo_,
-                        w_up, cos_phi, above);
+                        -glm::dot(dir, up), above);
   return sun_light + diffuse;
 }
 

@@ -62,6 +62,10 @@ struct ReferenceSettings {
   // The diffuse light's depths from the point's own column (column_optical_depths, the GPU's
   // RenderQuality::column_steps > 0) instead of a homogeneous layer's of the map's coverage.
   bool column_depths = false;
+  // The sun's diffuse source from a slab tilted towards the sun (tilted_sun_slab in
+  // cloud_lighting.h; the GPU's RenderQuality::sun_slab_tilt) instead of the column's
+  // horizontal slab. Only with column_depths (as the GPU's, with column_steps > 0).
+  bool sun_slab_tilt = false;
   // The noise volumes' stochastic tiling (RendererConfig::noise_tiling; cloud_field.h)
   bool noise_tiling = false;
   // The layers' phase function (RendererConfig::cloud_phase; model/mie_phase_table.h)

@@ -106,12 +106,12 @@ CachedImage cached_render(const std::filesystem::path& file, const std::string& 
 // The scene's CPU reference (ReferenceSettings::pixel_samples = ref_samples) at w x h under
 // dir: <scene>_<W>x<H>[_ss<N>]_<key hash>.exr.
 // column_depths: ReferenceSettings::column_depths (the diffuse light's depths from each
-// point's own column); sun_slab_tilt: ReferenceSettings::sun_slab_tilt (with column_depths).
+// point's own column); sun_slab_tilt: ReferenceSettings::sun_slab_tilt.
 inline CachedImage reference_image(const BenchScene& s, const std::filesystem::path& dir, int w, int h,
                                    int ref_samples, bool column_depths = false, bool sun_slab_tilt = false) {
   const std::string key = reference_key(s, ref_samples) + " light model " +
                           std::to_string(reference::kLightModelRevision) + (column_depths ? " column depths" : "") +
-                          (column_depths && sun_slab_tilt ? " sun slab tilt" : "");
+                          (sun_slab_tilt ? " sun slab tilt" : "");
   const std::string samples = ref_samples > 1 ? "_ss" + std::to_string(ref_samples) : "";
   const std::filesystem::path file =
       dir / (slug(s.name) + "_" + std::to_string(w) + "x" + std::to_string(h) + samples + "_" + key_hash(key) + ".exr");

@@ -265,21 +265,21 @@ TEST(ReferenceClouds, DiffuseInscatterByHand) {
   const double table = model::ms_source_table().lookup(10.0, 10.0, mu_s, w_up, std::acos(cos_phi) * 180.0 / kPi);
   EXPECT_GT(table, 0.0);
   const glm::dvec3 got =
-      diffuse_inscatter(L, column, vertical_sun_slab(column, mu_s, w_up, cos_phi), mu_s, coverage, e_sun, t_atm, e_sky,
+      diffuse_inscatter(L, column, SunSlab{mu_s, column.above, column.below, w_up, cos_phi}, mu_s, coverage, e_sun, t_atm, e_sky,
                         t_ground, e_sky_ground, albedo, w_up);
   EXPECT_NEAR(got.g, 2.0 * 0.8 * 0.5 * table + diffuse, 1e-12);
   // Looking up into the cloud (light travelling down) is brighter than looking down onto
   // it from its middle: more of the sun's light travels down there.
   const glm::dvec3 from_below =
-      diffuse_inscatter(L, column, vertical_sun_slab(column, mu_s, -1.0, 1.0), mu_s, coverage, e_sun, t_atm, e_sky,
+      diffuse_inscatter(L, column, SunSlab{mu_s, column.above, column.below, -1.0, 1.0}, mu_s, coverage, e_sun, t_atm, e_sky,
                         t_ground, e_sky_ground, albedo, -1.0);
   const glm::dvec3 from_above =
-      diffuse_inscatter(L, column, vertical_sun_slab(column, mu_s, 1.0, 1.0), mu_s, coverage, e_sun, t_atm, e_sky,
+      diffuse_inscatter(L, column, SunSlab{mu_s, column.above, column.below, 1.0, 1.0}, mu_s, coverage, e_sun, t_atm, e_sky,
                         t_ground, e_sky_ground, albedo, 1.0);
   EXPECT_GT(from_below.g, from_above.g);
   EXPECT_GE(from_above.g, 0.0);
   // Sun below the horizon: no sun term, sky light only (isotropic view, w_up = 0).
-  const glm::dvec3 night = diffuse_inscatter(L, column, vertical_sun_slab(column, -0.1, 0.0, 1.0), -0.1, coverage, e_sun,
+  const glm::dvec3 night = diffuse_inscatter(L, column, SunSlab{-0.1, column.above, column.below, 0.0, 1.0}, -0.1, coverage, e_sun,
                                              glm::dvec3(0.0), e_sky, glm::dvec3(0.0), e_sky_ground, albedo, 0.0);
   const double E_up_night = 0.1 * gain * 2.0 * 0.12 * (0.6 + 0.4 * T50);
   EXPECT_NEAR(night.r, (E_sky + E_up_night) * iso.lookup(10.0, 10.0, 1.0, 0.0, 0.0), 1e-12);

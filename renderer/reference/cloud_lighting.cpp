@@ -53,15 +53,11 @@ double light_optical_depth(const CloudField& field, int li, const glm::dvec3& p,
   return tau;
 }
 
-SunSlab vertical_sun_slab(const ColumnDepths& column, double mu_s, double w_up, double cos_phi) {
-  return {mu_s, column.above, column.below, w_up, cos_phi};
-}
-
 SunSlab vertical_sun_slab(const ColumnDepths& column, const glm::dvec3& up, const glm::dvec3& sun, const glm::dvec3& w) {
   const double mu_s = glm::dot(up, sun), w_up = glm::dot(w, up);
   const glm::dvec3 sun_h = sun - mu_s * up, w_h = w - w_up * up;
   const double hh = glm::dot(sun_h, sun_h) * glm::dot(w_h, w_h);
-  return vertical_sun_slab(column, mu_s, w_up, hh > 1e-24 ? glm::dot(sun_h, w_h) / std::sqrt(hh) : 1.0);
+  return {mu_s, column.above, column.below, w_up, hh > 1e-24 ? glm::dot(sun_h, w_h) / std::sqrt(hh) : 1.0};
 }
 
 double sun_window(double marched_m, double mu_s, double to_top_m) {

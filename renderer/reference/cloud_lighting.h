@@ -78,9 +78,8 @@ struct SunSlab {
   double w_n = 1.0;                 // cosine between the scattered light's direction and the normal
   double cos_phi = 1.0;             // azimuth of that direction from the sun's, about the normal
 };
-// The horizontal slab of the column (no tilt): mu_s, the column's depths, w_up, cos_phi;
-// or from the local vertical up, the unit sun direction and the scattered light's w.
-SunSlab vertical_sun_slab(const ColumnDepths& column, double mu_s, double w_up, double cos_phi);
+// The horizontal slab of the column (no tilt), from the local vertical up, the unit sun
+// direction and the scattered light's w.
 SunSlab vertical_sun_slab(const ColumnDepths& column, const glm::dvec3& up, const glm::dvec3& sun, const glm::dvec3& w);
 // up: local vertical, sun: unit sun direction, w: unit direction of the scattered light
 // (towards the camera); tau_sun, window: light_optical_depth and sun_window. No sun

@@ -94,23 +94,26 @@ SunSlab tilted_sun_slab(vec2 column, float tau_sun, float window, vec3 up, vec3 
 // midpoints, base shape, the weather map value w of the point read once (the line is
 // vertical; up is the local vertical at p, so the altitude along it is alt + s). n = 0
 // marches nothing (llvmpipe runs the caller's untaken branch with its lanes masked).
-float vertical_optical_depth(int li, vec3 p, float alt, vec3 up, vec4 w, float len, int n) {
+// offset in [0, 1): where in each step the sample lies (0.5: the midpoint rule; a
+// per-frame sequence makes a still camera's accumulated samples integrate the column as
+// finely as the reference's steps: column_quadrature_offset in cloud_march.comp).
+float vertical_optical_depth(int li, vec3 p, float alt, vec3 up, vec4 w, float len, int n, float offset) {
   float ds = len / float(max(n, 1));  // signed: up (len > 0) or down (len < 0)
   float tau = 0.0, coverage;
   for (int j = 0; j < n; ++j) {
-    float s = (float(j) + 0.5) * ds;
+    float s = (float(j) + offset) * ds;
     tau += cloud_extinction_in(li, p + up * s, alt + s, DETAIL_NONE, w, coverage) * abs(ds);
   }
   return tau;
 }
 
-vec2 marched_column_depths(int li, vec3 p, float alt, vec3 up, vec4 w, int n) {
+vec2 marched_column_depths(int li, vec3 p, float alt, vec3 up, vec4 w, int n, float offset) {
   float len_above = max(frame.layers[li].top_m - alt, 0.0), len_below = max(alt - frame.layers[li].base_m, 0.0);
   float H = max(len_above + len_below, 1.0);
   int n_above = n > 0 ? max(int(ceil(float(n) * len_above / H)), 1) : 0;
   int n_below = n > 0 ? max(int(ceil(float(n) * len_below / H)), 1) : 0;
-  return vec2(vertical_optical_depth(li, p, alt, up, w, -len_below, n_below),
-              vertical_optical_depth(li, p, alt, up, w, len_above, n_above));
+  return vec2(vertical_optical_depth(li, p, alt, up, w, -len_below, n_below, offset),
+              vertical_optical_depth(li, p, alt, up, w, len_above, n_above, offset));
 }
 
 // Optical depth of layer li from a ground point p towards the sun (cloud shadows), in

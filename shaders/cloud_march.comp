@@ -100,7 +100,7 @@ struct RaySample {
   int layer;    // layer of that depth (-1 none)
 };
 
-RaySample march_ray(ivec2 q, vec3 dir) {
+RaySample march_ray(ivec2 q, vec3 dir, float column_offset) {
   float R = frame.shell_radius_m, h = frame.camera_altitude_m, ground_alt = frame.ground_altitude_m;
   vec3 sun = frame.sun_direction;
   vec3 E_sun = SOLAR_IRRADIANCE;
@@ -267,7 +267,7 @@ RaySample march_ray(ivec2 q, vec3 dir) {
           tau_below = below_above.x;
           tau_above = below_above.y;
         } else if (shadow.column_march_steps > 0) {
-          vec2 below_above = marched_column_depths(li, p, alt, up, w, shadow.column_march_steps);
+          vec2 below_above = marched_column_depths(li, p, alt, up, w, shadow.column_march_steps, column_offset);
           tau_below = below_above.x;
           tau_above = below_above.y;
         } else {
@@ -321,8 +321,15 @@ void main() {
     vec2 r_q = vec2(hash12(uvec2(q) * 3u + 11u), hash12(uvec2(q) * 5u + 17u));
     sub_pixel = fract(r_q + float(temporal.footprint_sample) * vec2(0.7548776662, 0.5698402910)) - 0.5;
   }
+  // where in each step the marched column depths sample (marched_column_depths): the
+  // midpoint for the centre sample, then a per-pixel rotated golden-ratio sequence over the
+  // accumulation's samples, so that a still camera's history integrates each column with
+  // many times the steps (stratified: the n-th offsets of the sequence fill [0, 1) evenly)
+  float column_offset = 0.5;
+  if (frame.footprint_jitter != 0 && temporal.footprint_sample > 0)
+    column_offset = fract(hash12(uvec2(q) * 7u + 23u) + float(temporal.footprint_sample) * 0.6180339887);
   vec3 dir = view_ray(cloud_pixel_ndc(vec2(q) + sub_pixel));
-  RaySample own = march_ray(q, dir);
+  RaySample own = march_ray(q, dir, column_offset);
   vec3 C = own.C;
   float T = own.T, depth = own.depth;
   int layer = own.layer;
@@ -344,7 +351,7 @@ void main() {
     float s = below ? (fp.e_h - e) / max(fp.e_h - fp.e_lo, 1e-9) : (e - fp.e_h) / max(fp.e_hi - fp.e_h, 1e-9);
     s = clamp(s, 0.05, 1.0);
     float e_other = below ? fp.e_h + s * (fp.e_hi - fp.e_h) : fp.e_h - s * (fp.e_h - fp.e_lo);
-    RaySample other = march_ray(q, at_elevation(dir, e_other));
+    RaySample other = march_ray(q, at_elevation(dir, e_other), column_offset);
     RaySample g = below ? own : other, k = below ? other : own;  // ground side, sky side
     float f = fp.f_ground;
     C = f * g.C + (1.0 - f) * k.C;

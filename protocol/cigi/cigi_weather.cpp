@@ -3,8 +3,10 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <optional>
 #include <utility>
 
@@ -237,17 +239,21 @@ CigiWeather cigi_weather(const IgState& state, double near_lat_deg, double near_
   // though not its shape. The plane stretches ground distances by up to 1 / cos^2 of the
   // angle from the centre, so the texel's reach on the plane is taken that much larger.
   const double texel_m = weather::kMeanEarthRadius_m * dlat * weather::kRadPerDeg;  // a texel's side along a meridian, m
-  const auto touching = [&](const std::array<double, 3>& p, double half_diag_m, std::vector<const Reach*>& out) {
-    out.clear();
+  // The regions are at most IgState::kMaxRegions, so a texel's set is a bit mask of their
+  // indices (ascending bits: id order).
+  static_assert(IgState::kMaxRegions <= 64, "a texel's regions are a 64-bit mask");
+  const auto touching = [&](const std::array<double, 3>& p, double half_diag_m, std::uint64_t& out) {
+    out = 0;
     int n = 1;
-    for (const Reach& r : regions) {
+    for (std::size_t k = 0; k < regions.size(); ++k) {
+      const Reach& r = regions[k];
       if (p[0] * r.frame.centre[0] + p[1] * r.frame.centre[1] + p[2] * r.frame.centre[2] <= r.cos_near) continue;
       const std::optional<RegionFrame::Point> q = r.frame.at(p);
       const bool edge_crosses =
           !q || q->cos_angle < 0.1 || std::abs(q->outside_m - 0.5 * r.frame.perimeter_m) <=
                                           0.5 * r.frame.perimeter_m + half_diag_m / (q->cos_angle * q->cos_angle);
       if (q && !edge_crosses && q->outside_m > 0.0) continue;  // beyond its perimeter: weight 0 throughout
-      out.push_back(&r);
+      out |= std::uint64_t{1} << k;
       if (edge_crosses) n = std::max(n, std::clamp(static_cast<int>(std::ceil(32.0 * texel_m / r.feature_m)), 4, 64));
     }
     return n;
@@ -257,14 +263,19 @@ CigiWeather cigi_weather(const IgState& state, double near_lat_deg, double near_
   // Beyond it every texel's samples are cut in proportion; such regions' share of a texel's
   // cover is then a few of its samples' (their shape was not drawn in any case).
   constexpr double kMaxRegionSamples = 1 << 26;
+  // Each texel is classified once: the regions touching it and the n of its n x n samples.
+  std::vector<std::uint64_t> near_mask(texels, 0);
+  std::vector<int> planned_samples(texels, 0);
   std::vector<double> row_cost(static_cast<std::size_t>(height), 0.0);
   parallel_for(height, kAllThreads, [&](int j) {
     const double lat = -90.0 + (j + 0.5) * dlat;
     const double half_diag_m = 0.5 * std::hypot(texel_m, texel_m * std::cos(lat * weather::kRadPerDeg) * dlon / dlat);
-    std::vector<const Reach*> near;
     for (int i = 0; i < width; ++i) {
-      const int n = touching(weather::unit_vector(lat, -180.0 + (i + 0.5) * dlon), half_diag_m, near);
-      if (!near.empty()) row_cost[static_cast<std::size_t>(j)] += static_cast<double>(n) * n * near.size();
+      const std::size_t t = static_cast<std::size_t>(j) * static_cast<std::size_t>(width) + static_cast<std::size_t>(i);
+      const int n = touching(weather::unit_vector(lat, -180.0 + (i + 0.5) * dlon), half_diag_m, near_mask[t]);
+      if (near_mask[t] == 0) continue;
+      planned_samples[t] = n;
+      row_cost[static_cast<std::size_t>(j)] += static_cast<double>(n) * n * std::popcount(near_mask[t]);
     }
   });
   double cost = 0.0;
@@ -273,9 +284,10 @@ CigiWeather cigi_weather(const IgState& state, double near_lat_deg, double near_
   out.region_samples = static_cast<std::uint64_t>(std::min(cost, kMaxRegionSamples));
   // A texel's cover: the global cover with the regions that touch it laid over it, at its
   // centre or as the mean over its n x n samples.
-  const auto cover_at = [&](const std::array<double, 3>& p, const std::vector<const Reach*>& near) {
+  const auto cover_at = [&](const std::array<double, 3>& p, std::uint64_t near) {
     std::array<double, 3> cover = global;
-    for (const Reach* r : near) {
+    for (; near != 0; near &= near - 1) {
+      const Reach* r = &regions[static_cast<std::size_t>(std::countr_zero(near))];
       const double w = r->frame.weight(p);
       if (w <= 0.0) continue;
       for (std::size_t k = 0; k < 3; ++k) {
@@ -287,14 +299,13 @@ CigiWeather cigi_weather(const IgState& state, double near_lat_deg, double near_
   };
   parallel_for(height, kAllThreads, [&](int j) {
     const double lat = -90.0 + (j + 0.5) * dlat;
-    const double half_diag_m = 0.5 * std::hypot(texel_m, texel_m * std::cos(lat * weather::kRadPerDeg) * dlon / dlat);
-    std::vector<const Reach*> near;
     for (int i = 0; i < width; ++i) {
       const double lon = -180.0 + (i + 0.5) * dlon;
-      const int planned = touching(weather::unit_vector(lat, lon), half_diag_m, near);
+      const std::size_t t = static_cast<std::size_t>(j) * static_cast<std::size_t>(width) + static_cast<std::size_t>(i);
+      const std::uint64_t near = near_mask[t];
       std::array<double, 3> cover = global;
-      if (!near.empty()) {
-        const int n = std::max(1, static_cast<int>(planned * sample_scale));
+      if (near != 0) {
+        const int n = std::max(1, static_cast<int>(planned_samples[t] * sample_scale));
         cover = {0.0, 0.0, 0.0};
         for (int a = 0; a < n; ++a)
           for (int b = 0; b < n; ++b) {

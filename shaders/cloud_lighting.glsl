@@ -91,12 +91,12 @@ SunSlab tilted_sun_slab(vec2 column, float tau_sun, float window, vec3 up, vec3 
 // above) marched from the point along its own vertical, as the reference's
 // column_optical_depths does. The column from the layer's base
 // to its top gets n steps, shared between the parts below and above alt by their lengths;
-// midpoints, base shape, the weather map value w of the point read once (the line is
-// vertical; up is the local vertical at p, so the altitude along it is alt + s). n = 0
-// marches nothing (llvmpipe runs the caller's untaken branch with its lanes masked).
-// offset in [0, 1): where in each step the sample lies (0.5: the midpoint rule; a
-// per-frame sequence makes a still camera's accumulated samples integrate the column as
-// finely as the reference's steps: column_quadrature_offset in cloud_march.comp).
+// one sample per step at offset in [0, 1) of it (0.5: the midpoint rule; cloud_march.comp's
+// column_offset moves it from frame to frame, so a still camera's accumulated samples
+// integrate the column as more steps would), base shape, the weather map value w of the
+// point read once (the line is vertical; up is the local vertical at p, so the altitude
+// along it is alt + s). n = 0 marches nothing (llvmpipe runs the caller's untaken branch
+// with its lanes masked).
 float vertical_optical_depth(int li, vec3 p, float alt, vec3 up, vec4 w, float len, int n, float offset) {
   float ds = len / float(max(n, 1));  // signed: up (len > 0) or down (len < 0)
   float tau = 0.0, coverage;

@@ -149,8 +149,9 @@ float layer_beam_transmittance(CloudLayerGpu L, float mu0) {
 // the map's local coverage c.
 // * The sun's: the Monte Carlo source table (ms_source_over_mu) at the depths of the sun's
 //   slab (vertical_sun_slab, or tilted_sun_slab with RenderQuality::sun_slab_tilt, which is
-//   the horizontal one in a horizontally homogeneous layer) times the solar flux through its face F_sun = E_sun T_atm mu', optical depths
-//   scaled to the table's droplets by (1 - g) / (1 - g_table) (similarity; L.ms_similarity).
+//   the horizontal one in a horizontally homogeneous layer) times the solar flux through its
+//   face F_sun = E_sun T_atm mu', optical depths scaled to the table's droplets by
+//   (1 - g) / (1 - g_table) (similarity; L.ms_similarity).
 //   With the peak beam of the sun term (peak_beam_phase) it makes the slab radiances of
 //   Monte Carlo (docs/ACCURACY.md).
 // * The sky's and the ground's: the Monte Carlo source of diffuse light

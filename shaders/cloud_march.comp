@@ -313,21 +313,21 @@ void main() {
   // n >= 1 of a still camera's accumulation; footprint_sample_index()) through the n-th
   // point of the pixel's sequence: offsets fract(r_q + n alpha) - 1/2 in cloud pixels,
   // alpha the R2 sequence's (Roberts 2018: 1/g, 1/g^2, g^3 = g + 1), r_q a per-pixel
-  // rotation so that neighbours do not move in step
+  // rotation so that neighbours do not move in step. Likewise where in each step the
+  // marched column depths sample (marched_column_depths): the midpoint for the centre
+  // sample, then the n-th point of a per-pixel rotated golden-ratio sequence, so that a
+  // still camera's history integrates each column with many times the steps (the
+  // sequence's first n points fill [0, 1) evenly).
   vec2 sub_pixel = vec2(0.0);
+  float column_offset = 0.5;
   float sample_weight = CENTRE_SAMPLE_WEIGHT;
   if (frame.footprint_jitter != 0 && temporal.footprint_sample > 0) {
     sample_weight = 1.0;
+    float n = float(temporal.footprint_sample);
     vec2 r_q = vec2(hash12(uvec2(q) * 3u + 11u), hash12(uvec2(q) * 5u + 17u));
-    sub_pixel = fract(r_q + float(temporal.footprint_sample) * vec2(0.7548776662, 0.5698402910)) - 0.5;
+    sub_pixel = fract(r_q + n * vec2(0.7548776662, 0.5698402910)) - 0.5;
+    column_offset = fract(hash12(uvec2(q) * 7u + 23u) + n * 0.6180339887);
   }
-  // where in each step the marched column depths sample (marched_column_depths): the
-  // midpoint for the centre sample, then a per-pixel rotated golden-ratio sequence over the
-  // accumulation's samples, so that a still camera's history integrates each column with
-  // many times the steps (stratified: the n-th offsets of the sequence fill [0, 1) evenly)
-  float column_offset = 0.5;
-  if (frame.footprint_jitter != 0 && temporal.footprint_sample > 0)
-    column_offset = fract(hash12(uvec2(q) * 7u + 23u) + float(temporal.footprint_sample) * 0.6180339887);
   vec3 dir = view_ray(cloud_pixel_ndc(vec2(q) + sub_pixel));
   RaySample own = march_ray(q, dir, column_offset);
   vec3 C = own.C;

@@ -270,8 +270,9 @@ CigiWeather cigi_weather(const IgState& state, double near_lat_deg, double near_
   parallel_for(height, kAllThreads, [&](int j) {
     const double lat = -90.0 + (j + 0.5) * dlat;
     const double half_diag_m = 0.5 * std::hypot(texel_m, texel_m * std::cos(lat * weather::kRadPerDeg) * dlon / dlat);
+    const std::size_t row = static_cast<std::size_t>(j) * static_cast<std::size_t>(width);
     for (int i = 0; i < width; ++i) {
-      const std::size_t t = static_cast<std::size_t>(j) * static_cast<std::size_t>(width) + static_cast<std::size_t>(i);
+      const std::size_t t = row + static_cast<std::size_t>(i);
       const int n = touching(weather::unit_vector(lat, -180.0 + (i + 0.5) * dlon), half_diag_m, near_mask[t]);
       if (near_mask[t] == 0) continue;
       planned_samples[t] = n;
@@ -299,13 +300,13 @@ CigiWeather cigi_weather(const IgState& state, double near_lat_deg, double near_
   };
   parallel_for(height, kAllThreads, [&](int j) {
     const double lat = -90.0 + (j + 0.5) * dlat;
+    const std::size_t row = static_cast<std::size_t>(j) * static_cast<std::size_t>(width);
     for (int i = 0; i < width; ++i) {
       const double lon = -180.0 + (i + 0.5) * dlon;
-      const std::size_t t = static_cast<std::size_t>(j) * static_cast<std::size_t>(width) + static_cast<std::size_t>(i);
-      const std::uint64_t near = near_mask[t];
+      const std::uint64_t near = near_mask[row + static_cast<std::size_t>(i)];
       std::array<double, 3> cover = global;
       if (near != 0) {
-        const int n = std::max(1, static_cast<int>(planned_samples[t] * sample_scale));
+        const int n = std::max(1, static_cast<int>(planned_samples[row + static_cast<std::size_t>(i)] * sample_scale));
         cover = {0.0, 0.0, 0.0};
         for (int a = 0; a < n; ++a)
           for (int b = 0; b < n; ++b) {

@@ -14,6 +14,7 @@
 #include "geodesy/utc_time.h"
 #include "renderer/reference/image_metrics.h"
 #include "renderer/reference/reference_renderer.h"
+#include "tests/sanitizer_build.h"
 #include "weather/presets.h"
 
 namespace cloudsvc::reference {
@@ -73,6 +74,8 @@ double halving_error(const Scene& s, bool clouds, bool atmosphere) {
 
 // One test for all scenes: the atmosphere tables and inputs are built once per process.
 TEST(ReferenceConvergence, HalvingTheStepsChangesTheImageByLessThanOnePercent) {
+  if (test::kSanitizerBuild) GTEST_SKIP() << test::kSlowUnderSanitizers
+                                            << "; the ReferenceClouds tests render these paths here";
   EXPECT_LT(halving_error(kBrokenCumulusFromBelow, true, false), kTolerance) << kBrokenCumulusFromBelow.name;
   EXPECT_LT(halving_error(kInsideStratus, true, false), kTolerance) << kInsideStratus.name;
   EXPECT_LT(halving_error(kAboveDeckAtSunset, true, false), kTolerance) << kAboveDeckAtSunset.name;

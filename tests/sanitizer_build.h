@@ -17,4 +17,7 @@ inline constexpr bool kSanitizerBuild = false;
 inline constexpr bool kSanitizerBuild = false;
 #endif
 
+// What a test that skips in the sanitizer build says.
+inline constexpr const char* kSlowUnderSanitizers = "minutes under AddressSanitizer; runs in the optimised build";
+
 }  // namespace cloudsvc::test

@@ -11,6 +11,7 @@
 #include "renderer/reference/reference_renderer.h"
 #include "renderer/truth/truth_renderer.h"
 #include "tests/make_view.h"
+#include "tests/sanitizer_build.h"
 #include "weather/cloud_layer.h"
 
 namespace cloudsvc {
@@ -59,6 +60,8 @@ Pair measure(double albedo, double pitch_deg) {
 }
 
 TEST(GroundCloudBounce, SnowAndSeaUnderADeckFollowThePathTracer) {
+  if (test::kSanitizerBuild) GTEST_SKIP() << test::kSlowUnderSanitizers
+                                            << "; TruthTracer.GuidedCopiesFromSnow... traces the ground bounce here";
   const Pair ground_snow = measure(0.8, -90.0), ground_sea = measure(0.1, -90.0);
   const Pair base_snow = measure(0.8, 90.0), base_sea = measure(0.1, 90.0);
   const auto show = [](const char* what, const Pair& p) {

@@ -22,6 +22,7 @@
 #include "renderer/truth/scene_world.h"
 #include "renderer/truth/truth_renderer.h"
 #include "tests/make_view.h"
+#include "tests/sanitizer_build.h"
 #include "weather/presets.h"
 
 namespace cloudsvc::truth {
@@ -280,6 +281,8 @@ TEST(TruthTracer, WhiteFurnaceHoldsWithTheMiePhase) {
 // 1960; black ground). With the Mie table the truth's first order matches it at the
 // antisolar point (the glory's peak), in the fogbow (38 deg from it) and at 70 deg.
 TEST(TruthTracer, MieSingleScatteringFromASlabMatchesTheClosedForm) {
+  if (test::kSanitizerBuild) GTEST_SKIP() << test::kSlowUnderSanitizers
+                                            << "; its code runs here in TruthTracer.WhiteFurnaceHoldsWithTheMiePhase";
   const double tau = 0.5, sun_zenith = 30.0;
   HomogeneousLayer medium;
   medium.base = 1000.0;
@@ -366,6 +369,8 @@ TEST(TruthTracer, SlabMatchesTheSlabMonteCarlo) {
 // the largest paths unsampled). Guided only where the sun is less than guide_depth deep,
 // the truth is resolved and agrees with the slab Monte Carlo.
 TEST(TruthTracer, ThickSlabUnderALowSunMatchesTheSlabMonteCarlo) {
+  if (test::kSanitizerBuild) GTEST_SKIP() << test::kSlowUnderSanitizers
+                                            << "; its code runs here in TruthTracer.SlabMatchesTheSlabMonteCarlo";
   const double tau = 30.0, sun_zenith = 80.0;
   const model::SlabSpec spec = model::slab_from_optical_depth(tau, sun_zenith);
   HomogeneousLayer medium;
@@ -642,6 +647,8 @@ SppComparison compare_spp(const TruthImage& a, const TruthImage& b) {
 // scatters too widely for its ratio to be a stable test); no majorant violation or lost
 // path; the image does not depend on the thread count.
 TEST(TruthRenderer, ConvergesWithSppAndIsThreadCountIndependent) {
+  if (test::kSanitizerBuild) GTEST_SKIP() << test::kSlowUnderSanitizers
+                                            << "; its code runs here in TruthRenderer.MarksPixelsIncompleteWhenPathsExceedTheCap";
   // below the cumulus bases (1200 m): cloud and sky pixels
   const ViewRequest v = test::make_view(47.45, 8.56, 600.0, 270.0, 15.0, "2026-06-21T14:00:00Z", 8, 5, 60.0);
   TruthSettings s16;

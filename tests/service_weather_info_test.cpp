@@ -118,7 +118,9 @@ TEST(WeatherInfo, BadInputGivesOneLineAndExitTwo) {
     EXPECT_TRUE(r.out.empty()) << r.out;
     ASSERT_FALSE(r.err.empty());
     EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;  // one line
-    if (!c.expected.empty()) EXPECT_EQ(r.err, c.expected + "\n");
+    if (!c.expected.empty()) {
+      EXPECT_EQ(r.err, c.expected + "\n");
+    }
   }
 }
 

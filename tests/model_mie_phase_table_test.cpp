@@ -18,6 +18,8 @@ namespace cloudsvc::model {
 namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
+// Why a test that builds a table may skip in the sanitizer build (tests/sanitizer_build.h).
+constexpr const char* kTableBuiltHere = "; MiePhaseTable.AgreesWithAFineSizeAverage builds a table here";
 
 // Before scaling, the interpolated table held all but a fraction of the scattered light,
 // and <cos theta> of the table matches the size average's g: the forward peak is resolved.
@@ -39,16 +41,14 @@ void expect_normalised_with_resolved_forward_peak(double d) {
 }
 
 TEST(MiePhaseTable, IsNormalisedAndResolvesTheForwardPeak) {
-  if (test::kSanitizerBuild) GTEST_SKIP() << test::kSlowUnderSanitizers
-                                            << "; MiePhaseTable.AgreesWithAFineSizeAverage builds a table here";
+  if (test::kSanitizerBuild) GTEST_SKIP() << test::kSlowUnderSanitizers << kTableBuiltHere;
   for (double d : {5.0, 20.0}) expect_normalised_with_resolved_forward_peak(d);
 }
 
 // The largest diameter the tables take (50 um, the narrowest forward peak): ~14 s on two
 // cores, minutes under AddressSanitizer, so that build leaves it to the optimised one.
 TEST(MiePhaseTable, LargestDropletsForwardPeakIsResolved) {
-  if (test::kSanitizerBuild) GTEST_SKIP() << test::kSlowUnderSanitizers
-                                            << "; MiePhaseTable.AgreesWithAFineSizeAverage builds a table here";
+  if (test::kSanitizerBuild) GTEST_SKIP() << test::kSlowUnderSanitizers << kTableBuiltHere;
   expect_normalised_with_resolved_forward_peak(50.0);
 }
 
@@ -77,8 +77,7 @@ TEST(MiePhaseTable, AgreesWithAFineSizeAverage) {
 // droplets grow (~1/d); the fogbow 34-41 deg from the antisolar point, wider for larger
 // droplets (towards the rainbow's 42 deg).
 TEST(MiePhaseTable, GloryAndFogbowFollowTheDropletSize) {
-  if (test::kSanitizerBuild) GTEST_SKIP() << test::kSlowUnderSanitizers
-                                            << "; MiePhaseTable.AgreesWithAFineSizeAverage builds a table here";
+  if (test::kSanitizerBuild) GTEST_SKIP() << test::kSlowUnderSanitizers << kTableBuiltHere;
   double ring_green[2] = {0.0, 0.0}, bow_green[2] = {0.0, 0.0};
   const double sizes[2] = {10.0, 20.0};
   for (int k = 0; k < 2; ++k) {
@@ -103,8 +102,7 @@ TEST(MiePhaseTable, GloryAndFogbowFollowTheDropletSize) {
 // sample_cos draws scattering angles with the density of its channel: the fraction of
 // 200 000 draws per channel in each angle bin against the bin's integral of the density.
 TEST(MiePhaseTable, SamplerDrawsEachChannelsDensity) {
-  if (test::kSanitizerBuild) GTEST_SKIP() << test::kSlowUnderSanitizers
-                                            << "; MiePhaseTable.AgreesWithAFineSizeAverage builds a table here";
+  if (test::kSanitizerBuild) GTEST_SKIP() << test::kSlowUnderSanitizers << kTableBuiltHere;
   const std::shared_ptr<const PhaseTable> t = mie_phase_table(14.0);
   const std::vector<double> edges = {0.0, 0.2, 0.5, 1.0, 2.0, 5.0, 10.0, 20.0, 40.0, 70.0, 100.0, 130.0, 140.0, 150.0, 170.0, 178.0, 180.0};
   const std::size_t bins = edges.size() - 1;
@@ -132,8 +130,7 @@ TEST(MiePhaseTable, SamplerDrawsEachChannelsDensity) {
 }
 
 TEST(MiePhaseTable, CachesPerTenthOfAMicrometre) {
-  if (test::kSanitizerBuild) GTEST_SKIP() << test::kSlowUnderSanitizers
-                                            << "; MiePhaseTable.AgreesWithAFineSizeAverage builds a table here";
+  if (test::kSanitizerBuild) GTEST_SKIP() << test::kSlowUnderSanitizers << kTableBuiltHere;
   EXPECT_EQ(mie_phase_table(12.02).get(), mie_phase_table(11.98).get());
   EXPECT_NE(mie_phase_table(12.02).get(), mie_phase_table(12.1).get());
   EXPECT_EQ(mie_phase_table(1.0).get(), mie_phase_table(5.0).get());  // clamped to [5, 50]

@@ -303,10 +303,11 @@ CigiWeather cigi_weather(const IgState& state, double near_lat_deg, double near_
     const std::size_t row = static_cast<std::size_t>(j) * static_cast<std::size_t>(width);
     for (int i = 0; i < width; ++i) {
       const double lon = -180.0 + (i + 0.5) * dlon;
-      const std::uint64_t near = near_mask[row + static_cast<std::size_t>(i)];
+      const std::size_t t = row + static_cast<std::size_t>(i);
+      const std::uint64_t near = near_mask[t];
       std::array<double, 3> cover = global;
       if (near != 0) {
-        const int n = std::max(1, static_cast<int>(planned_samples[row + static_cast<std::size_t>(i)] * sample_scale));
+        const int n = std::max(1, static_cast<int>(planned_samples[t] * sample_scale));
         cover = {0.0, 0.0, 0.0};
         for (int a = 0; a < n; ++a)
           for (int b = 0; b < n; ++b) {
@@ -315,7 +316,7 @@ CigiWeather cigi_weather(const IgState& state, double near_lat_deg, double near_
             for (std::size_t k = 0; k < 3; ++k) cover[k] += c[k] / (n * n);
           }
       }
-      float* out_texel = &m.layer_coverage[(static_cast<std::size_t>(j) * width + i) * 4];
+      float* out_texel = &m.layer_coverage[t * 4];
       for (std::size_t k = 0; k < 3; ++k) out_texel[k] = static_cast<float>(std::clamp(cover[k], 0.0, 1.0));
     }
   });

@@ -59,6 +59,8 @@ std::string make_preamble() {
   s << "const vec3 GROUND_ALBEDO = " << glsl_vec3(m::kGroundAlbedo[0], m::kGroundAlbedo[1], m::kGroundAlbedo[2]) << ";\n";
   s << "const float NIGHT_SKY_RADIANCE = " << glsl_float(m::kNightSkyRadiance) << ";\n";
   s << "const float LIGHT_MARCH_REACH_M = " << glsl_float(m::kLightMarchReach_m) << ";\n";
+  s << "#define COLUMN_PIECES " << m::kColumnPiecesPerStep << '\n';
+  s << "#define COLUMN_ANVIL_PIECES " << m::kColumnAnvilPiecesMax << '\n';
   // the Mie phase table's angle grid (renderer/model/mie_phase_table.h)
   s << "#define PHASE_TABLE_SAMPLES " << m::kPhaseTableSamples << '\n';
   s << "#define PHASE_TABLE_FORWARD_INTERVALS " << m::kPhaseTableForwardIntervals << '\n';

@@ -198,6 +198,34 @@ bool cloud_may_be_on_segment(int li, vec3 a, vec3 b, vec4 w) {
   return shape_bound * profile_bound > noise_quantile(1.0 - coverage);
 }
 
+// The base-shape noise of layer L at field point p_field (field_point).
+float base_shape_at(CloudLayerGpu L, vec3 p_field) {
+  return noise_at(base_noise, p_field * L.base_noise_frequency + L.base_noise_offset, L.base_noise_cell,
+                  L.base_tiling_seeds, frame.base_noise_mean);
+}
+
+// Cloud fraction of a threshold layer (not a dome layer) with base shape `shape` at height
+// fraction f of the layer, where the profile is `profile`, the local coverage c and its
+// threshold q = noise_quantile(1 - c); anvil_factor returns the anvil's extinction factor
+// (1 outside its band). CloudField::threshold_fraction (renderer/reference) is the same.
+float threshold_fraction(CloudLayerGpu L, float f, float profile, float coverage, float q, float shape,
+                         out float anvil_factor) {
+  // Coverage threshold: the shape exceeds Q(1 - c) over a fraction c of the area (at
+  // mid-profile), with a soft edge; full cover (c = 1) keeps nearly all of the shape.
+  float d = saturate((shape * profile - q) / COVERAGE_EDGE);
+  anvil_factor = 1.0;
+  // In an anvil's band the cloud fills the wider coverage c_w too, the part outside the
+  // tower thinner: the extinction factor falls from 1 to density_ratio where the tower's
+  // own d is 0, by the anvil's weight w (1 again where w = 0: continuous at the band's edges).
+  float w_anvil = anvil_weight(L, f);
+  if (w_anvil > 0.0) {
+    float d_shield = saturate((shape * profile - noise_quantile(1.0 - anvil_coverage(L, coverage, w_anvil))) / COVERAGE_EDGE);
+    anvil_factor = 1.0 - w_anvil * (1.0 - L.anvil.w) * (1.0 - d);
+    d = max(d, d_shield);
+  }
+  return d;
+}
+
 #ifdef CLOUDSVC_CUMULUS_DOMES
 // Cloud fraction of dome layer li (weather/cumulus_domes.h) at local point p, h m above its
 // base, with local coverage c, ceiling (m above the base) and the base-shape noise value
@@ -236,8 +264,7 @@ float cloud_extinction_in(int li, vec3 p, float alt, int detail, vec4 w, out flo
 #endif
   if (profile <= 0.0 && !dome) return 0.0;
   vec3 p_field = field_point(L, p, alt);
-  float shape = noise_at(base_noise, p_field * L.base_noise_frequency + L.base_noise_offset, L.base_noise_cell,
-                         L.base_tiling_seeds, frame.base_noise_mean);
+  float shape = base_shape_at(L, p_field);
   float d;
   float anvil_factor = 1.0;
 #ifdef CLOUDSVC_CUMULUS_DOMES
@@ -246,18 +273,7 @@ float cloud_extinction_in(int li, vec3 p, float alt, int detail, vec4 w, out flo
   } else
 #endif
   {
-    // Coverage threshold: the shape exceeds Q(1 - c) over a fraction c of the area (at
-    // mid-profile), with a soft edge; full cover (c = 1) keeps nearly all of the shape.
-    d = saturate((shape * profile - noise_quantile(1.0 - coverage)) / COVERAGE_EDGE);
-    // In an anvil's band the cloud fills the wider coverage c_w too, the part outside the
-    // tower thinner: the extinction factor falls from 1 to density_ratio where the tower's
-    // own d is 0, by the anvil's weight w (1 again where w = 0: continuous at the band's edges).
-    float w_anvil = anvil_weight(L, f);
-    if (w_anvil > 0.0) {
-      float d_shield = saturate((shape * profile - noise_quantile(1.0 - anvil_coverage(L, coverage, w_anvil))) / COVERAGE_EDGE);
-      anvil_factor = 1.0 - w_anvil * (1.0 - L.anvil.w) * (1.0 - d);
-      d = max(d, d_shield);
-    }
+    d = threshold_fraction(L, f, profile, coverage, noise_quantile(1.0 - coverage), shape, anvil_factor);
   }
   if (d <= 0.0) return 0.0;
   if (detail != DETAIL_NONE && d < 1.0) {

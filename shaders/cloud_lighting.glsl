@@ -6,6 +6,7 @@
 // atmosphere_lookup.glsl, cloud_density.glsl.
 #include "slab_transmittance.glsl"
 #include "ms_source_lookup.glsl"
+#include "column_quadrature.glsl"
 
 // Length of the light march from altitude alt towards a sun of zenith cosine mu_s in layer
 // li: to the layer's top, or its base where the path enters it from above, at most 4 km.
@@ -84,36 +85,6 @@ SunSlab tilted_sun_slab(vec2 column, float tau_sun, float window, vec3 up, vec3 
   vec3 sun_t = sun - mu * n, w_t = w - w_n * n;
   float tt = dot(sun_t, sun_t) * dot(w_t, w_t);
   return SunSlab(mu, above, below, w_n, tt > 1e-12 ? dot(sun_t, w_t) * inversesqrt(tt) : 1.0);
-}
-
-// Without the column volume (column_volume.glsl; RenderQuality::column_steps > 0 with
-// ground_shadow_map off: the map's grid holds the volume): the column's depths (below,
-// above) marched from the point along its own vertical, as the reference's
-// column_optical_depths does. The column from the layer's base
-// to its top gets n steps, shared between the parts below and above alt by their lengths;
-// one sample per step at offset in [0, 1) of it (0.5: the midpoint rule; cloud_march.comp's
-// column_offset moves it from frame to frame, so a still camera's accumulated samples
-// integrate the column as more steps would), base shape, the weather map value w of the
-// point read once (the line is vertical; up is the local vertical at p, so the altitude
-// along it is alt + s). n = 0 marches nothing (llvmpipe runs the caller's untaken branch
-// with its lanes masked).
-float vertical_optical_depth(int li, vec3 p, float alt, vec3 up, vec4 w, float len, int n, float offset) {
-  float ds = len / float(max(n, 1));  // signed: up (len > 0) or down (len < 0)
-  float tau = 0.0, coverage;
-  for (int j = 0; j < n; ++j) {
-    float s = (float(j) + offset) * ds;
-    tau += cloud_extinction_in(li, p + up * s, alt + s, DETAIL_NONE, w, coverage) * abs(ds);
-  }
-  return tau;
-}
-
-vec2 marched_column_depths(int li, vec3 p, float alt, vec3 up, vec4 w, int n, float offset) {
-  float len_above = max(frame.layers[li].top_m - alt, 0.0), len_below = max(alt - frame.layers[li].base_m, 0.0);
-  float H = max(len_above + len_below, 1.0);
-  int n_above = n > 0 ? max(int(ceil(float(n) * len_above / H)), 1) : 0;
-  int n_below = n > 0 ? max(int(ceil(float(n) * len_below / H)), 1) : 0;
-  return vec2(vertical_optical_depth(li, p, alt, up, w, -len_below, n_below, offset),
-              vertical_optical_depth(li, p, alt, up, w, len_above, n_above, offset));
 }
 
 // Optical depth of layer li from a ground point p towards the sun (cloud shadows), in

@@ -313,11 +313,11 @@ void main() {
   // n >= 1 of a still camera's accumulation; footprint_sample_index()) through the n-th
   // point of the pixel's sequence: offsets fract(r_q + n alpha) - 1/2 in cloud pixels,
   // alpha the R2 sequence's (Roberts 2018: 1/g, 1/g^2, g^3 = g + 1), r_q a per-pixel
-  // rotation so that neighbours do not move in step. Likewise where in each step the
-  // marched column depths sample (marched_column_depths): the midpoint for the centre
-  // sample, then the n-th point of a per-pixel rotated golden-ratio sequence, so that a
-  // still camera's history integrates each column with many times the steps (the
-  // sequence's first n points fill [0, 1) evenly).
+  // rotation so that neighbours do not move in step. Likewise where the marched column
+  // depths' nodes lie within their steps (marched_column_depths, column_quadrature.glsl):
+  // at the steps' ends for the centre sample (offset 1/2), then shifted by the n-th point of
+  // a per-pixel rotated golden-ratio sequence, so that a still camera's history integrates
+  // each column with many times the steps (the sequence's first n points fill [0, 1) evenly).
   vec2 sub_pixel = vec2(0.0);
   float column_offset = 0.5;
   float sample_weight = CENTRE_SAMPLE_WEIGHT;

@@ -31,5 +31,13 @@ inline constexpr double kNightSkyRadiance = 2.0e-9;
 // the layer top (or base) but over at most this distance; a long grazing path through a
 // sheet stops there. Part of the model's definition. [LIGHT_MARCH_REACH_M]
 inline constexpr double kLightMarchReach_m = 4000.0;
+// Pieces per step of a column's depth integration (the diffuse light's column depths): the
+// height profile is evaluated at this many points per step, between which the coverage
+// threshold's ramp is integrated exactly (CloudField::vertical_optical_depth; the GPU's
+// vertical_optical_depth, shaders/column_quadrature.glsl); in anvil layers also at least as
+// many per ramp of the anvil's weight (CloudField::column_pieces). [COLUMN_PIECES]
+inline constexpr int kColumnPiecesPerStep = 4;
+// ... but at most this many per step. [COLUMN_ANVIL_PIECES]
+inline constexpr int kColumnAnvilPiecesMax = 16;
 
 }  // namespace cloudsvc::model

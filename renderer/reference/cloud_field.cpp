@@ -10,6 +10,7 @@
 #include <array>
 #include <cmath>
 
+#include "renderer/model/scene_constants.h"
 #include "renderer/reference/texture_sampling.h"
 
 namespace cloudsvc::reference {
@@ -126,6 +127,29 @@ double CloudField::detail_shape(const ReferenceLayer& L, const glm::dvec3& field
                               inputs_.detail_mean);
 }
 
+glm::dvec3 CloudField::field_point(const ReferenceLayer& L, const glm::dvec3& p, double alt) const {
+  const glm::dvec3 stretched =
+      L.noise_vertical_scale == 1.0 ? p : p + (L.noise_vertical_scale - 1.0) * alt * scene_.shell.up_at(p);
+  return L.camera_field + L.field_from_local * stretched;
+}
+
+double CloudField::depth_fraction(const ReferenceLayer& L, const glm::dvec4& w) const {
+  return (honour_stratiform_ && L.stratiform) ? 1.0 : std::clamp(0.5 + w.g, 0.3, 1.0);
+}
+
+double CloudField::threshold_fraction(const ReferenceLayer& L, double f, double profile, double coverage, double q,
+                                      double shape, double& anvil_factor) const {
+  double d = saturate((shape * profile - q) / kCoverageEdge);
+  anvil_factor = 1.0;
+  if (const double w_anvil = anvil_weight(L, f); w_anvil > 0.0) {
+    const double shield_threshold = interpolate_quantile(inputs_.base_quantiles, 1.0 - anvil_coverage(L, coverage, w_anvil));
+    const double d_shield = saturate((shape * profile - shield_threshold) / kCoverageEdge);
+    anvil_factor = 1.0 - w_anvil * (1.0 - static_cast<double>(L.anvil.density_ratio)) * (1.0 - d);
+    d = std::max(d, d_shield);
+  }
+  return d;
+}
+
 CloudSample CloudField::sample(int li, const glm::dvec3& p, double alt, bool detail, std::uint64_t& evals) const {
   CloudSample out;
   const ReferenceLayer& L = scene_.layers[static_cast<std::size_t>(li)];
@@ -135,13 +159,7 @@ CloudSample CloudField::sample(int li, const glm::dvec3& p, double alt, bool det
   const glm::dvec4 w = weather_at(p);
   out.coverage = weather::local_coverage(L.coverage, w.r);
   if (out.coverage <= 0.0) return out;
-  const double depth_fraction = (honour_stratiform_ && L.stratiform) ? 1.0 : std::clamp(0.5 + w.g, 0.3, 1.0);
-  // the noise-field point of p: m, wind-rotated ECEF axes, altitude scaled by k along the local up
-  const auto field_point = [&] {
-    const glm::dvec3 stretched =
-        L.noise_vertical_scale == 1.0 ? p : p + (L.noise_vertical_scale - 1.0) * alt * scene_.shell.up_at(p);
-    return L.camera_field + L.field_from_local * stretched;
-  };
+  const double f_v = depth_fraction(L, w);
   // steps 5 and 6 of the header for the cloud fraction d > 0
   const auto extinction = [&](double d, double anvil_factor, const glm::dvec3& field) {
     if (detail && d < 1.0) {
@@ -153,28 +171,93 @@ CloudSample CloudField::sample(int li, const glm::dvec3& p, double alt, bool det
     return d * anvil_factor * L.density_scale * density_modulation * L.sigma_max_per_m;
   };
   if (domes_[static_cast<std::size_t>(li)]) {  // the cumulus domes (weather::dome_fraction)
-    const glm::dvec3 field = field_point();
+    const glm::dvec3 field = field_point(L, p, alt);
     const double shape = base_shape(L, field);
-    const double d = dome_fraction(li, p, alt, out.coverage, depth_fraction * (L.top_m - L.base_m), shape);
+    const double d = dome_fraction(li, p, alt, out.coverage, f_v * (L.top_m - L.base_m), shape);
     if (d > 0.0) out.sigma_t = extinction(d, 1.0, field);
     return out;
   }
-  if (f > depth_fraction) return out;
-  const double profile = height_profile(L, f / depth_fraction);
+  if (f > f_v) return out;
+  const double profile = height_profile(L, f / f_v);
   if (profile <= 0.0) return out;
-  const glm::dvec3 field = field_point();
-  const double shape = base_shape(L, field);
+  const glm::dvec3 field = field_point(L, p, alt);
   const double threshold = interpolate_quantile(inputs_.base_quantiles, 1.0 - out.coverage);
-  double d = saturate((shape * profile - threshold) / kCoverageEdge);
-  double anvil_factor = 1.0;  // step 4 of the header
-  if (const double w_anvil = anvil_weight(L, f); w_anvil > 0.0) {
-    const double shield_threshold = interpolate_quantile(inputs_.base_quantiles, 1.0 - anvil_coverage(L, out.coverage, w_anvil));
-    const double d_shield = saturate((shape * profile - shield_threshold) / kCoverageEdge);
-    anvil_factor = 1.0 - w_anvil * (1.0 - static_cast<double>(L.anvil.density_ratio)) * (1.0 - d);
-    d = std::max(d, d_shield);
-  }
+  double anvil_factor = 1.0;
+  const double d = threshold_fraction(L, f, profile, out.coverage, threshold, base_shape(L, field), anvil_factor);
   if (d > 0.0) out.sigma_t = extinction(d, anvil_factor, field);
   return out;
+}
+
+double CloudField::saturate_mean(double a, double b) {
+  const auto ramp_integral = [](double x) { return x <= 0.0 ? 0.0 : (x < 1.0 ? 0.5 * x * x : x - 0.5); };
+  const double d = b - a;
+  return std::abs(d) > 1e-6 ? (ramp_integral(b) - ramp_integral(a)) / d : saturate(0.5 * (a + b));
+}
+
+int CloudField::column_pieces(const ReferenceLayer& L, double step_m) {
+  const int k = model::kColumnPiecesPerStep;
+  if (!(L.anvil.spread > 0.0f)) return k;
+  const double ramp_m = 0.2 * (static_cast<double>(L.anvil.top) - L.anvil.base) * (L.top_m - L.base_m);  // anvil_weight's
+  return std::clamp(static_cast<int>(std::ceil(k * std::abs(step_m) / std::max(ramp_m, 1.0))), k, model::kColumnAnvilPiecesMax);
+}
+
+double CloudField::profile_top_m(int li, const glm::dvec3& p) const {
+  const ReferenceLayer& L = scene_.layers[static_cast<std::size_t>(li)];
+  if (domes_[static_cast<std::size_t>(li)]) return L.top_m;  // cauliflower tops rise above the profile's end
+  return L.base_m + (L.top_m - L.base_m) * depth_fraction(L, weather_at(p));
+}
+
+double CloudField::vertical_optical_depth(int li, const glm::dvec3& p, double alt, double len_m, int steps,
+                                          std::uint64_t& evals) const {
+  const ReferenceLayer& L = scene_.layers[static_cast<std::size_t>(li)];
+  if (steps <= 0 || len_m == 0.0) return 0.0;
+  const bool anvil = L.anvil.spread > 0.0f;
+  const double ds = len_m / steps;
+  const int pieces = column_pieces(L, ds);
+  const double dpiece = std::abs(ds) / pieces;
+  const glm::dvec3 up = scene_.shell.up_at(p);  // along it the altitude is alt + s
+  if (domes_[static_cast<std::size_t>(li)]) {  // the domes' fraction is no threshold of S: the full sample
+    double tau = 0.0;
+    for (int i = 0; i < steps * pieces; ++i) {
+      const double s = (i + 0.5) * ds / pieces;
+      tau += sample(li, p + up * s, alt + s, false, evals).sigma_t * dpiece;
+    }
+    return tau;
+  }
+  const glm::dvec4 w = weather_at(p);
+  const double coverage = weather::local_coverage(L.coverage, w.r);
+  if (coverage <= 0.0) return 0.0;
+  const double thickness = L.top_m - L.base_m, f_v = depth_fraction(L, w);
+  const double q = interpolate_quantile(inputs_.base_quantiles, 1.0 - coverage);
+  const auto shape_at = [&](double s) {
+    ++evals;
+    return base_shape(L, field_point(L, p + up * s, alt + s));
+  };
+  const auto fraction_at = [&](double s) { return (alt + s - L.base_m) / thickness; };
+  double sum = 0.0;  // of the pieces' mean cloud fraction (times the anvil factor)
+  double shape0 = shape_at(0.0);
+  double g0 = (shape0 * height_profile(L, std::clamp(fraction_at(0.0) / f_v, 0.0, 1.0)) - q) / kCoverageEdge;
+  for (int j = 0; j < steps; ++j) {
+    const double shape1 = shape_at((j + 1) * ds);
+    for (int k = 0; k < pieces; ++k) {
+      if (anvil) {
+        const double u = (k + 0.5) / pieces, f = fraction_at((j + u) * ds);
+        if (!(f > 0.0 && f < f_v)) continue;
+        double anvil_factor = 1.0;
+        const double d = threshold_fraction(L, f, height_profile(L, f / f_v), coverage, q,
+                                            shape0 + (shape1 - shape0) * u, anvil_factor);
+        sum += d * anvil_factor;
+      } else {
+        const double u = static_cast<double>(k + 1) / pieces;
+        const double x = std::clamp(fraction_at((j + u) * ds) / f_v, 0.0, 1.0);
+        const double g1 = ((shape0 + (shape1 - shape0) * u) * height_profile(L, x) - q) / kCoverageEdge;
+        sum += saturate_mean(g0, g1);
+        g0 = g1;
+      }
+    }
+    shape0 = shape1;
+  }
+  return sum * dpiece * L.density_scale * std::exp2(2.0 * (w.b - 0.5)) * L.sigma_max_per_m;
 }
 
 }  // namespace cloudsvc::reference

@@ -61,6 +61,31 @@ class CloudField {
   // counting rule as the GPU's density_evals).
   CloudSample sample(int li, const glm::dvec3& p, double alt, bool detail, std::uint64_t& evals) const;
 
+  // Optical depth of layer li along the local vertical from p (altitude alt) over the signed
+  // length len_m (> 0 upwards), without the detail erosion (docs/RENDERING.md "Column
+  // depths"): the base shape S is read at the ends of `steps` equal steps and taken linear
+  // between them; the profile P at model::kColumnPiecesPerStep points per step; over each
+  // piece g = (S P - Q(1 - c)) / 0.12 is linear and the mean of saturate(g) is exact
+  // (saturate_mean). Anvil layers take saturate at the pieces' midpoints (their shield's
+  // threshold varies with height), dome layers the full sample there. The weather map is
+  // read once, at p: the column is vertical. The GPU's vertical_optical_depth
+  // (shaders/column_quadrature.glsl) is the same quadrature.
+  double vertical_optical_depth(int li, const glm::dvec3& p, double alt, double len_m, int steps,
+                                std::uint64_t& evals) const;
+  // Pieces per step of step_m (m) in the column of layer L: model::kColumnPiecesPerStep, and
+  // in an anvil layer at least as many per ramp of the anvil's weight (its band's fifth), at
+  // most model::kColumnAnvilPiecesMax: at
+  // 4 pieces per step, 8 steps per column, the depths above samples in a cumulonimbus's top
+  // fifth err by 10 % in their diffuse transmittance, with the ramp's pieces by 2 %
+  // (tests/reference_column_depths_test.cpp).
+  static int column_pieces(const ReferenceLayer& L, double step_m);
+  // The altitude where layer li's profile ends above p: its top scaled by the depth fraction
+  // f_v of the map's cloud type there (step 2 of the header); a dome layer's top.
+  double profile_top_m(int li, const glm::dvec3& p) const;
+  // Mean of saturate(g) over a piece on which g runs linearly from a to b: the difference of
+  // the clamped ramp's antiderivative F (0 below 0, x^2 / 2 on [0, 1], x - 1/2 above) over b - a.
+  static double saturate_mean(double a, double b);
+
   // The pieces, for tests: weather map value at p; the vertical profile at height fraction x.
   glm::dvec4 weather_at(const glm::dvec3& p) const;
   static double height_profile(const ReferenceLayer& layer, double x);
@@ -81,6 +106,15 @@ class CloudField {
   // type's tiling seeds).
   double base_shape(const ReferenceLayer& L, const glm::dvec3& field) const;
   double detail_shape(const ReferenceLayer& L, const glm::dvec3& field) const;
+  // The noise-field point of local p at altitude alt (step 3: m, wind-rotated ECEF axes, the
+  // altitude scaled by k along the local up).
+  glm::dvec3 field_point(const ReferenceLayer& L, const glm::dvec3& p, double alt) const;
+  // f_v of step 2 where the map reads w.
+  double depth_fraction(const ReferenceLayer& L, const glm::dvec4& w) const;
+  // Steps 3 and 4: the cloud fraction d of base shape S at height fraction f with profile P,
+  // local coverage c and threshold q = Q(1 - c), and the anvil's extinction factor a.
+  double threshold_fraction(const ReferenceLayer& L, double f, double profile, double coverage, double q, double shape,
+                            double& anvil_factor) const;
   struct Domes;
   double dome_fraction(int li, const glm::dvec3& p, double alt, double coverage, double ceiling_m, double shape) const;
   const ReferenceScene& scene_;

@@ -88,22 +88,11 @@ SunSlab tilted_sun_slab(const ColumnDepths& column, double tau_sun, double windo
 
 ColumnDepths column_optical_depths(const CloudField& field, int li, const glm::dvec3& p, double alt, double step_m,
                                    std::uint64_t& evals) {
-  const ShellFrame& s = field.scene().shell;
   const ReferenceLayer& L = field.scene().layers[static_cast<std::size_t>(li)];
-  const glm::dvec3 up = s.up_at(p);
-  // along the local vertical the distance to an altitude is the altitude difference
-  const auto depth = [&](double len, double sign) {
-    if (len <= 0.0) return 0.0;
-    const int n = std::max(1, static_cast<int>(std::ceil(len / step_m)));
-    const double dt = len / n;
-    double tau = 0.0;
-    for (int j = 0; j < n; ++j) {
-      const glm::dvec3 x = p + up * (sign * (j + 0.5) * dt);
-      tau += field.sample(li, x, s.altitude_of(x), false, evals).sigma_t * dt;
-    }
-    return tau;
-  };
-  return {depth(L.top_m - alt, 1.0), depth(alt - L.base_m, -1.0)};
+  const double len_above = std::max(field.profile_top_m(li, p) - alt, 0.0), len_below = std::max(alt - L.base_m, 0.0);
+  const auto steps = [&](double len) { return std::max(1, static_cast<int>(std::ceil(len / step_m))); };
+  return {field.vertical_optical_depth(li, p, alt, len_above, steps(len_above), evals),
+          field.vertical_optical_depth(li, p, alt, -len_below, steps(len_below), evals)};
 }
 
 ColumnDepths nominal_column_depths(const ReferenceLayer& L, double alt, double coverage) {

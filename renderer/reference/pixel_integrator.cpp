@@ -88,8 +88,9 @@ glm::dvec3 PixelIntegrator::cloud_inscatter(int li, const glm::dvec3& p, double 
   const double ground_alt = s.ground_alt_m;
   // the scattered light travels along -dir
   const glm::dvec3 up = s.up_at(p);
-  const ColumnDepths column = settings_.column_depths ? column_optical_depths(field_, li, p, alt, step, evals)
-                                                      : nominal_column_depths(L, alt, coverage);
+  const ColumnDepths column = settings_.column_depths
+                                  ? column_optical_depths(field_, li, p, alt, step * settings_.column_step_factor, evals)
+                                  : nominal_column_depths(L, alt, coverage);
   // the sun's slab: tilted towards the sun (needs the point's own column), or the column's
   // horizontal one (t_atm = 0 leaves the sun's source 0 whatever its slab)
   const SunSlab sun_slab = settings_.sun_slab_tilt && settings_.column_depths

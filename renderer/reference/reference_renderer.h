@@ -37,8 +37,10 @@ namespace cloudsvc::reference {
 // a stale cache. 2: ground-cloud inter-reflection (cloud_lighting.h, ground_cloud_gain);
 // 3: the ground under a layer as independent clear and cloudy columns; 4: the peak beam,
 // the diffuse source table and the slab transmittances from Monte Carlo (model::
-// ms_source_table, model::slab_flux_table).
-inline constexpr int kLightModelRevision = 4;
+// ms_source_table, model::slab_flux_table); 5: the column depths' quadrature (base shape
+// linear between nodes, the threshold's ramp integrated exactly: CloudField::
+// vertical_optical_depth) up to where the profile ends.
+inline constexpr int kLightModelRevision = 5;
 
 struct ReferenceSettings {
   // Cloud march
@@ -62,6 +64,11 @@ struct ReferenceSettings {
   // The diffuse light's depths from the point's own column (column_optical_depths, the GPU's
   // RenderQuality::column_steps > 0) instead of a homogeneous layer's of the map's coverage.
   bool column_depths = false;
+  // Their steps, in light steps: the base shape is read at the steps' ends and linear between
+  // them (CloudField::vertical_optical_depth; 4: 40 m in cumulus, where the diffuse
+  // transmittance of the column's depths is within 0.2 % of the field's own integral,
+  // tests/reference_column_depths_test.cpp).
+  double column_step_factor = 4.0;
   // The sun's diffuse source from a slab tilted towards the sun (tilted_sun_slab in
   // cloud_lighting.h; the GPU's RenderQuality::sun_slab_tilt) instead of the column's
   // horizontal slab. Only with column_depths (as the GPU's, with column_steps > 0).

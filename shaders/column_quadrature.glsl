@@ -1,0 +1,116 @@
+// The diffuse light's column depths marched from a lit sample (RenderQuality::column_steps
+// > 0 without the column volume, column_volume.glsl): the optical depths (below, above) of
+// the sample's own vertical column through its layer, the independent column approximation
+// (Cahalan et al. 1994), as the reference's column_optical_depths takes them (the same
+// quadrature: CloudField::vertical_optical_depth, renderer/reference/cloud_field.h).
+// Needs cloud_density.glsl.
+//
+// The cloud fraction saturate((S P - q) / COVERAGE_EDGE) is nearly a step function of
+// height, so a midpoint rule with 8 steps errs by 10-35 % in the transmittance of a
+// cumulus or cumulonimbus column. Instead the base shape S is read at the steps' ends and
+// taken linear between them (the noise is trilinear: smooth over a step), the profile P is
+// evaluated at COLUMN_PIECES points per step, and over each piece g = (S P - q) / edge is
+// linear and the mean of saturate(g) exact (saturate_mean). Anvil layers take saturate at
+// the pieces' midpoints (their shield's threshold varies with height), with at least
+// COLUMN_PIECES pieces per ramp of the anvil's weight too; dome layers (their fraction is
+// no threshold of S) the full sample at the midpoints of COLUMN_PIECES pieces per step.
+
+// Antiderivative of saturate: 0 below 0, x^2 / 2 on [0, 1], x - 1/2 above.
+float saturate_integral(float x) { return x <= 0.0 ? 0.0 : (x < 1.0 ? 0.5 * x * x : x - 0.5); }
+
+// Mean of saturate(g) over a piece on which g runs linearly from a to b (the midpoint's
+// value where b - a is too small for the difference quotient; its error there < 1e-7).
+float saturate_mean(float a, float b) {
+  float d = b - a;
+  return abs(d) > 1e-3 ? (saturate_integral(b) - saturate_integral(a)) / d : saturate(0.5 * (a + b));
+}
+
+// Optical depth of layer li along the local vertical up from p (altitude alt; along it the
+// altitude is alt + s) over the signed length len (> 0 upwards), base shape only, with the
+// weather map's value w at p (the line is vertical: one value). The n steps' nodes lie at
+// fractions clamp((j + offset - 1/2) / n, 0, 1) of the length, j = 0..n+1: offset 1/2 puts
+// them at the steps' ends; cloud_march.comp moves offset from frame to frame, so a still
+// camera's accumulated samples integrate the column as more steps would (n + 2 base-shape
+// reads then, n + 1 at offset 1/2). n = 0 marches nothing (llvmpipe runs the caller's
+// untaken branch with its lanes masked).
+float vertical_optical_depth(int li, vec3 p, float alt, vec3 up, vec4 w, float len, int n, float offset) {
+  if (n <= 0 || len == 0.0) return 0.0;
+  CloudLayerGpu L = frame.layers[li];
+#ifdef CLOUDSVC_CUMULUS_DOMES
+  if (L.dome != 0) {
+    int m = n * COLUMN_PIECES;
+    float tau = 0.0, c;
+    for (int i = 0; i < m; ++i) {
+      float s = (float(i) + offset) / float(m) * len;
+      tau += cloud_extinction_in(li, p + up * s, alt + s, DETAIL_NONE, w, c);
+    }
+    return tau * abs(len) / float(m);
+  }
+#endif
+  float coverage = local_coverage(L, w);
+  if (coverage <= 0.0) return 0.0;
+  float q = noise_quantile(1.0 - coverage);
+  float thickness = L.top_m - L.base_m, span = thickness * depth_fraction(L, w);
+  bool anvil = L.anvil.x > 0.0;
+  // pieces per step in an anvil layer: at least COLUMN_PIECES per ramp of the anvil's weight
+  // (anvil_weight: a fifth of its band), at most COLUMN_ANVIL_PIECES (CloudField::column_pieces)
+  int anvil_pieces = clamp(int(ceil(float(COLUMN_PIECES) * abs(len) / float(n) / max(0.2 * (L.anvil.z - L.anvil.y) * thickness, 1.0))),
+                           COLUMN_PIECES, COLUMN_ANVIL_PIECES);
+  g_density_evals += 1u;
+  float shape0 = base_shape_at(L, field_point(L, p, alt));
+  float g0 = (shape0 * height_profile(L, clamp((alt - L.base_m) / span, 0.0, 1.0)) - q) / COVERAGE_EDGE;
+  float t0 = 0.0, sum = 0.0;  // sum: of the pieces' mean cloud fraction times their length fraction
+  for (int j = 1; j <= n + 1; ++j) {
+    float t1 = clamp((float(j) + offset - 0.5) / float(n), 0.0, 1.0);
+    if (t1 <= t0) break;
+    g_density_evals += 1u;
+    float shape1 = base_shape_at(L, field_point(L, p + up * (t1 * len), alt + t1 * len));
+    // The piece loops have constant bounds, so the compiler unrolls them: llvmpipe cuts any
+    // loop short after 65535 iterations per invocation, which a counted loop of pieces
+    // inside every column of a 1024-step march would pass.
+    if (anvil) {
+      float piece = (t1 - t0) / float(anvil_pieces);
+      for (int k = 0; k < COLUMN_ANVIL_PIECES; ++k) {
+        if (k >= anvil_pieces) break;
+        float u = (float(k) + 0.5) / float(anvil_pieces);
+        float h = alt + mix(t0, t1, u) * len - L.base_m;  // height above the base at the piece's midpoint
+        if (h > 0.0 && h < span) {
+          float anvil_factor;
+          float d = threshold_fraction(L, h / thickness, height_profile(L, h / span), coverage, q, mix(shape0, shape1, u),
+                                       anvil_factor);
+          sum += d * anvil_factor * piece;
+        }
+      }
+    } else {
+      float piece = (t1 - t0) / float(COLUMN_PIECES);
+      for (int k = 1; k <= COLUMN_PIECES; ++k) {
+        float u = float(k) / float(COLUMN_PIECES);
+        float h = alt + mix(t0, t1, u) * len - L.base_m;
+        float g1 = (mix(shape0, shape1, u) * height_profile(L, clamp(h / span, 0.0, 1.0)) - q) / COVERAGE_EDGE;
+        sum += saturate_mean(g0, g1) * piece;
+        g0 = g1;
+      }
+    }
+    shape0 = shape1;
+    t0 = t1;
+  }
+  return sum * abs(len) * L.density_scale * exp2(2.0 * (w.b - 0.5)) * L.extinction_max;
+}
+
+// The column depths (below, above) of a lit sample of layer li at p (altitude alt): the
+// column from the layer's base to where its profile ends (the top scaled by the depth
+// fraction of the map's cloud type: height_profile is 0 above it) gets n steps, shared
+// between the parts below and above alt by their lengths.
+vec2 marched_column_depths(int li, vec3 p, float alt, vec3 up, vec4 w, int n, float offset) {
+  CloudLayerGpu L = frame.layers[li];
+  float top = L.base_m + (L.top_m - L.base_m) * depth_fraction(L, w);
+#ifdef CLOUDSVC_CUMULUS_DOMES
+  if (L.dome != 0) top = L.top_m;  // cauliflower tops rise above the profile's end
+#endif
+  float len_above = max(top - alt, 0.0), len_below = max(alt - L.base_m, 0.0);
+  float H = max(len_above + len_below, 1.0);
+  int n_above = n > 0 ? max(int(ceil(float(n) * len_above / H)), 1) : 0;
+  int n_below = n > 0 ? max(int(ceil(float(n) * len_below / H)), 1) : 0;
+  return vec2(vertical_optical_depth(li, p, alt, up, w, -len_below, n_below, offset),
+              vertical_optical_depth(li, p, alt, up, w, len_above, n_above, offset));
+}

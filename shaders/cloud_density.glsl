@@ -198,6 +198,11 @@ bool cloud_may_be_on_segment(int li, vec3 a, vec3 b, vec4 w) {
   return shape_bound * profile_bound > noise_quantile(1.0 - coverage);
 }
 
+// sigma_t per unit cloud fraction (1/m) of layer L where the map reads w: its density scale,
+// the map's density modulation 2^(2 (w.b - 1/2)) and its peak extinction
+// (CloudField::extinction_scale).
+float extinction_scale(CloudLayerGpu L, vec4 w) { return L.density_scale * exp2(2.0 * (w.b - 0.5)) * L.extinction_max; }
+
 // The base-shape noise of layer L at field point p_field (field_point).
 float base_shape_at(CloudLayerGpu L, vec3 p_field) {
   return noise_at(base_noise, p_field * L.base_noise_frequency + L.base_noise_offset, L.base_noise_cell,
@@ -282,8 +287,7 @@ float cloud_extinction_in(int li, vec3 p, float alt, int detail, vec4 w, out flo
                                         : frame.detail_noise_mean;
     d = saturate(remap(d, dn * L.detail_erosion, 1.0, 0.0, 1.0));
   }
-  float density_mod = exp2(2.0 * (w.b - 0.5));
-  return d * anvil_factor * L.density_scale * density_mod * L.extinction_max;
+  return d * anvil_factor * extinction_scale(L, w);
 }
 
 // The same where the weather is read at p itself.

@@ -25,49 +25,36 @@ float saturate_mean(float a, float b) {
   return abs(d) > 1e-3 ? (saturate_integral(b) - saturate_integral(a)) / d : saturate(0.5 * (a + b));
 }
 
-// Optical depth of layer li along the local vertical up from p (altitude alt; along it the
-// altitude is alt + s) over the signed length len (> 0 upwards), base shape only, with the
-// weather map's value w at p (the line is vertical: one value). The n steps' nodes lie at
+// The part of layer L's column from p (altitude alt) along the local vertical up (along it
+// the altitude is alt + s) over the signed length len (> 0 upwards), base shape only, in n
+// steps, as the mean cloud fraction times the length (m; marched_column_depths scales it to
+// an optical depth). q, span: the coverage threshold and the profile's height (m);
+// shape_p, g_p: the base shape at p and its g (read once for both parts). The nodes lie at
 // fractions clamp((j + offset - 1/2) / n, 0, 1) of the length, j = 0..n+1: offset 1/2 puts
 // them at the steps' ends; cloud_march.comp moves offset from frame to frame, so a still
-// camera's accumulated samples integrate the column as more steps would (n + 2 base-shape
-// reads then, n + 1 at offset 1/2). n = 0 marches nothing (llvmpipe runs the caller's
-// untaken branch with its lanes masked).
-float vertical_optical_depth(int li, vec3 p, float alt, vec3 up, vec4 w, float len, int n, float offset) {
+// camera's accumulated samples integrate the column as more steps would (n + 1 base-shape
+// reads then, n at offset 1/2).
+float column_part(CloudLayerGpu L, vec3 p, float alt, vec3 up, float q, float coverage, float span, float shape_p, float g_p,
+                  float len, int n, float offset) {
   if (n <= 0 || len == 0.0) return 0.0;
-  CloudLayerGpu L = frame.layers[li];
-#ifdef CLOUDSVC_CUMULUS_DOMES
-  if (L.dome != 0) {
-    int m = n * COLUMN_PIECES;
-    float tau = 0.0, c;
-    for (int i = 0; i < m; ++i) {
-      float s = (float(i) + offset) / float(m) * len;
-      tau += cloud_extinction_in(li, p + up * s, alt + s, DETAIL_NONE, w, c);
-    }
-    return tau * abs(len) / float(m);
-  }
-#endif
-  float coverage = local_coverage(L, w);
-  if (coverage <= 0.0) return 0.0;
-  float q = noise_quantile(1.0 - coverage);
-  float thickness = L.top_m - L.base_m, span = thickness * depth_fraction(L, w);
+  float thickness = L.top_m - L.base_m;
   bool anvil = L.anvil.x > 0.0;
   // pieces per step in an anvil layer: at least COLUMN_PIECES per ramp of the anvil's weight
   // (anvil_weight: a fifth of its band), at most COLUMN_ANVIL_PIECES (CloudField::column_pieces)
-  int anvil_pieces = clamp(int(ceil(float(COLUMN_PIECES) * abs(len) / float(n) / max(0.2 * (L.anvil.z - L.anvil.y) * thickness, 1.0))),
-                           COLUMN_PIECES, COLUMN_ANVIL_PIECES);
-  g_density_evals += 1u;
-  float shape0 = base_shape_at(L, field_point(L, p, alt));
-  float g0 = (shape0 * height_profile(L, clamp((alt - L.base_m) / span, 0.0, 1.0)) - q) / COVERAGE_EDGE;
+  int anvil_pieces = anvil ? clamp(int(ceil(float(COLUMN_PIECES) * abs(len) / float(n) /
+                                            max(0.2 * (L.anvil.z - L.anvil.y) * thickness, 1.0))),
+                                   COLUMN_PIECES, COLUMN_ANVIL_PIECES)
+                           : COLUMN_PIECES;
+  float shape0 = shape_p, g0 = g_p;
   float t0 = 0.0, sum = 0.0;  // sum: of the pieces' mean cloud fraction times their length fraction
   for (int j = 1; j <= n + 1; ++j) {
     float t1 = clamp((float(j) + offset - 0.5) / float(n), 0.0, 1.0);
     if (t1 <= t0) break;
     g_density_evals += 1u;
     float shape1 = base_shape_at(L, field_point(L, p + up * (t1 * len), alt + t1 * len));
-    // The piece loops have constant bounds, so the compiler unrolls them: llvmpipe cuts any
-    // loop short after 65535 iterations per invocation, which a counted loop of pieces
-    // inside every column of a 1024-step march would pass.
+    // The piece loops have constant bounds, so that the compiler can unroll them: llvmpipe
+    // cuts an invocation short after 65535 loop iterations in all, which counted pieces in
+    // every column of a long march would pass.
     if (anvil) {
       float piece = (t1 - t0) / float(anvil_pieces);
       for (int k = 0; k < COLUMN_ANVIL_PIECES; ++k) {
@@ -94,16 +81,32 @@ float vertical_optical_depth(int li, vec3 p, float alt, vec3 up, vec4 w, float l
     shape0 = shape1;
     t0 = t1;
   }
-  return sum * abs(len) * L.density_scale * exp2(2.0 * (w.b - 0.5)) * L.extinction_max;
+  return sum * abs(len);
 }
 
-// The column depths (below, above) of a lit sample of layer li at p (altitude alt): the
-// column from the layer's base to where its profile ends (the top scaled by the depth
-// fraction of the map's cloud type: height_profile is 0 above it) gets n steps, shared
-// between the parts below and above alt by their lengths.
+#ifdef CLOUDSVC_CUMULUS_DOMES
+// The same part's optical depth in a dome layer: the full sample at the midpoints of
+// COLUMN_PIECES pieces per step (the domes' fraction is no threshold of the shape).
+float dome_column_part(int li, vec3 p, float alt, vec3 up, vec4 w, float len, int n, float offset) {
+  int m = n * COLUMN_PIECES;
+  float tau = 0.0, c;
+  for (int i = 0; i < m; ++i) {
+    float s = (float(i) + offset) / float(m) * len;
+    tau += cloud_extinction_in(li, p + up * s, alt + s, DETAIL_NONE, w, c);
+  }
+  return m > 0 ? tau * abs(len) / float(m) : 0.0;
+}
+#endif
+
+// The column depths (below, above) of a lit sample of layer li at p (altitude alt, local
+// vertical up, weather map value w): the column from the layer's base to where its profile
+// ends (the top scaled by the depth fraction of the map's cloud type: height_profile is 0
+// above it) gets n steps, shared between the parts below and above alt by their lengths.
+// n = 0 marches nothing (llvmpipe runs the caller's untaken branch with its lanes masked).
 vec2 marched_column_depths(int li, vec3 p, float alt, vec3 up, vec4 w, int n, float offset) {
   CloudLayerGpu L = frame.layers[li];
-  float top = L.base_m + (L.top_m - L.base_m) * depth_fraction(L, w);
+  float span = (L.top_m - L.base_m) * depth_fraction(L, w);
+  float top = L.base_m + span;
 #ifdef CLOUDSVC_CUMULUS_DOMES
   if (L.dome != 0) top = L.top_m;  // cauliflower tops rise above the profile's end
 #endif
@@ -111,6 +114,17 @@ vec2 marched_column_depths(int li, vec3 p, float alt, vec3 up, vec4 w, int n, fl
   float H = max(len_above + len_below, 1.0);
   int n_above = n > 0 ? max(int(ceil(float(n) * len_above / H)), 1) : 0;
   int n_below = n > 0 ? max(int(ceil(float(n) * len_below / H)), 1) : 0;
-  return vec2(vertical_optical_depth(li, p, alt, up, w, -len_below, n_below, offset),
-              vertical_optical_depth(li, p, alt, up, w, len_above, n_above, offset));
+#ifdef CLOUDSVC_CUMULUS_DOMES
+  if (L.dome != 0)
+    return vec2(dome_column_part(li, p, alt, up, w, -len_below, n_below, offset),
+                dome_column_part(li, p, alt, up, w, len_above, n_above, offset));
+#endif
+  float coverage = local_coverage(L, w);
+  if (n <= 0 || coverage <= 0.0) return vec2(0.0);
+  float q = noise_quantile(1.0 - coverage);
+  g_density_evals += 1u;
+  float shape_p = base_shape_at(L, field_point(L, p, alt));
+  float g_p = (shape_p * height_profile(L, clamp((alt - L.base_m) / span, 0.0, 1.0)) - q) / COVERAGE_EDGE;
+  return extinction_scale(L, w) * vec2(column_part(L, p, alt, up, q, coverage, span, shape_p, g_p, -len_below, n_below, offset),
+                                       column_part(L, p, alt, up, q, coverage, span, shape_p, g_p, len_above, n_above, offset));
 }

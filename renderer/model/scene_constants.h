@@ -33,8 +33,8 @@ inline constexpr double kNightSkyRadiance = 2.0e-9;
 inline constexpr double kLightMarchReach_m = 4000.0;
 // Pieces per step of a column's depth integration (the diffuse light's column depths): the
 // height profile is evaluated at this many points per step, between which the coverage
-// threshold's ramp is integrated exactly (CloudField::vertical_optical_depth; the GPU's
-// vertical_optical_depth, shaders/column_quadrature.glsl); in anvil layers also at least as
+// threshold's ramp is integrated exactly (CloudField::column_depths; the GPU's
+// marched_column_depths, shaders/column_quadrature.glsl); in anvil layers also at least as
 // many per ramp of the anvil's weight (CloudField::column_pieces). [COLUMN_PIECES]
 inline constexpr int kColumnPiecesPerStep = 4;
 // ... but at most this many per step. [COLUMN_ANVIL_PIECES]

@@ -150,6 +150,10 @@ double CloudField::threshold_fraction(const ReferenceLayer& L, double f, double 
   return d;
 }
 
+double CloudField::extinction_scale(const ReferenceLayer& L, const glm::dvec4& w) {
+  return L.density_scale * std::exp2(2.0 * (w.b - 0.5)) * L.sigma_max_per_m;
+}
+
 CloudSample CloudField::sample(int li, const glm::dvec3& p, double alt, bool detail, std::uint64_t& evals) const {
   CloudSample out;
   const ReferenceLayer& L = scene_.layers[static_cast<std::size_t>(li)];
@@ -167,8 +171,7 @@ CloudSample CloudField::sample(int li, const glm::dvec3& p, double alt, bool det
       const double floor_value = dn * L.erosion;
       d = saturate((d - floor_value) / (1.0 - floor_value));
     }
-    const double density_modulation = std::exp2(2.0 * (w.b - 0.5));
-    return d * anvil_factor * L.density_scale * density_modulation * L.sigma_max_per_m;
+    return d * anvil_factor * extinction_scale(L, w);
   };
   if (domes_[static_cast<std::size_t>(li)]) {  // the cumulus domes (weather::dome_fraction)
     const glm::dvec3 field = field_point(L, p, alt);
@@ -201,63 +204,77 @@ int CloudField::column_pieces(const ReferenceLayer& L, double step_m) {
   return std::clamp(static_cast<int>(std::ceil(k * std::abs(step_m) / std::max(ramp_m, 1.0))), k, model::kColumnAnvilPiecesMax);
 }
 
-double CloudField::profile_top_m(int li, const glm::dvec3& p) const {
+double CloudField::profile_end_m(int li, double f_v) const {
   const ReferenceLayer& L = scene_.layers[static_cast<std::size_t>(li)];
   if (domes_[static_cast<std::size_t>(li)]) return L.top_m;  // cauliflower tops rise above the profile's end
-  return L.base_m + (L.top_m - L.base_m) * depth_fraction(L, weather_at(p));
+  return L.base_m + (L.top_m - L.base_m) * f_v;
 }
 
-double CloudField::vertical_optical_depth(int li, const glm::dvec3& p, double alt, double len_m, int steps,
-                                          std::uint64_t& evals) const {
+double CloudField::profile_top_m(int li, const glm::dvec3& p) const {
+  return profile_end_m(li, depth_fraction(scene_.layers[static_cast<std::size_t>(li)], weather_at(p)));
+}
+
+glm::dvec2 CloudField::column_depths(int li, const glm::dvec3& p, double alt, const std::function<int(double)>& steps_for,
+                                     std::uint64_t& evals) const {
   const ReferenceLayer& L = scene_.layers[static_cast<std::size_t>(li)];
-  if (steps <= 0 || len_m == 0.0) return 0.0;
-  const bool anvil = L.anvil.spread > 0.0f;
-  const double ds = len_m / steps;
-  const int pieces = column_pieces(L, ds);
-  const double dpiece = std::abs(ds) / pieces;
-  const glm::dvec3 up = scene_.shell.up_at(p);  // along it the altitude is alt + s
-  if (domes_[static_cast<std::size_t>(li)]) {  // the domes' fraction is no threshold of S: the full sample
-    double tau = 0.0;
-    for (int i = 0; i < steps * pieces; ++i) {
-      const double s = (i + 0.5) * ds / pieces;
-      tau += sample(li, p + up * s, alt + s, false, evals).sigma_t * dpiece;
-    }
-    return tau;
-  }
-  const glm::dvec4 w = weather_at(p);
-  const double coverage = weather::local_coverage(L.coverage, w.r);
-  if (coverage <= 0.0) return 0.0;
+  const glm::dvec4 w = weather_at(p);  // one value: the column is vertical
   const double thickness = L.top_m - L.base_m, f_v = depth_fraction(L, w);
+  const double len_below = std::max(alt - L.base_m, 0.0), len_above = std::max(profile_end_m(li, f_v) - alt, 0.0);
+  const glm::dvec3 up = scene_.shell.up_at(p);  // along it the altitude is alt + s
+  if (domes_[static_cast<std::size_t>(li)]) {  // the domes' fraction is no threshold of S: the full sample at the pieces' midpoints
+    const auto part = [&](double len_m) {
+      const int m = steps_for(std::abs(len_m)) * model::kColumnPiecesPerStep;
+      double tau = 0.0;
+      for (int i = 0; i < m && len_m != 0.0; ++i) {
+        const double s = (i + 0.5) * len_m / m;
+        tau += sample(li, p + up * s, alt + s, false, evals).sigma_t * std::abs(len_m) / m;
+      }
+      return tau;
+    };
+    return {part(-len_below), part(len_above)};
+  }
+  const double coverage = weather::local_coverage(L.coverage, w.r);
+  if (coverage <= 0.0) return glm::dvec2(0.0);
   const double q = interpolate_quantile(inputs_.base_quantiles, 1.0 - coverage);
+  const bool anvil = L.anvil.spread > 0.0f;
   const auto shape_at = [&](double s) {
     ++evals;
     return base_shape(L, field_point(L, p + up * s, alt + s));
   };
   const auto fraction_at = [&](double s) { return (alt + s - L.base_m) / thickness; };
-  double sum = 0.0;  // of the pieces' mean cloud fraction (times the anvil factor)
-  double shape0 = shape_at(0.0);
-  double g0 = (shape0 * height_profile(L, std::clamp(fraction_at(0.0) / f_v, 0.0, 1.0)) - q) / kCoverageEdge;
-  for (int j = 0; j < steps; ++j) {
-    const double shape1 = shape_at((j + 1) * ds);
-    for (int k = 0; k < pieces; ++k) {
-      if (anvil) {
-        const double u = (k + 0.5) / pieces, f = fraction_at((j + u) * ds);
-        if (!(f > 0.0 && f < f_v)) continue;
-        double anvil_factor = 1.0;
-        const double d = threshold_fraction(L, f, height_profile(L, f / f_v), coverage, q,
-                                            shape0 + (shape1 - shape0) * u, anvil_factor);
-        sum += d * anvil_factor;
-      } else {
-        const double u = static_cast<double>(k + 1) / pieces;
-        const double x = std::clamp(fraction_at((j + u) * ds) / f_v, 0.0, 1.0);
-        const double g1 = ((shape0 + (shape1 - shape0) * u) * height_profile(L, x) - q) / kCoverageEdge;
-        sum += saturate_mean(g0, g1);
-        g0 = g1;
+  const double shape_p = shape_at(0.0);  // shared by both parts
+  const double g_p = (shape_p * height_profile(L, std::clamp(fraction_at(0.0) / f_v, 0.0, 1.0)) - q) / kCoverageEdge;
+  // the part of signed length len_m (> 0 upwards)
+  const auto part = [&](double len_m) {
+    if (len_m == 0.0) return 0.0;
+    const int steps = steps_for(std::abs(len_m));
+    const double ds = len_m / steps;
+    const int pieces = column_pieces(L, ds);
+    double sum = 0.0;  // of the pieces' mean cloud fraction (times the anvil factor)
+    double shape0 = shape_p, g0 = g_p;
+    for (int j = 0; j < steps; ++j) {
+      const double shape1 = shape_at((j + 1) * ds);
+      for (int k = 0; k < pieces; ++k) {
+        if (anvil) {
+          const double u = (k + 0.5) / pieces, f = fraction_at((j + u) * ds);
+          if (!(f > 0.0 && f < f_v)) continue;
+          double anvil_factor = 1.0;
+          const double d = threshold_fraction(L, f, height_profile(L, f / f_v), coverage, q,
+                                              shape0 + (shape1 - shape0) * u, anvil_factor);
+          sum += d * anvil_factor;
+        } else {
+          const double u = static_cast<double>(k + 1) / pieces;
+          const double x = std::clamp(fraction_at((j + u) * ds) / f_v, 0.0, 1.0);
+          const double g1 = ((shape0 + (shape1 - shape0) * u) * height_profile(L, x) - q) / kCoverageEdge;
+          sum += saturate_mean(g0, g1);
+          g0 = g1;
+        }
       }
+      shape0 = shape1;
     }
-    shape0 = shape1;
-  }
-  return sum * dpiece * L.density_scale * std::exp2(2.0 * (w.b - 0.5)) * L.sigma_max_per_m;
+    return sum * std::abs(ds) / pieces;
+  };
+  return extinction_scale(L, w) * glm::dvec2(part(-len_below), part(len_above));
 }
 
 }  // namespace cloudsvc::reference

@@ -24,6 +24,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -61,17 +62,18 @@ class CloudField {
   // counting rule as the GPU's density_evals).
   CloudSample sample(int li, const glm::dvec3& p, double alt, bool detail, std::uint64_t& evals) const;
 
-  // Optical depth of layer li along the local vertical from p (altitude alt) over the signed
-  // length len_m (> 0 upwards), without the detail erosion (docs/RENDERING.md "Column
-  // depths"): the base shape S is read at the ends of `steps` equal steps and taken linear
-  // between them; the profile P at model::kColumnPiecesPerStep points per step; over each
-  // piece g = (S P - Q(1 - c)) / 0.12 is linear and the mean of saturate(g) is exact
-  // (saturate_mean). Anvil layers take saturate at the pieces' midpoints (their shield's
-  // threshold varies with height), dome layers the full sample there. The weather map is
-  // read once, at p: the column is vertical. The GPU's vertical_optical_depth
-  // (shaders/column_quadrature.glsl) is the same quadrature.
-  double vertical_optical_depth(int li, const glm::dvec3& p, double alt, double len_m, int steps,
-                                std::uint64_t& evals) const;
+  // Optical depths (below, above) of layer li's vertical column through local point p
+  // (altitude alt): down to the layer's base, and up to where its profile ends
+  // (profile_top_m), without the detail erosion (docs/RENDERING.md "Column volume"), each
+  // part in steps_for(its length in m) steps. The base shape S is read at the steps' ends
+  // (at p once for both parts) and taken linear between them; the profile P at
+  // model::kColumnPiecesPerStep points per step; over each piece g = (S P - Q(1 - c)) / 0.12
+  // is linear and the mean of saturate(g) exact (saturate_mean). Anvil layers take saturate
+  // at the pieces' midpoints (their shield's threshold varies with height), dome layers the
+  // full sample there. The weather map is read once, at p: the column is vertical. The
+  // GPU's marched_column_depths (shaders/column_quadrature.glsl) is the same quadrature.
+  glm::dvec2 column_depths(int li, const glm::dvec3& p, double alt, const std::function<int(double)>& steps_for,
+                           std::uint64_t& evals) const;
   // Pieces per step of step_m (m) in the column of layer L: model::kColumnPiecesPerStep, and
   // in an anvil layer at least as many per ramp of the anvil's weight (its band's fifth), at
   // most model::kColumnAnvilPiecesMax: at
@@ -109,6 +111,10 @@ class CloudField {
   // The noise-field point of local p at altitude alt (step 3: m, wind-rotated ECEF axes, the
   // altitude scaled by k along the local up).
   glm::dvec3 field_point(const ReferenceLayer& L, const glm::dvec3& p, double alt) const;
+  // Step 6's factor: sigma_t = d a * extinction_scale (1/m) where the map reads w.
+  static double extinction_scale(const ReferenceLayer& L, const glm::dvec4& w);
+  // The altitude where layer li's profile ends for depth fraction f_v (profile_top_m).
+  double profile_end_m(int li, double f_v) const;
   // f_v of step 2 where the map reads w.
   double depth_fraction(const ReferenceLayer& L, const glm::dvec4& w) const;
   // Steps 3 and 4: the cloud fraction d of base shape S at height fraction f with profile P,

@@ -88,11 +88,9 @@ SunSlab tilted_sun_slab(const ColumnDepths& column, double tau_sun, double windo
 
 ColumnDepths column_optical_depths(const CloudField& field, int li, const glm::dvec3& p, double alt, double step_m,
                                    std::uint64_t& evals) {
-  const ReferenceLayer& L = field.scene().layers[static_cast<std::size_t>(li)];
-  const double len_above = std::max(field.profile_top_m(li, p) - alt, 0.0), len_below = std::max(alt - L.base_m, 0.0);
-  const auto steps = [&](double len) { return std::max(1, static_cast<int>(std::ceil(len / step_m))); };
-  return {field.vertical_optical_depth(li, p, alt, len_above, steps(len_above), evals),
-          field.vertical_optical_depth(li, p, alt, -len_below, steps(len_below), evals)};
+  const glm::dvec2 below_above = field.column_depths(
+      li, p, alt, [step_m](double len) { return std::max(1, static_cast<int>(std::ceil(len / step_m))); }, evals);
+  return {below_above.y, below_above.x};
 }
 
 ColumnDepths nominal_column_depths(const ReferenceLayer& L, double alt, double coverage) {

@@ -43,8 +43,8 @@ double light_optical_depth(const CloudField& field, int li, const glm::dvec3& p,
 // to the layer's top and base: the independent column approximation (Cahalan et al. 1994,
 // J. Atmos. Sci. 51, 3776) in which the diffuse light at a point is that of a plane-parallel
 // slab with the optical depths of the cloud actually above and below it: from the layer's
-// base to where its profile ends (CloudField::profile_top_m), in steps <= step_m of
-// CloudField::vertical_optical_depth (the GPU's quadrature), without detail erosion (as the
+// base to where its profile ends, in steps <= step_m of CloudField::column_depths (the GPU's
+// quadrature), without detail erosion (as the
 // light march), no reach cap.
 struct ColumnDepths {
   double above = 0.0, below = 0.0;

@@ -39,7 +39,7 @@ namespace cloudsvc::reference {
 // the diffuse source table and the slab transmittances from Monte Carlo (model::
 // ms_source_table, model::slab_flux_table); 5: the column depths' quadrature (base shape
 // linear between nodes, the threshold's ramp integrated exactly: CloudField::
-// vertical_optical_depth) up to where the profile ends.
+// column_depths) up to where the profile ends.
 inline constexpr int kLightModelRevision = 5;
 
 struct ReferenceSettings {
@@ -65,7 +65,7 @@ struct ReferenceSettings {
   // RenderQuality::column_steps > 0) instead of a homogeneous layer's of the map's coverage.
   bool column_depths = false;
   // Their steps, in light steps: the base shape is read at the steps' ends and linear between
-  // them (CloudField::vertical_optical_depth; 4: 40 m in cumulus, where the diffuse
+  // them (CloudField::column_depths; 4: 40 m in cumulus, where the diffuse
   // transmittance of the column's depths is within 0.2 % of the field's own integral,
   // tests/reference_column_depths_test.cpp).
   double column_step_factor = 4.0;

@@ -76,7 +76,7 @@ class GroundShadowMap {
   // per_pixel: no map; the composite marches the shadows of every ground pixel.
   // light_volume: also build the light volume (with the map, light_steps light steps;
   // not with per_pixel); column_steps > 0: also build the column volume with that many
-  // steps per column (not with per_pixel). column_march_steps > 0: the march marches each
+  // steps per column, at least one per altitude level (not with per_pixel). column_march_steps > 0: the march marches each
   // lit sample's column in that many steps instead (every frame, needed or not). needed =
   // false (no ground in view and no march that reads a volume): nothing is built or
   // marched, the lookups are switched off for this frame, and the map kept for a later

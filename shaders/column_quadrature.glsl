@@ -25,59 +25,75 @@ float saturate_mean(float a, float b) {
   return abs(d) > 1e-3 ? (saturate_integral(b) - saturate_integral(a)) / d : saturate(0.5 * (a + b));
 }
 
+// Pieces per step of an anvil layer's column of signed length len in n steps: at least
+// COLUMN_PIECES per ramp of the anvil's weight (anvil_weight: a fifth of its band), at most
+// COLUMN_ANVIL_PIECES (CloudField::column_pieces); COLUMN_PIECES in other layers.
+int column_step_pieces(CloudLayerGpu L, float len, int n) {
+  if (L.anvil.x <= 0.0) return COLUMN_PIECES;
+  float thickness = L.top_m - L.base_m;
+  return clamp(int(ceil(float(COLUMN_PIECES) * abs(len) / float(n) / max(0.2 * (L.anvil.z - L.anvil.y) * thickness, 1.0))),
+               COLUMN_PIECES, COLUMN_ANVIL_PIECES);
+}
+
+// One step of a column (base shape only) from fraction t0 to t1 of its signed length len
+// from p (altitude alt) along the local vertical up: the base shape shape0 at t0 and shape1
+// at t1, taken linear between them; g0: (S P - q) / edge at t0, updated to its value at t1.
+// Returns the step's mean cloud fraction times (t1 - t0). q, span: the coverage threshold
+// and the profile's height (m); pieces: column_step_pieces.
+float column_step(CloudLayerGpu L, float alt, float q, float coverage, float span, float shape0, float shape1,
+                  inout float g0, float t0, float t1, float len, int pieces) {
+  float sum = 0.0;
+  // The piece loops have constant bounds, so that the compiler can unroll them: llvmpipe
+  // cuts an invocation short after 65535 loop iterations in all, which counted pieces in
+  // every column of a long march would pass.
+  if (L.anvil.x > 0.0) {
+    float thickness = L.top_m - L.base_m;
+    float piece = (t1 - t0) / float(pieces);
+    for (int k = 0; k < COLUMN_ANVIL_PIECES; ++k) {
+      if (k >= pieces) break;
+      float u = (float(k) + 0.5) / float(pieces);
+      float h = alt + mix(t0, t1, u) * len - L.base_m;  // height above the base at the piece's midpoint
+      if (h > 0.0 && h < span) {
+        float anvil_factor;
+        float d = threshold_fraction(L, h / thickness, height_profile(L, h / span), coverage, q, mix(shape0, shape1, u),
+                                     anvil_factor);
+        sum += d * anvil_factor * piece;
+      }
+    }
+  } else {
+    float piece = (t1 - t0) / float(COLUMN_PIECES);
+    for (int k = 1; k <= COLUMN_PIECES; ++k) {
+      float u = float(k) / float(COLUMN_PIECES);
+      float h = alt + mix(t0, t1, u) * len - L.base_m;
+      float g1 = (mix(shape0, shape1, u) * height_profile(L, clamp(h / span, 0.0, 1.0)) - q) / COVERAGE_EDGE;
+      sum += saturate_mean(g0, g1) * piece;
+      g0 = g1;
+    }
+  }
+  return sum;
+}
+
 // The part of layer L's column from p (altitude alt) along the local vertical up (along it
 // the altitude is alt + s) over the signed length len (> 0 upwards), base shape only, in n
-// steps, as the mean cloud fraction times the length (m; marched_column_depths scales it to
-// an optical depth). q, span: the coverage threshold and the profile's height (m);
-// shape_p, g_p: the base shape at p and its g (read once for both parts). The nodes lie at
-// fractions clamp((j + offset - 1/2) / n, 0, 1) of the length, j = 0..n+1: offset 1/2 puts
-// them at the steps' ends; cloud_march.comp moves offset from frame to frame, so a still
-// camera's accumulated samples integrate the column as more steps would (n + 1 base-shape
-// reads then, n at offset 1/2).
+// steps (column_step), as the mean cloud fraction times the length (m;
+// marched_column_depths scales it to an optical depth). shape_p, g_p: the base shape at p
+// and its g (read once for both parts). The nodes lie at fractions clamp((j + offset - 1/2)
+// / n, 0, 1) of the length, j = 0..n+1: offset 1/2 puts them at the steps' ends;
+// cloud_march.comp moves offset from frame to frame, so a still camera's accumulated
+// samples integrate the column as more steps would (n + 1 base-shape reads then, n at
+// offset 1/2).
 float column_part(CloudLayerGpu L, vec3 p, float alt, vec3 up, float q, float coverage, float span, float shape_p, float g_p,
                   float len, int n, float offset) {
   if (n <= 0 || len == 0.0) return 0.0;
-  float thickness = L.top_m - L.base_m;
-  bool anvil = L.anvil.x > 0.0;
-  // pieces per step in an anvil layer: at least COLUMN_PIECES per ramp of the anvil's weight
-  // (anvil_weight: a fifth of its band), at most COLUMN_ANVIL_PIECES (CloudField::column_pieces)
-  int anvil_pieces = anvil ? clamp(int(ceil(float(COLUMN_PIECES) * abs(len) / float(n) /
-                                            max(0.2 * (L.anvil.z - L.anvil.y) * thickness, 1.0))),
-                                   COLUMN_PIECES, COLUMN_ANVIL_PIECES)
-                           : COLUMN_PIECES;
+  int pieces = column_step_pieces(L, len, n);
   float shape0 = shape_p, g0 = g_p;
-  float t0 = 0.0, sum = 0.0;  // sum: of the pieces' mean cloud fraction times their length fraction
+  float t0 = 0.0, sum = 0.0;
   for (int j = 1; j <= n + 1; ++j) {
     float t1 = clamp((float(j) + offset - 0.5) / float(n), 0.0, 1.0);
     if (t1 <= t0) break;
     g_density_evals += 1u;
     float shape1 = base_shape_at(L, field_point(L, p + up * (t1 * len), alt + t1 * len));
-    // The piece loops have constant bounds, so that the compiler can unroll them: llvmpipe
-    // cuts an invocation short after 65535 loop iterations in all, which counted pieces in
-    // every column of a long march would pass.
-    if (anvil) {
-      float piece = (t1 - t0) / float(anvil_pieces);
-      for (int k = 0; k < COLUMN_ANVIL_PIECES; ++k) {
-        if (k >= anvil_pieces) break;
-        float u = (float(k) + 0.5) / float(anvil_pieces);
-        float h = alt + mix(t0, t1, u) * len - L.base_m;  // height above the base at the piece's midpoint
-        if (h > 0.0 && h < span) {
-          float anvil_factor;
-          float d = threshold_fraction(L, h / thickness, height_profile(L, h / span), coverage, q, mix(shape0, shape1, u),
-                                       anvil_factor);
-          sum += d * anvil_factor * piece;
-        }
-      }
-    } else {
-      float piece = (t1 - t0) / float(COLUMN_PIECES);
-      for (int k = 1; k <= COLUMN_PIECES; ++k) {
-        float u = float(k) / float(COLUMN_PIECES);
-        float h = alt + mix(t0, t1, u) * len - L.base_m;
-        float g1 = (mix(shape0, shape1, u) * height_profile(L, clamp(h / span, 0.0, 1.0)) - q) / COVERAGE_EDGE;
-        sum += saturate_mean(g0, g1) * piece;
-        g0 = g1;
-      }
-    }
+    sum += column_step(L, alt, q, coverage, span, shape0, shape1, g0, t0, t1, len, pieces);
     shape0 = shape1;
     t0 = t1;
   }

@@ -13,8 +13,9 @@ struct RenderQuality {
   // The diffuse light's optical depths above and below each point from its own vertical
   // column (the independent column approximation, Cahalan et al. 1994): the column volume
   // (renderer/ground_shadow_map.h, shaders/column_volume.glsl), built with the ground shadow
-  // map by marching each of its columns from the layer's base to its top in this many
-  // steps (base shape). 0: the depths of a homogeneous layer of the map's coverage instead
+  // map by integrating each of its columns from the layer's base to its top (base shape,
+  // the quadrature of shaders/column_quadrature.glsl) in this many steps, at least one per
+  // altitude level of the volume. 0: the depths of a homogeneous layer of the map's coverage instead
   // (the layer's nominal extinction times the distances to its top and base).
   int column_steps = 0;
   // Where the column depths come from: the column volume (built with the ground shadow map,

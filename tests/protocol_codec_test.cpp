@@ -121,7 +121,7 @@ std::vector<Message> sample_messages() {
       bare,
       SetTime{1718000000.125},
       sample_layers(),
-      WeatherLayers{.layers = {}, .map_seed = 7},
+      WeatherLayers{.layers = {}, .map_seed = 7, .ground_albedo = std::nullopt, .visibility_m = std::nullopt},
       sample_tile(),
       RenderRequest{0xffff'ffff'ffff'fff0ull},
       sample_frame_ready(),

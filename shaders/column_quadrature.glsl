@@ -1,9 +1,9 @@
-// The diffuse light's column depths marched from a lit sample (RenderQuality::column_steps
-// > 0 without the column volume, column_volume.glsl): the optical depths (below, above) of
-// the sample's own vertical column through its layer, the independent column approximation
-// (Cahalan et al. 1994), as the reference's column_optical_depths takes them (the same
-// quadrature: CloudField::vertical_optical_depth, renderer/reference/cloud_field.h).
-// Needs cloud_density.glsl.
+// The diffuse light's column depths (RenderQuality::column_steps > 0): the optical depths
+// (below, above) of a point's own vertical column through its layer, the independent column
+// approximation (Cahalan et al. 1994), marched from a lit sample (without the column
+// volume) or integrated at the column volume's nodes (column_volume.comp), as the
+// reference's column_optical_depths takes them (the same quadrature:
+// CloudField::column_depths, renderer/reference/cloud_field.h). Needs cloud_density.glsl.
 //
 // The cloud fraction saturate((S P - q) / COVERAGE_EDGE) is nearly a step function of
 // height, so a midpoint rule with 8 steps errs by 10-35 % in the transmittance of a
@@ -36,8 +36,8 @@ int column_step_pieces(CloudLayerGpu L, float len, int n) {
 }
 
 // One step of a column (base shape only) from fraction t0 to t1 of its signed length len
-// from p (altitude alt) along the local vertical up: the base shape shape0 at t0 and shape1
-// at t1, taken linear between them; g0: (S P - q) / edge at t0, updated to its value at t1.
+// from altitude alt along the local vertical: the base shape shape0 at t0 and shape1 at t1,
+// taken linear between them; g0: (S P - q) / edge at t0, updated to its value at t1.
 // Returns the step's mean cloud fraction times (t1 - t0). q, span: the coverage threshold
 // and the profile's height (m); pieces: column_step_pieces.
 float column_step(CloudLayerGpu L, float alt, float q, float coverage, float span, float shape0, float shape1,

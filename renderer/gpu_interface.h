@@ -94,9 +94,10 @@ inline constexpr int kMaxLayers = weather::kMaxCloudLayers;
 
 // The column volume's grid (shaders/column_volume.glsl, renderer/ground_shadow_map.h; GLSL:
 // COLUMN_VOLUME_TEXELS, COLUMN_VOLUME_LEVELS): texels per side of the warped horizontal grid
-// and altitude intervals per layer (levels + 1 nodes from base to top).
+// and altitude intervals per layer (levels + 1 cosine-spaced nodes from base to top: 48
+// levels resolve a deck base's lowest metres, tests/render_column_depths_test.cpp).
 inline constexpr int kColumnVolumeTexels = 256;
-inline constexpr int kColumnVolumeLevels = 32;
+inline constexpr int kColumnVolumeLevels = 48;
 
 // GLSL text defining every name above and the model constants of
 // renderer/model/scene_constants.h and renderer/model/atmosphere_constants.h (the latter as

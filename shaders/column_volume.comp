@@ -4,7 +4,7 @@
 // texel's warped horizontal offset from its base to its top with the marched columns'
 // quadrature (column_quadrature.glsl: base shape only, read at the steps' ends and linear
 // between them, the coverage threshold's ramp integrated exactly), in ceil(column_steps /
-// COLUMN_VOLUME_LEVELS) steps per level between the altitude nodes, the column's weather map
+// COLUMN_VOLUME_LEVELS) steps per level between the (cosine-spaced) altitude nodes, the column's weather map
 // value read once (the line is vertical), and stores at every node the optical depth
 // accumulated below it and the rest of the column's above it.
 #include "common.glsl"
@@ -39,9 +39,11 @@ void main() {
     int m = max((frame.column_steps + COLUMN_VOLUME_LEVELS - 1) / COLUMN_VOLUME_LEVELS, 1);
 #ifdef CLOUDSVC_CUMULUS_DOMES
     if (L.dome != 0) {
-      float dz = H / float(COLUMN_VOLUME_LEVELS);
-      for (int k = 1; k < COLUMN_VOLUME_NODES; ++k)
-        below[k] = below[k - 1] + dome_column_part(li, foot + up * (float(k - 1) * dz), base + float(k - 1) * dz, up, w, dz, m, 0.5);
+      for (int k = 1; k < COLUMN_VOLUME_NODES; ++k) {
+        float z0 = H * column_node_fraction(float(k - 1) / float(COLUMN_VOLUME_LEVELS));
+        float z1 = H * column_node_fraction(float(k) / float(COLUMN_VOLUME_LEVELS));
+        below[k] = below[k - 1] + dome_column_part(li, foot + up * z0, base + z0, up, w, z1 - z0, m, 0.5);
+      }
     } else
 #endif
     {
@@ -54,7 +56,7 @@ void main() {
         float g0 = (shape0 * height_profile(L, 0.0) - q) / COVERAGE_EDGE;
         float fraction = 0.0, scale = extinction_scale(L, w) * H;
         for (int j = 1; j <= n; ++j) {
-          float t0 = float(j - 1) / float(n), t1 = float(j) / float(n);
+          float t0 = column_node_fraction(float(j - 1) / float(n)), t1 = column_node_fraction(float(j) / float(n));
           g_density_evals += 1u;
           float shape1 = base_shape_at(L, field_point(L, foot + up * (t1 * H), base + t1 * H));
           fraction += column_step(L, base, q, coverage, span, shape0, shape1, g0, t0, t1, H, pieces);

@@ -54,13 +54,14 @@ void main() {
         g_density_evals += 1u;
         float shape0 = base_shape_at(L, field_point(L, foot, base));
         float g0 = (shape0 * height_profile(L, 0.0) - q) / COVERAGE_EDGE;
-        float fraction = 0.0, scale = extinction_scale(L, w) * H;
+        float fraction = 0.0, scale = extinction_scale(L, w) * H, t0 = 0.0;
         for (int j = 1; j <= n; ++j) {
-          float t0 = column_node_fraction(float(j - 1) / float(n)), t1 = column_node_fraction(float(j) / float(n));
+          float t1 = column_node_fraction(float(j) / float(n));
           g_density_evals += 1u;
           float shape1 = base_shape_at(L, field_point(L, foot + up * (t1 * H), base + t1 * H));
           fraction += column_step(L, base, q, coverage, span, shape0, shape1, g0, t0, t1, H, pieces);
           shape0 = shape1;
+          t0 = t1;
           if (j % m == 0) below[j / m] = fraction * scale;
         }
       }

@@ -25,23 +25,45 @@ float saturate_mean(float a, float b) {
   return abs(d) > 1e-3 ? (saturate_integral(b) - saturate_integral(a)) / d : saturate(0.5 * (a + b));
 }
 
-// Pieces per step of an anvil layer's column of signed length len in n steps: at least
+// Pieces per step of length step_m (m, either sign) of an anvil layer's column: at least
 // COLUMN_PIECES per ramp of the anvil's weight (anvil_weight: a fifth of its band), at most
 // COLUMN_ANVIL_PIECES (CloudField::column_pieces); COLUMN_PIECES in other layers.
-int column_step_pieces(CloudLayerGpu L, float len, int n) {
+int column_step_pieces(CloudLayerGpu L, float step_m) {
   if (L.anvil.x <= 0.0) return COLUMN_PIECES;
-  float thickness = L.top_m - L.base_m;
-  return clamp(int(ceil(float(COLUMN_PIECES) * abs(len) / float(n) / max(0.2 * (L.anvil.z - L.anvil.y) * thickness, 1.0))),
-               COLUMN_PIECES, COLUMN_ANVIL_PIECES);
+  float ramp_m = 0.2 * (L.anvil.z - L.anvil.y) * (L.top_m - L.base_m);
+  return clamp(int(ceil(float(COLUMN_PIECES) * abs(step_m) / max(ramp_m, 1.0))), COLUMN_PIECES, COLUMN_ANVIL_PIECES);
+}
+
+// The coverage threshold of a column (one weather map value w: the column is vertical):
+// the local coverage (<= 0: no cloud in the column), its base-shape quantile q and the
+// height span (m) over which the layer's profile runs.
+struct ColumnThreshold {
+  float coverage;
+  float q;
+  float span;
+};
+
+ColumnThreshold column_threshold(CloudLayerGpu L, vec4 w) {
+  ColumnThreshold c;
+  c.coverage = local_coverage(L, w);
+  c.q = noise_quantile(1.0 - max(c.coverage, 0.0));
+  c.span = (L.top_m - L.base_m) * depth_fraction(L, w);
+  return c;
+}
+
+// g = (S P - q) / edge of base shape S at height h (m) above the layer's base: the cloud
+// fraction there is saturate(g).
+float column_g(CloudLayerGpu L, ColumnThreshold c, float shape, float h) {
+  return (shape * height_profile(L, clamp(h / c.span, 0.0, 1.0)) - c.q) / COVERAGE_EDGE;
 }
 
 // One step of a column (base shape only) from fraction t0 to t1 of its signed length len
 // from altitude alt along the local vertical: the base shape shape0 at t0 and shape1 at t1,
-// taken linear between them; g0: (S P - q) / edge at t0, updated to its value at t1.
-// Returns the step's mean cloud fraction times (t1 - t0). q, span: the coverage threshold
-// and the profile's height (m); pieces: column_step_pieces.
-float column_step(CloudLayerGpu L, float alt, float q, float coverage, float span, float shape0, float shape1,
-                  inout float g0, float t0, float t1, float len, int pieces) {
+// taken linear between them; g0: column_g at t0, updated to its value at t1. Returns the
+// step's mean cloud fraction times (t1 - t0). c: the column's threshold; pieces:
+// column_step_pieces of the step's length (t1 - t0) len.
+float column_step(CloudLayerGpu L, float alt, ColumnThreshold c, float shape0, float shape1, inout float g0, float t0,
+                  float t1, float len, int pieces) {
   float sum = 0.0;
   // The piece loops have constant bounds, so that the compiler can unroll them: llvmpipe
   // cuts an invocation short after 65535 loop iterations in all, which counted pieces in
@@ -53,10 +75,10 @@ float column_step(CloudLayerGpu L, float alt, float q, float coverage, float spa
       if (k >= pieces) break;
       float u = (float(k) + 0.5) / float(pieces);
       float h = alt + mix(t0, t1, u) * len - L.base_m;  // height above the base at the piece's midpoint
-      if (h > 0.0 && h < span) {
+      if (h > 0.0 && h < c.span) {
         float anvil_factor;
-        float d = threshold_fraction(L, h / thickness, height_profile(L, h / span), coverage, q, mix(shape0, shape1, u),
-                                     anvil_factor);
+        float d = threshold_fraction(L, h / thickness, height_profile(L, h / c.span), c.coverage, c.q,
+                                     mix(shape0, shape1, u), anvil_factor);
         sum += d * anvil_factor * piece;
       }
     }
@@ -65,7 +87,7 @@ float column_step(CloudLayerGpu L, float alt, float q, float coverage, float spa
     for (int k = 1; k <= COLUMN_PIECES; ++k) {
       float u = float(k) / float(COLUMN_PIECES);
       float h = alt + mix(t0, t1, u) * len - L.base_m;
-      float g1 = (mix(shape0, shape1, u) * height_profile(L, clamp(h / span, 0.0, 1.0)) - q) / COVERAGE_EDGE;
+      float g1 = column_g(L, c, mix(shape0, shape1, u), h);
       sum += saturate_mean(g0, g1) * piece;
       g0 = g1;
     }
@@ -76,16 +98,16 @@ float column_step(CloudLayerGpu L, float alt, float q, float coverage, float spa
 // The part of layer L's column from p (altitude alt) along the local vertical up (along it
 // the altitude is alt + s) over the signed length len (> 0 upwards), base shape only, in n
 // steps (column_step), as the mean cloud fraction times the length (m;
-// marched_column_depths scales it to an optical depth). shape_p, g_p: the base shape at p
-// and its g (read once for both parts). The nodes lie at fractions clamp((j + offset - 1/2)
+// marched_column_depths scales it to an optical depth). c: the column's threshold;
+// shape_p, g_p: the base shape at p and its column_g (read once for both parts). The nodes lie at fractions clamp((j + offset - 1/2)
 // / n, 0, 1) of the length, j = 0..n+1: offset 1/2 puts them at the steps' ends;
 // cloud_march.comp moves offset from frame to frame, so a still camera's accumulated
 // samples integrate the column as more steps would (n + 1 base-shape reads then, n at
 // offset 1/2).
-float column_part(CloudLayerGpu L, vec3 p, float alt, vec3 up, float q, float coverage, float span, float shape_p, float g_p,
-                  float len, int n, float offset) {
+float column_part(CloudLayerGpu L, vec3 p, float alt, vec3 up, ColumnThreshold c, float shape_p, float g_p, float len,
+                  int n, float offset) {
   if (n <= 0 || len == 0.0) return 0.0;
-  int pieces = column_step_pieces(L, len, n);
+  int pieces = column_step_pieces(L, len / float(n));
   float shape0 = shape_p, g0 = g_p;
   float t0 = 0.0, sum = 0.0;
   for (int j = 1; j <= n + 1; ++j) {
@@ -93,7 +115,7 @@ float column_part(CloudLayerGpu L, vec3 p, float alt, vec3 up, float q, float co
     if (t1 <= t0) break;
     g_density_evals += 1u;
     float shape1 = base_shape_at(L, field_point(L, p + up * (t1 * len), alt + t1 * len));
-    sum += column_step(L, alt, q, coverage, span, shape0, shape1, g0, t0, t1, len, pieces);
+    sum += column_step(L, alt, c, shape0, shape1, g0, t0, t1, len, pieces);
     shape0 = shape1;
     t0 = t1;
   }
@@ -121,8 +143,8 @@ float dome_column_part(int li, vec3 p, float alt, vec3 up, vec4 w, float len, in
 // n = 0 marches nothing (llvmpipe runs the caller's untaken branch with its lanes masked).
 vec2 marched_column_depths(int li, vec3 p, float alt, vec3 up, vec4 w, int n, float offset) {
   CloudLayerGpu L = frame.layers[li];
-  float span = (L.top_m - L.base_m) * depth_fraction(L, w);
-  float top = L.base_m + span;
+  ColumnThreshold c = column_threshold(L, w);
+  float top = L.base_m + c.span;
 #ifdef CLOUDSVC_CUMULUS_DOMES
   if (L.dome != 0) top = L.top_m;  // cauliflower tops rise above the profile's end
 #endif
@@ -135,12 +157,10 @@ vec2 marched_column_depths(int li, vec3 p, float alt, vec3 up, vec4 w, int n, fl
     return vec2(dome_column_part(li, p, alt, up, w, -len_below, n_below, offset),
                 dome_column_part(li, p, alt, up, w, len_above, n_above, offset));
 #endif
-  float coverage = local_coverage(L, w);
-  if (n <= 0 || coverage <= 0.0) return vec2(0.0);
-  float q = noise_quantile(1.0 - coverage);
+  if (n <= 0 || c.coverage <= 0.0) return vec2(0.0);
   g_density_evals += 1u;
   float shape_p = base_shape_at(L, field_point(L, p, alt));
-  float g_p = (shape_p * height_profile(L, clamp((alt - L.base_m) / span, 0.0, 1.0)) - q) / COVERAGE_EDGE;
-  return extinction_scale(L, w) * vec2(column_part(L, p, alt, up, q, coverage, span, shape_p, g_p, -len_below, n_below, offset),
-                                       column_part(L, p, alt, up, q, coverage, span, shape_p, g_p, len_above, n_above, offset));
+  float g_p = column_g(L, c, shape_p, alt - L.base_m);
+  return extinction_scale(L, w) * vec2(column_part(L, p, alt, up, c, shape_p, g_p, -len_below, n_below, offset),
+                                       column_part(L, p, alt, up, c, shape_p, g_p, len_above, n_above, offset));
 }

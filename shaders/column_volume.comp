@@ -47,19 +47,18 @@ void main() {
     } else
 #endif
     {
-      float coverage = local_coverage(L, w);
-      if (coverage > 0.0) {
-        float span = H * depth_fraction(L, w), q = noise_quantile(1.0 - coverage);
-        int n = m * COLUMN_VOLUME_LEVELS, pieces = column_step_pieces(L, H, n);
+      ColumnThreshold c = column_threshold(L, w);
+      if (c.coverage > 0.0) {
+        int n = m * COLUMN_VOLUME_LEVELS;
         g_density_evals += 1u;
         float shape0 = base_shape_at(L, field_point(L, foot, base));
-        float g0 = (shape0 * height_profile(L, 0.0) - q) / COVERAGE_EDGE;
+        float g0 = column_g(L, c, shape0, 0.0);
         float fraction = 0.0, scale = extinction_scale(L, w) * H, t0 = 0.0;
         for (int j = 1; j <= n; ++j) {
           float t1 = column_node_fraction(float(j) / float(n));
           g_density_evals += 1u;
           float shape1 = base_shape_at(L, field_point(L, foot + up * (t1 * H), base + t1 * H));
-          fraction += column_step(L, base, q, coverage, span, shape0, shape1, g0, t0, t1, H, pieces);
+          fraction += column_step(L, base, c, shape0, shape1, g0, t0, t1, H, column_step_pieces(L, (t1 - t0) * H));
           shape0 = shape1;
           t0 = t1;
           if (j % m == 0) below[j / m] = fraction * scale;

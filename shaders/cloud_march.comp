@@ -33,6 +33,15 @@ layout(rgba32f, binding = IMG_FRESH_RADIANCE_OUT) uniform writeonly image2D fres
 layout(rgba32f, binding = IMG_FRESH_DEPTH_OUT) uniform writeonly image2D fresh_depth;
 
 const float CLOUD_T_EPS = 1e-3;  // early exit below this cloud transmittance
+// With the column depths, a step of optical depth above SKIN_TAU (at its sample) seen
+// through a cloud transmittance above SKIN_T_MIN is read at SKIN_SUBSTEPS points and lit
+// once where its light comes from (march_ray). Against the reference's columns
+// (docs/ACCURACY.md, "Column depths"): 8 points gained at most 1.2 dB over 4, a threshold
+// of 0.25 nothing over 0.5; lighting steps behind T = 0.25 as before costs no accuracy
+// measured and saves 40 % of the sub-samples' evaluations.
+const int SKIN_SUBSTEPS = 4;
+const float SKIN_TAU = 0.5;
+const float SKIN_T_MIN = 0.25;
 // Primary steps per coverage-pyramid query (coverage_pyramid.glsl): a run this long whose
 // map footprint the pyramid clears is skipped without a density evaluation.
 const int PYRAMID_RUN = 8;
@@ -127,6 +136,9 @@ RaySample march_ray(ivec2 q, vec3 dir, float column_offset) {
   float total_len;
   int n_iv = ray_intervals(mu, t_start, t_clip_end, t_ref, iv, total_len);
   int long_step = max(1, int(frame.long_step_factor));
+  // the diffuse light from each point's own column (RenderQuality::column_steps): thick
+  // steps are sub-sampled (SKIN_SUBSTEPS)
+  bool columns = shadow.column_valid != 0 || shadow.column_march_steps > 0;
 
   vec3 C = vec3(0.0);  // in-scattered radiance from clouds
   float T = 1.0;       // cloud transmittance
@@ -225,6 +237,33 @@ RaySample march_ray(ivec2 q, vec3 dir, float column_offset) {
         float tb = march_distance(u0 + float(st + 1) * du, t_ref);
         ++st;
         float dt = tb - ta;
+        float absorbed = one_minus_exp_neg(sigma * dt);  // albedo 1: scattered fraction
+        if (columns && sigma * dt > SKIN_TAU && T > SKIN_T_MIN) {
+          // An optically thick step under the column depths: the light of a cloud's lit
+          // skin changes within metres of depth (the optical depth above a point starts at
+          // 0 at the cloud's top), and one sample at a random point of a step hundreds of
+          // metres long lands in it or misses it at random. So the step's extinction is
+          // read at SKIN_SUBSTEPS points (each at the step's jitter within its sub-step),
+          // which give the step's opacity, and the light is evaluated once, at the mean
+          // distance of the light the step scatters towards the camera (weights T_i a_i:
+          // exact for light varying linearly along the step).
+          float T_sub = 1.0, weight = 0.0, weighted_t = 0.0, sub = dt / float(SKIN_SUBSTEPS);
+          for (int i = 0; i < SKIN_SUBSTEPS; ++i) {
+            float ti = ta + (float(i) + jitter) * sub;
+            vec3 pi = ti * dir;
+            float ci;
+            float a = one_minus_exp_neg(cloud_extinction_in(li, pi, altitude_of(pi, R, h), detail_mode_at(ti, L), w, ci) * sub);
+            weight += T_sub * a;
+            weighted_t += T_sub * a * ti;
+            T_sub *= 1.0 - a;
+          }
+          if (weight > 0.0) {
+            absorbed = 1.0 - T_sub;
+            t = weighted_t / weight;
+            p = t * dir;
+            alt = altitude_of(p, R, h);
+          }
+        }
         vec3 up = up_at(p, R, h);
         float mu_s = dot(up, sun);
         vec3 T_atm = transmittance_to_space(alt, mu_s);
@@ -283,7 +322,6 @@ RaySample march_ray(ivec2 q, vec3 dir, float column_offset) {
                                : vertical_sun_slab(vec2(tau_below, tau_above), up, sun, -dir);
         vec3 L_diffuse = diffuse_inscatter(L, alt, tau_above, tau_below, sun_slab, mu_s, T_atm, coverage, E_sun, ground_sun,
                                            ground_sky, ground_albedo, -dot(dir, up), above);
-        float absorbed = one_minus_exp_neg(sigma * dt);  // albedo 1: scattered fraction
         C += T * absorbed * (L_sun + L_diffuse);
         depth_acc += t * T * absorbed;
         if (T * absorbed > strongest) { strongest = T * absorbed; cloud_layer = li; }

@@ -150,8 +150,11 @@ TEST(ColumnDepths, MarchedColumnsFollowTheReferenceWhereTheVolumesTexelsAreKilom
   EXPECT_EQ(gpu_marched.stats.nonfinite_pixels, 0);
   std::printf("from 30 km against the reference's columns: volume %.3f, marched %.3f; the two models differ by %.3f\n",
               volume_err, marched_err, models);
-  // Measured (2026-12-06): volume 0.210, marched 0.060, the models 0.263 apart.
+  // Measured (2026-12-07): volume 0.211, marched 0.040, the models 0.263 apart. Without
+  // the thick steps' sub-samples (SKIN_SUBSTEPS in shaders/cloud_march.comp) the marched
+  // columns were 0.060 off: one sample per primary step lit the clouds' tops at random depths.
   EXPECT_LT(marched_err, 0.5 * volume_err);
+  EXPECT_LT(marched_err, 0.05);
   EXPECT_GT(models, 2.5 * marched_err);
 }
 
@@ -227,8 +230,9 @@ TEST(ColumnDepths, TheTiltedSunSlabBrightensTheSunlitSidesOnBothRenderers) {
 }
 
 // The column volume is built with the ground shadow map and kept while the map is: a frame
-// that reuses it marches exactly the density evaluations of one without columns, and its
-// image stays close to that of a volume built at that moment.
+// that reuses it reads it without a density evaluation (its march evaluates only the thick
+// steps' sub-samples more than one without columns), and its image stays close to that of
+// a volume built at that moment.
 TEST(ColumnDepths, TheVolumeIsReusedBetweenRebuilds) {
   const weather::Weather w = *weather::preset("broken-cumulus");
   const ViewRequest v0 = make_view(47.45, 8.56, 1500.0, 250.0, 5.0, "2026-06-21T09:00:00Z", 64, 36);
@@ -260,13 +264,16 @@ TEST(ColumnDepths, TheVolumeIsReusedBetweenRebuilds) {
   EXPECT_EQ(a1.stats.nonfinite_pixels, 0);
   std::printf("evals/px: build frame %.2f, reuse frame %.2f, without columns %.2f\n", a0.stats.density_evals_per_pixel,
               a1.stats.density_evals_per_pixel, plain.stats.density_evals_per_pixel);
-  EXPECT_DOUBLE_EQ(a1.stats.density_evals_per_pixel, plain.stats.density_evals_per_pixel);
-  EXPECT_GT(a0.stats.density_evals_per_pixel, plain.stats.density_evals_per_pixel);
+  // Measured (2026-12-07): build frame 3637, reuse frame 17.9, without columns 13.2 (the
+  // sub-samples of thick steps, SKIN_SUBSTEPS in shaders/cloud_march.comp; reading the
+  // volume costs none).
+  EXPECT_LT(a1.stats.density_evals_per_pixel, 1.5 * plain.stats.density_evals_per_pixel);
+  EXPECT_GT(a0.stats.density_evals_per_pixel, 100.0 * a1.stats.density_evals_per_pixel);
   const double drifted_db = reference::compare_images(a1, fresh).psnr_db;
   const double columns_db = reference::compare_images(plain, fresh).psnr_db;
   std::printf("reused volume vs fresh %.2f dB; without columns vs fresh %.2f dB\n", drifted_db, columns_db);
   // Measured (2026-12-07, the volume built with the column quadrature at 49 cosine-spaced
-  // nodes): 46.9 dB against 10.7 dB, in a view from inside the cumulus layer where the nearest clouds are a few
+  // nodes, thick steps sub-sampled): 46.2 dB against 10.7 dB (46.9 before the sub-samples), in a view from inside the cumulus layer where the nearest clouds are a few
   // hundred metres away and the grid's texels 62 m: the 85 m the clouds drift in 10 s
   // resample the columns at their edges. (Built with one hashed sample per step, whose
   // noise the drift resampled too: 36.9 dB.)

@@ -99,8 +99,9 @@ float column_step(CloudLayerGpu L, float alt, ColumnThreshold c, float shape0, f
 // the altitude is alt + s) over the signed length len (> 0 upwards), base shape only, in n
 // steps (column_step), as the mean cloud fraction times the length (m;
 // marched_column_depths scales it to an optical depth). c: the column's threshold;
-// shape_p, g_p: the base shape at p and its column_g (read once for both parts). The nodes lie at fractions clamp((j + offset - 1/2)
-// / n, 0, 1) of the length, j = 0..n+1: offset 1/2 puts them at the steps' ends;
+// shape_p, g_p: the base shape at p and its column_g (read once for both parts). The nodes
+// lie at fractions clamp((j + offset - 1/2) / n, 0, 1) of the length, j = 0..n+1: offset
+// 1/2 puts them at the steps' ends;
 // cloud_march.comp moves offset from frame to frame, so a still camera's accumulated
 // samples integrate the column as more steps would (n + 1 base-shape reads then, n at
 // offset 1/2).

@@ -4,8 +4,8 @@
 // texel's warped horizontal offset from its base to its top with the marched columns'
 // quadrature (column_quadrature.glsl: base shape only, read at the steps' ends and linear
 // between them, the coverage threshold's ramp integrated exactly), in ceil(column_steps /
-// COLUMN_VOLUME_LEVELS) steps per level between the (cosine-spaced) altitude nodes, the column's weather map
-// value read once (the line is vertical), and stores at every node the optical depth
+// COLUMN_VOLUME_LEVELS) steps per level between the (cosine-spaced) altitude nodes, the
+// column's weather map value read once (the line is vertical), and stores at every node the optical depth
 // accumulated below it and the rest of the column's above it.
 #include "common.glsl"
 #include "frame_counters.glsl"
@@ -39,10 +39,11 @@ void main() {
     int m = max((frame.column_steps + COLUMN_VOLUME_LEVELS - 1) / COLUMN_VOLUME_LEVELS, 1);
 #ifdef CLOUDSVC_CUMULUS_DOMES
     if (L.dome != 0) {
+      float z0 = 0.0;
       for (int k = 1; k < COLUMN_VOLUME_NODES; ++k) {
-        float z0 = H * column_node_fraction(float(k - 1) / float(COLUMN_VOLUME_LEVELS));
         float z1 = H * column_node_fraction(float(k) / float(COLUMN_VOLUME_LEVELS));
         below[k] = below[k - 1] + dome_column_part(li, foot + up * z0, base + z0, up, w, z1 - z0, m, 0.5);
+        z0 = z1;
       }
     } else
 #endif

@@ -27,6 +27,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -190,6 +191,11 @@ inline bench::CachedImage adaptive_truth(const bench::BenchScene& s, const std::
   return t;
 }
 
+// Whether some row is of config `name`.
+inline bool has_config(const std::vector<Row>& rows, const std::string& name) {
+  return std::any_of(rows.begin(), rows.end(), [&](const Row& r) { return r.config == name; });
+}
+
 inline std::string num(const char* f, double v) {
   if (!std::isfinite(v)) return "-";
   char b[64];
@@ -202,16 +208,17 @@ inline int run(int argc, char** argv) {
   std::string scenes_text = "random:2026:32", size = "24x14", out = "bench-out-truth";
   int spp = 32, max_spp = 0, ref_samples = 3;
   std::uint64_t max_collisions = 50000;
-  int column_steps = 0;
+  int column_steps = -1;
   app.add_option("--scenes", scenes_text, "core or random:SEED:N");
   app.add_option("--column-steps", column_steps,
-                 "RenderQuality::column_steps of every preset, and the reference's column depths if > 0 "
-                 "(the diffuse light's depths from each point's own column); default 0, the presets' own")
+                 "RenderQuality::column_steps of every preset (the diffuse light's depths from each point's own "
+                 "column if > 0); default: each preset's own. Each preset is compared with the reference of its "
+                 "own light model (reference::same_light_model)")
       ->check(CLI::Range(0, 64));
   bool sun_slab_tilt = false;
   app.add_flag("--sun-slab-tilt", sun_slab_tilt,
                "every preset and the reference read the sun's diffuse source from the slab tilted towards the sun "
-               "(RenderQuality::sun_slab_tilt, ReferenceSettings::sun_slab_tilt); needs --column-steps");
+               "(RenderQuality::sun_slab_tilt, ReferenceSettings::sun_slab_tilt) where they draw column depths");
   bool column_march = false;
   app.add_flag("--column-march", column_march,
                "with --column-steps: every preset marches the column depths from each lit sample instead of "
@@ -228,15 +235,25 @@ inline int run(int argc, char** argv) {
                  "tentative collisions per truth path beyond which its pixel is left out (incomplete)")
       ->check(CLI::Range(static_cast<std::uint64_t>(1000), static_cast<std::uint64_t>(1) << 40));
   CLI11_PARSE(app, argc, argv);
+  // a preset as this run draws it
+  auto quality_of = [&](const std::string& name) {
+    RenderQuality q = *quality_preset(name);
+    if (column_steps >= 0) q.column_steps = column_steps;
+    if (column_march) q.column_volume = false;
+    if (sun_slab_tilt) q.sun_slab_tilt = true;
+    return q;
+  };
+  // the reference row of a light model: "reference" draws the homogeneous layer's depths
+  auto reference_name = [](bool columns) { return std::string(columns ? "reference, columns" : "reference"); };
   max_spp = std::max(max_spp, spp);
   int w = 0, h = 0;
   if (!bench::parse_frame_size(size, w, h)) {
     std::fprintf(stderr, "cloudbench --truth: --size expects WxH\n");
     return 2;
   }
-  if (sun_slab_tilt && column_steps <= 0) {
-    std::fprintf(stderr, "cloudbench --truth: --sun-slab-tilt needs --column-steps N > 0 (the tilt compares the sun's "
-                         "depth with each point's own column)\n");
+  if (sun_slab_tilt && column_steps == 0) {
+    std::fprintf(stderr, "cloudbench --truth: --sun-slab-tilt needs column depths (not --column-steps 0: the tilt compares "
+                         "the sun's depth with each point's own column)\n");
     return 2;
   }
   const auto set = bench::parse_scene_set(scenes_text);
@@ -260,26 +277,32 @@ inline int run(int argc, char** argv) {
   for (const bench::BenchScene& s : scenes) {
     int scene_spp = 0;
     const bench::CachedImage truth = adaptive_truth(s, dir / "truth", w, h, spp, max_spp, max_collisions, scene_spp);
-    const bench::CachedImage ref = bench::reference_image(s, dir / "ref", w, h, ref_samples, column_steps > 0, sun_slab_tilt);
+    // the reference of each light model the presets draw (at most two: with and without columns)
+    std::map<bool, bench::CachedImage> refs;
+    for (const std::string& name : configs) {
+      const reference::ReferenceSettings m = reference::same_light_model(quality_of(name));
+      if (refs.count(m.column_depths)) continue;
+      refs[m.column_depths] =
+          bench::reference_image(s, dir / "ref", w, h, ref_samples, m.column_depths, m.sun_slab_tilt);
+      ref_s += refs[m.column_depths].seconds;
+    }
     truth_s += truth.seconds;
-    ref_s += ref.seconds;
     truth_spp.push_back(scene_spp);
     const Mask valid = complete_pixels(truth);
     const int incomplete = static_cast<int>(std::count(valid.begin(), valid.end(), 0));
     incomplete_share.push_back(static_cast<double>(incomplete) / static_cast<double>(valid.size()));
     const TruthNoise noise = truth_noise(truth.img, valid);
     noises.push_back(noise);
-    std::printf("%-12s truth %s %.1f s (%d spp, %.0f evals/px, %d incomplete px), reference %s %.1f s; %s\n",
+    std::printf("%-12s truth %s %.1f s (%d spp, %.0f evals/px, %d incomplete px), references %.1f s; %s\n",
                 s.name.c_str(), truth.cached ? "cached" : "rendered", truth.seconds, scene_spp, truth.evals_px, incomplete,
-                ref.cached ? "cached" : "rendered", ref.seconds, describe(s).c_str());
+                ref_s, describe(s).c_str());
     std::fflush(stdout);
-    rows.push_back({s.name, "reference", ref.evals_px, errors_of(ref.img, truth.img, ref.img, valid)});
+    for (const auto& [columns, ref] : refs)
+      rows.push_back({s.name, reference_name(columns), ref.evals_px, errors_of(ref.img, truth.img, ref.img, valid)});
     renderer.set_weather(s.weather);
     for (const std::string& name : configs) {
-      RenderQuality q = *quality_preset(name);
-      if (column_steps > 0) q.column_steps = column_steps;
-      if (column_march) q.column_volume = false;
-      if (sun_slab_tilt) q.sun_slab_tilt = true;
+      const RenderQuality q = quality_of(name);
+      const bench::CachedImage& ref = refs.at(reference::same_light_model(q).column_depths);
       ViewRequest v = s.view;
       v.reset_history = true;
       FrameImage last;
@@ -294,7 +317,8 @@ inline int run(int argc, char** argv) {
       rows.push_back({s.name, name, evals / kStillFrames, errors_of(last, truth.img, ref.img, valid)});
     }
   }
-  configs.push_back("reference");
+  for (const bool columns : {false, true})
+    if (has_config(rows, reference_name(columns))) configs.push_back(reference_name(columns));
   const double total_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
 
   std::ofstream csv(dir / "report.csv");
@@ -318,7 +342,7 @@ inline int run(int argc, char** argv) {
   std::ostringstream md;
   md << "# cloudbench --truth report\n\nCommand: `cloudbench --truth --scenes " << scenes_text << " --size " << size
      << " --spp " << spp << " --max-spp " << max_spp << " --ref-samples " << ref_samples << " --max-collisions "
-     << max_collisions << (column_steps > 0 ? " --column-steps " + std::to_string(column_steps) : std::string())
+     << max_collisions << (column_steps >= 0 ? " --column-steps " + std::to_string(column_steps) : std::string())
      << (column_march ? " --column-march" : "") << (sun_slab_tilt ? " --sun-slab-tilt" : "") << "`  \n"
      << scenes.size() << " scenes at " << w << "x" << h << "; truth " << spp << " paths per pixel, more (up to "
      << max_spp << ") where a scene's first batch is too noisy (per scene below) ("
@@ -344,7 +368,7 @@ inline int run(int argc, char** argv) {
         tr.push_back(r->e.truth_cloud_rel);
         tp.push_back(r->e.truth_psnr);
       }
-      if (c != "reference") {
+      if (c.rfind("reference", 0) != 0) {
         rr.push_back(r->e.ref_cloud_rel);
         rp.push_back(r->e.ref_psnr);
       }
@@ -355,15 +379,17 @@ inline int run(int argc, char** argv) {
        << num("%.3f", bench::percentile(rr, 90)) << " | " << num("%.2f", bench::finite_mean(rp)) << " | "
        << num("%.2f", bench::percentile(rp, 10)) << " |\n";
   }
-  md << "\n## Per scene (cloud relative error)\n\n| scene | truth spp | incomplete px | truth noise | naive vs truth | default vs truth | reference vs truth | "
-        "default vs reference | naive vs reference |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  // the per-scene table compares the default with the reference of its own model
+  const std::string default_ref = reference_name(reference::same_light_model(quality_of("default")).column_depths);
+  md << "\n## Per scene (cloud relative error)\n\n| scene | truth spp | incomplete px | truth noise | naive vs truth | default vs truth | "
+     << default_ref << " vs truth | default vs reference | naive vs reference |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (size_t i = 0; i < scenes.size(); ++i) {
     auto find = [&](const std::string& c) -> const Row* {
       for (const Row* r : by_config[c])
         if (r->scene == scenes[i].name) return r;
       return nullptr;
     };
-    const Row *n = find("naive"), *d = find("default"), *r = find("reference");
+    const Row *n = find("naive"), *d = find("default"), *r = find(default_ref);
     md << "| " << scenes[i].name << " | " << truth_spp[i] << " | " << num("%.1f %%", 100.0 * incomplete_share[i]) << " | "
        << num("%.3f", noises[i].cloud_rel_se) << " | "
        << num("%.3f", n->e.truth_cloud_rel) << " | " << num("%.3f", d->e.truth_cloud_rel) << " | "

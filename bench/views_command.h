@@ -30,8 +30,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bench/bench_util.h"
@@ -130,20 +132,29 @@ inline int run(int argc, char** argv) {
     last.unix_time_s += frame_dt * (frames - 1);
     last.frame_index = static_cast<std::uint32_t>(frames - 1);
     const WindAnchor anchor{first.position, first.unix_time_s};
-    reference::ReferenceSettings settings;
-    settings.pixel_samples = ref_samples;
-    char key[256];  // the cache file names everything the reference depends on
-    std::snprintf(key, sizeof key, "view_%s_%g_%g_%g_%g_%g_%s_%dx%d_ss%d_dt%gx%d", uv.preset, uv.lat_deg, uv.lon_deg,
-                  uv.alt_m, uv.heading_deg, uv.pitch_deg, uv.time_utc, w, h, ref_samples, frame_dt, frames);
-    const bench::CachedImage ref = bench::cached_render(dir / "ref" / (file_slug(key) + ".exr"), key, w, h, [&] {
-      bench::CachedImage c;
-      c.img = reference::render_reference(last, weather, settings, &anchor);
-      return c;
-    });
-    std::printf("%s: reference %s %.1f s, cloud %.1f %%\n", uv.name, ref.cached ? "(cached)" : "rendered", ref.seconds,
-                100.0 * reference::cloud_pixel_fraction(ref.img));
-    std::fflush(stdout);
+    // the reference of each light model the configurations draw (reference::same_light_model)
+    std::map<std::pair<bool, bool>, bench::CachedImage> refs;
+    auto reference_of = [&](const RenderQuality& q) -> const bench::CachedImage& {
+      reference::ReferenceSettings settings = reference::same_light_model(q);
+      settings.pixel_samples = ref_samples;
+      const std::pair<bool, bool> model{settings.column_depths, settings.sun_slab_tilt};
+      if (const auto it = refs.find(model); it != refs.end()) return it->second;
+      char key[320];  // the cache file names everything the reference depends on
+      std::snprintf(key, sizeof key, "view_%s_%g_%g_%g_%g_%g_%s_%dx%d_ss%d_dt%gx%d%s%s", uv.preset, uv.lat_deg,
+                    uv.lon_deg, uv.alt_m, uv.heading_deg, uv.pitch_deg, uv.time_utc, w, h, ref_samples, frame_dt, frames,
+                    model.first ? "_columns" : "", model.second ? "_tilt" : "");
+      bench::CachedImage ref = bench::cached_render(dir / "ref" / (file_slug(key) + ".exr"), key, w, h, [&] {
+        bench::CachedImage c;
+        c.img = reference::render_reference(last, weather, settings, &anchor);
+        return c;
+      });
+      std::printf("%s: reference%s %s %.1f s, cloud %.1f %%\n", uv.name, model.first ? " (column depths)" : "",
+                  ref.cached ? "(cached)" : "rendered", ref.seconds, 100.0 * reference::cloud_pixel_fraction(ref.img));
+      std::fflush(stdout);
+      return refs.emplace(model, std::move(ref)).first->second;
+    };
     for (const Config& c : configs) {
+      const bench::CachedImage& ref = reference_of(c.q);
       renderer.set_weather(weather);  // a new history and wind anchor: the first frame's
       ViewRequest v = first;
       v.reset_history = true;

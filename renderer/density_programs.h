@@ -25,10 +25,11 @@ namespace cloudsvc {
 // Whether the marches of quality q, with up to kDomeLevels loop iterations added to every
 // density evaluation, stay well inside the 65535 loop iterations llvmpipe allows one
 // shader invocation (FrameStats::loop_capped_invocations): the primary steps times the
-// evaluations each makes (itself and its light steps) times the iterations per
-// evaluation, with a factor 4 for the long-step probes, re-marched spans and the
-// per-layer minimum of steps. True for every preset; false for marches of a few
-// thousand light samples per ray (the accuracy tests' fine march).
+// evaluations each makes (itself, its light steps and its marched column's steps) times
+// the iterations per evaluation, with a factor 4 for the long-step probes, re-marched
+// spans and the per-layer minimum of steps. True for every preset but ultra (192 primary
+// steps of 12 light and 8 column steps each); false for marches of a few thousand light
+// samples per ray (the accuracy tests' fine march).
 bool density_loops_fit(const RenderQuality& q);
 
 class DensityPrograms {

@@ -93,7 +93,7 @@ int run_render(const RenderOptions& opt) {
     reference::ReferenceSettings settings;
     settings.cumulus_domes = opt.cumulus_domes;
     settings.noise_tiling = opt.noise_tiling;
-    settings.column_depths = opt.column_steps > 0;
+    settings.column_depths = opt.column_steps.value_or(0) > 0;
     settings.cloud_phase = opt.cloud_phase;
     for (int f = 0; f < opt.frames; ++f) {
       view.frame_index = static_cast<std::uint32_t>(f);
@@ -102,8 +102,10 @@ int run_render(const RenderOptions& opt) {
     }
   } else {
     RenderQuality quality = *quality_preset(opt.quality);  // validated by the parser
-    quality.column_steps = opt.column_steps;
-    quality.column_volume = !opt.column_march;
+    if (opt.column_steps) {
+      quality.column_steps = *opt.column_steps;
+      quality.column_volume = !opt.column_march;
+    }
     gl::EglContext context;
     CloudRenderer renderer(renderer_config(opt));
     set_render_weather(renderer, opt);

@@ -204,7 +204,8 @@ void add_quality_flags(CLI::App& cmd, RenderArgs& args, const RenderOptions& def
                  "column approximation, docs/RENDERING.md), from a column volume marched in N steps from each "
                  "layer's base to its top, instead of a homogeneous layer's; 0-64, GPU presets except naive, "
                  "and --window; any N > 0 makes --quality reference march the columns finely; not valid with "
-                 "truth; default 0 (off)")
+                 "truth; default: the preset's own (8 marched in high and ultra, 0 = off in the others and in "
+                 "--quality reference, which then draws the default preset's light model)")
       ->type_name("N");
   cmd.add_flag("--column-march", args.column_march,
                "With --column-steps N: march each lit sample's own column in N steps, as the reference does, "
@@ -323,7 +324,7 @@ void apply_quality(const RenderArgs& a, RenderOptions& opt) {
     opt.column_steps = parse_integer("--column-steps", a.column_steps, 0, 64, "steps");
   }
   if (a.column_march) {
-    if (opt.column_steps == 0)
+    if (opt.column_steps.value_or(0) == 0)
       fail("--column-march", "given", "needs --column-steps N > 0 (the steps of each marched column)");
     opt.column_march = true;
   }

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -47,9 +48,10 @@ struct RenderOptions {
   bool cumulus_domes = false;                    // --cumulus-domes: cumulus layers as individual
                                                  // domes (RendererConfig::cumulus_domes; GPU
                                                  // presets and reference, not truth)
-  int column_steps = 0;                          // --column-steps N: RenderQuality::column_steps of a
-                                                 // GPU preset and the window; the reference's
-                                                 // column_depths if N > 0
+  std::optional<int> column_steps;               // --column-steps N: RenderQuality::column_steps of a
+                                                 // GPU preset and the window (absent: the preset's
+                                                 // own); the reference's column_depths if N > 0
+                                                 // (absent: off, the default preset's model)
   bool column_march = false;                     // --column-march: with --column-steps N, march
                                                  // each lit sample's column instead of the
                                                  // column volume (RenderQuality::column_volume off)

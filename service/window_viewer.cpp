@@ -84,8 +84,10 @@ int run_window(const RenderOptions& opt) {
   CloudRenderer renderer(renderer_config(opt));
   set_render_weather(renderer, opt);
   RenderQuality quality;  // every frame marched in full (the view changes by keystrokes)
-  quality.column_steps = opt.column_steps;
-  quality.column_volume = !opt.column_march;
+  if (opt.column_steps) {
+    quality.column_steps = *opt.column_steps;
+    quality.column_volume = !opt.column_march;
+  }
   int frames = 0;
   std::printf("window: arrows turn/pitch, W/S move, PgUp/PgDn altitude, T/G time +-10 min, shift x10, Esc quits\n");
   while (!window.close_requested()) {

@@ -112,7 +112,8 @@ TEST_F(CliOptionsTest, RenderDefaults) {
   EXPECT_FALSE(o.noise_tiling);
   EXPECT_TRUE(render_with({"--noise-tiling"}).noise_tiling);
   EXPECT_TRUE(render_with({"--noise-tiling", "--quality", "truth"}).noise_tiling);  // every quality
-  EXPECT_EQ(o.column_steps, 0);
+  EXPECT_FALSE(o.column_steps) << "absent: each preset's own column steps";
+  EXPECT_EQ(render_with({"--column-steps", "0"}).column_steps, 0);  // given: overrides the preset's
   EXPECT_EQ(render_with({"--column-steps", "3"}).column_steps, 3);
   EXPECT_EQ(render_with({"--column-steps", "4", "--quality", "reference"}).column_steps, 4);
   for (const char* bad : {"-1", "65", "3.5", "x", ""}) expect_rejected({"render", "--column-steps", bad}, "--column-steps");

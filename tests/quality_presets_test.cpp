@@ -5,6 +5,7 @@
 
 #include "renderer/density_programs.h"
 #include "renderer/quality_presets.h"
+#include "renderer/reference/reference_renderer.h"
 
 namespace cloudsvc {
 namespace {
@@ -65,19 +66,39 @@ TEST(QualityPresets, FrontPresetsGrowInCostAndUnknownNamesAreRejected) {
   EXPECT_EQ(quality_preset_names().back(), "default");
 }
 
-// Every preset's marches leave llvmpipe's loop budget for the dome sub-grid's loop (the
+// Every preset's marches but ultra's leave llvmpipe's loop budget for the dome sub-grid's loop (the
 // faster variant); a march of tens of thousands of light samples per ray, like the accuracy
 // tests' fine march, gets the written-out variant instead of running into the cap.
-TEST(QualityPresets, EveryPresetFitsTheDensityLoopsAndTheFineMarchDoesNot) {
+TEST(QualityPresets, EveryPresetButUltraFitsTheDensityLoopsAndTheFineMarchDoesNot) {
   for (const std::string& name : quality_preset_names()) {
     const auto q = quality_preset(name);
     if (!q) continue;  // CPU-only names
-    EXPECT_TRUE(density_loops_fit(*q)) << name;
+    EXPECT_EQ(density_loops_fit(*q), name != "ultra") << name;
   }
+  // ultra's own columns, marched from each lit sample, are what take it over the budget
+  RenderQuality ultra_volume = *quality_preset("ultra");
+  ultra_volume.column_volume = true;
+  EXPECT_TRUE(density_loops_fit(ultra_volume));
   RenderQuality fine;
   fine.primary_steps = 1024;
   fine.light_steps = 32;
   EXPECT_FALSE(density_loops_fit(fine));
+}
+
+// high and ultra light each sample with the depths of its own column, marched in 8 steps
+// (the column volume's texels blur cumulus columns: docs/ACCURACY.md section 0); the
+// cheaper presets keep the homogeneous layer's depths, and each is compared with the
+// reference of its own light model.
+TEST(QualityPresets, HighAndUltraMarchEachSamplesOwnColumn) {
+  for (const std::string& name : quality_preset_names()) {
+    const auto q = quality_preset(name);
+    if (!q) continue;
+    const bool columns = name == "high" || name == "ultra";
+    EXPECT_EQ(q->column_steps, columns ? 8 : 0) << name;
+    if (columns) EXPECT_FALSE(q->column_volume) << name;
+    EXPECT_FALSE(q->sun_slab_tilt) << name;
+    EXPECT_EQ(reference::same_light_model(*q).column_depths, columns) << name;
+  }
 }
 
 }  // namespace

@@ -101,6 +101,7 @@ TEST(ColumnDepths, TheVolumeDrawsADecksBaseAsTheMarchedColumnsDo) {
   r.set_weather(w);
   RenderQuality volume = *quality_preset("ultra");
   volume.column_steps = 32;
+  volume.column_volume = true;  // ultra's own columns are marched
   RenderQuality marched = volume;
   marched.column_volume = false;
   ViewRequest fresh = v;

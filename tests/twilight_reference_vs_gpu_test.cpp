@@ -1,7 +1,8 @@
 // GPU renderer against the CPU reference with the sun below the horizon (twilight).
 // Random scenes r2026-4 (sun -7.1 deg) and r2026-27 (-7.7 deg, over an overcast deck) of
 // tests/fixtures/random_scenes.h at 32x18: the ultra preset, one frame without jitter or
-// temporal reuse, against reference::render_reference at the pixel centres. In twilight
+// temporal reuse, against reference::render_reference at the pixel centres with ultra's
+// light model (each point's own column depths, reference::same_light_model). In twilight
 // the sky and the clouds are lit only by light the atmosphere scatters (the sun is behind
 // the planet for every point in view), through the multiple-scattering Psi_ms and the sky-
 // irradiance E_sky tables, which fall by orders of magnitude over a few degrees of sun
@@ -69,7 +70,7 @@ TEST_P(TwilightVsReference, GpuMeanRadianceMatchesTheReference) {
   ViewRequest gv = v;
   gv.reset_history = true;
   const FrameImage gpu = render_weather(s.weather, gv, q);
-  reference::ReferenceSettings settings;
+  reference::ReferenceSettings settings = reference::same_light_model(q);  // ultra's own column depths
   settings.pixel_samples = 1;
   const FrameImage ref = reference::render_reference(v, s.weather, settings);
   ASSERT_EQ(gpu.stats.nonfinite_pixels, 0);

@@ -87,6 +87,17 @@ struct ReferenceSettings {
   int threads = 0;
 };
 
+// `base` with the light model a GPU quality draws: the diffuse light's depths from each
+// point's own column where the quality's are (RenderQuality::column_steps > 0: high and
+// ultra, renderer/quality_presets.cpp), the sun's slab tilted where the quality's is. A GPU
+// image is compared with the reference of its own model; against the path-traced truth
+// (docs/ACCURACY.md section 0) the models differ.
+inline ReferenceSettings same_light_model(const RenderQuality& q, ReferenceSettings base = {}) {
+  base.column_depths = q.column_steps > 0;
+  base.sun_slab_tilt = base.column_depths && q.sun_slab_tilt;
+  return base;
+}
+
 // The solar irradiance, the sun's angular radius and the night-sky radiance of the model
 // (renderer/model/scene_constants.h, shared with the shaders).
 using model::kNightSkyRadiance;

@@ -123,6 +123,10 @@ inline std::string reference_key(const BenchScene& s, int ref_samples) {
                   t.profile.top_ramp, t.profile.top_weight, t.profile.base_erosion, t.noise_scale_m, t.noise_vertical_scale,
                   t.stratiform ? 1 : 0, t.anvil.spread, t.anvil.base, t.anvil.top, t.anvil.density_ratio);
     key += b;
+    if (t.strand_ratio != 1.0) {  // (absent for the types without strands: their earlier keys stay valid)
+      std::snprintf(b, sizeof b, " strands %.9g", t.strand_ratio);
+      key += b;
+    }
   }
   return key;
 }

@@ -2,6 +2,7 @@
 
 #include "renderer/model/atmosphere_constants.h"
 #include "renderer/model/scene_constants.h"
+#include "weather/noise_shaping.h"
 
 #include <algorithm>
 #include <cmath>
@@ -62,7 +63,9 @@ FrameContext make_frame_context(const ViewRequest& view, const weather::Weather&
     lf.field_rotation = wind_rotation(lf.layer.wind, anchor, view.unix_time_s);
     // Noise space: world positions with altitude scaled by k along the ellipsoid normal,
     // a fixed map of the world (no camera dependence); here the camera's point of it.
-    lf.camera_field_m = lf.field_rotation * (c.camera_ecef + (tr.noise_vertical_scale - 1.0) * pos.alt_m * cam_normal);
+    lf.noise_shaping = weather::noise_shaping(tr);
+    lf.camera_field_m =
+        lf.noise_shaping * (lf.field_rotation * (c.camera_ecef + (tr.noise_vertical_scale - 1.0) * pos.alt_m * cam_normal));
   }
   // The aerial-perspective volume starts as the symmetric frustum around the camera's
   // (plan_view_dependent widens or keeps it).

@@ -26,8 +26,12 @@ struct LayerFrame {
   weather::CloudLayer layer;                   // as set (base, top, coverage, type, ...)
   // Rotation taking an ECEF position to the wind-rotated cloud field (wind_rotation).
   glm::dmat3 field_rotation{1.0};
-  // The camera's position in the layer's noise space: the field-rotated ECEF position with
-  // altitude stretched by the type's noise vertical scale k, f(X) = X + (k - 1) a(X) n(X).
+  // The shape noise's east-west strands, S of weather/noise_shaping.h (field frame;
+  // the identity but for cirrus).
+  glm::dmat3 noise_shaping{1.0};
+  // The camera's position in the layer's noise space: S times the field-rotated ECEF
+  // position with altitude stretched by the type's noise vertical scale k,
+  // f(X) = X + (k - 1) a(X) n(X).
   glm::dvec3 camera_field_m{0.0};
   double base_period_m = 1.0;    // period of the base-shape noise (m)
   double detail_period_m = 1.0;  // ... of the detail noise (base / 8)

@@ -31,7 +31,7 @@ struct CloudLayerGpu {
   alignas(16) glm::vec3 detail_noise_offset;  // ... in detail-noise periods, wrapped
   int dome;                                    // 1: individual cumulus domes (cumulus_domes.glsl, slot = layer)
   alignas(16) glm::vec4 anvil;  // weather::Anvil: spread (0: none), base, top, density_ratio
-  glm::mat4 noise_rotation;  // upper 3x3: local ENU -> ECEF axes of the wind-rotated field
+  glm::mat4 noise_rotation;  // upper 3x3: local ENU -> noise space (weather/noise_shaping.h S times the wind-rotated ECEF axes)
   // optical depths scale by this onto the diffuse source table's droplets
   // (model::ms_similarity_scale of the layer's phase function)
   float ms_similarity;

@@ -142,7 +142,7 @@ FrameUniforms pack_frame_uniforms(const FrameContext& c, const RenderQuality& qu
     g.detail_noise_offset = wrapped_offset(lf.camera_field_m, lf.detail_period_m);
     g.dome = lf.domes ? 1 : 0;
     g.anvil = glm::vec4(tr.anvil.spread, tr.anvil.base, tr.anvil.top, tr.anvil.density_ratio);
-    g.noise_rotation = glm::mat4(glm::mat3(lf.field_rotation * c.enu_to_ecef));
+    g.noise_rotation = glm::mat4(glm::mat3(lf.noise_shaping * lf.field_rotation * c.enu_to_ecef));
     g.ms_similarity = static_cast<float>(model::ms_similarity_scale(ph));
     g.coverage_channel = l.coverage_channel;
     // the layer's full nominal optical depth tau_c of diffuse_inscatter (cloud_lighting.glsl)

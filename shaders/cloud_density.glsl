@@ -235,7 +235,8 @@ float threshold_fraction(CloudLayerGpu L, float f, float profile, float coverage
 // Cloud fraction of dome layer li (weather/cumulus_domes.h) at local point p, h m above its
 // base, with local coverage c, ceiling (m above the base) and the base-shape noise value
 // `shape` there: the dome fraction under the layer's top with cauliflower tops from the
-// shape noise. The placement's field point is unstretched: q = camera_q + W E p.
+// shape noise. The placement's field point is unstretched: q = camera_q + W E p
+// (noise_rotation is S W E, and S = I for cumulus: weather/noise_shaping.h).
 float dome_cloud_fraction(int li, CloudLayerGpu L, vec3 p, float h, float c, float ceiling, float shape) {
   if (h >= ceiling + dome_layers[li].shape.y) return 0.0;
   vec3 q = dome_layers[li].camera_q.xyz + mat3(L.noise_rotation) * p;

@@ -88,6 +88,30 @@ TEST(TruthBandWalker, RayStartingOnAnEdgeEntersTheBandItHeadsInto) {
   EXPECT_EQ(grounded.distance(), 0.0);
 }
 
+// Cirrus strands (weather/noise_shaping.h) read the noise six times finer across the wind:
+// the local majorants bound the sheared field (no density above its majorant), seen from
+// below through the cirrus at 9-10 km under a wind of (30, 8) m/s.
+TEST(TruthRenderer, MajorantsBoundTheCirrusStrands) {
+  const ViewRequest v = test::make_view(47.45, 8.0, 500.0, 75.0, 70.0, "2026-06-21T10:00:00Z", 6, 4, 40.0);
+  weather::Weather w;
+  weather::CloudLayer l;
+  l.type = weather::CloudType::Cirrus;
+  l.base_m = 9000.0;
+  l.top_m = 10000.0;
+  l.coverage = 0.7;
+  l.density_scale = 0.05;  // a hundred times the default: many collisions inside the strands
+  l.wind = {30.0, 8.0};
+  w.layers.push_back(l);
+  w.map_seed = 7;
+  TruthSettings ts;
+  ts.spp = 8;
+  const TruthImage t = render_truth(v, w, ts);
+  EXPECT_EQ(t.counters.majorant_violations, 0u);
+  EXPECT_EQ(t.counters.lost_paths, 0u);
+  EXPECT_EQ(t.image.stats.nonfinite_pixels, 0);
+  EXPECT_GT(t.image.stats.cloud_pixels, 0) << "the view shows the cirrus";
+}
+
 // Seen from 2000 m, the altitude of a band edge, straight down onto an overcast stratus
 // deck: every pixel of the truth is opaque cloud, as in the model reference, and no
 // density the paths meet exceeds its majorant.

@@ -60,6 +60,11 @@ CloudTypeTraits make_traits(HeightProfile profile, double base_m, double top_m,
   return t;
 }
 
+CloudTypeTraits with_strands(CloudTypeTraits t, double strand_ratio) {
+  t.strand_ratio = strand_ratio;
+  return t;
+}
+
 // Indexed by the CIGI number (CloudType value).
 const std::array<CloudTypeTraits, 11>& traits_table() {
   static const std::array<CloudTypeTraits, 11> table = {
@@ -83,8 +88,10 @@ const std::array<CloudTypeTraits, 11>& traits_table() {
       make_traits({0.2f, 0.3f, 0.0f, 0.3f}, 8000, 9500, 50, 0.0005, 50000, true),
       // Cirrus: high (9-10 km) fibrous ice wisps. Droplet phase function for now,
       // d = 50 um, IWC ~0.01 g/m^3 -> 0.0005 (sigma_t ~ 6e-4 /m: optical depth ~0.6
-      // through 1 km at full density). Heavy erosion for wispy edges.
-      make_traits({0.2f, 0.4f, 0.0f, 0.9f}, 9000, 10000, 50, 0.0005, 40000, true),
+      // through 1 km at full density). Heavy erosion for wispy edges. Strands east-west
+      // (fibratus: filaments tens of km long, ~1 km wide, WMO International Cloud Atlas,
+      // along the upper-level westerlies): the shape noise 6x finer along the Earth's axis.
+      with_strands(make_traits({0.2f, 0.4f, 0.0f, 0.9f}, 9000, 10000, 50, 0.0005, 40000, true), 6.0),
       // Cumulonimbus: convective tower from a low base (~1 km) to the tropopause
       // (~12 km); large droplets (d ~30 um) and high LWC (~1.5 g/m^3) -> 1.5 / 4.24 = 0.35
       // (sigma_t 0.15 /m). Sharp base, short top ramp under the flat top. Dense from base

@@ -109,6 +109,9 @@ struct CloudTypeTraits {
   // Vertical frequency of the shape noise relative to the horizontal one: 1 = isotropic,
   // < 1 stretches features upwards (convective towers), > 1 flattens them (sheets).
   double noise_vertical_scale = 1.0;
+  // How much finer the shape noise is along the Earth's axis (weather/noise_shaping.h):
+  // 1 = isotropic; > 1 draws strands that run east-west (cirrus fibratus).
+  double strand_ratio = 1.0;
   bool stratiform = false;
   Anvil anvil;  // spread 0 except cumulonimbus
 };

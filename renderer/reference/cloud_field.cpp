@@ -130,7 +130,7 @@ double CloudField::detail_shape(const ReferenceLayer& L, const glm::dvec3& field
 glm::dvec3 CloudField::field_point(const ReferenceLayer& L, const glm::dvec3& p, double alt) const {
   const glm::dvec3 stretched =
       L.noise_vertical_scale == 1.0 ? p : p + (L.noise_vertical_scale - 1.0) * alt * scene_.shell.up_at(p);
-  return L.camera_field + L.field_from_local * stretched;
+  return L.noise_shaping * (L.camera_field + L.field_from_local * stretched);
 }
 
 double CloudField::depth_fraction(const ReferenceLayer& L, const glm::dvec4& w) const {

@@ -2,6 +2,7 @@
 #include "renderer/reference/reference_scene.h"
 
 #include "weather/cumulus_domes.h"
+#include "weather/noise_shaping.h"
 
 #include <algorithm>
 #include <cmath>
@@ -115,6 +116,7 @@ ReferenceScene make_reference_scene(const ViewRequest& view, const weather::Weat
     const glm::dmat3 rot = field_rotation(l.wind, a, view.unix_time_s);
     r.field_from_local = rot * s.shell.enu_to_ecef;
     r.camera_field = rot * s.shell.camera_ecef;
+    r.noise_shaping = weather::noise_shaping(tr);
     s.layers.push_back(r);
   }
   return s;

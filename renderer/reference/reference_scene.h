@@ -88,6 +88,9 @@ struct ReferenceLayer {
   // i.e. R * (X + (k - 1) a n) for the ECEF point X: divide by a period for texture coordinates.
   glm::dmat3 field_from_local{1.0};   // field rotation * enu_to_ecef
   glm::dvec3 camera_field{0.0};       // field rotation * camera ECEF, m
+  // The shape noise is read at noise_shaping * field point (weather/noise_shaping.h:
+  // east-west strands; the identity but for cirrus).
+  glm::dmat3 noise_shaping{1.0};
 };
 
 struct ReferenceScene {

@@ -167,15 +167,21 @@ double SceneLocalMajorant::cloud_bound(int band, const glm::dvec3& a, const glm:
     if (map_max.x < 0.0) map_max = map_maxima(a, b);
     const double c_max = weather::local_coverage(L.coverage, map_max.x);
     if (c_max <= 0.0) continue;
-    // Noise-space box of the stretch (m), then texture units.
+    // Noise-space box of the stretch (m), then texture units: CloudField::field_point of its
+    // ends (linear but for the vertical stretch, whose deviation `widen` bounds in the field
+    // frame and the strands' S, weather/noise_shaping.h, scales by at most its row sums).
     glm::dvec3 f[2];
     const glm::dvec3 ends[2] = {a, b};
     for (int k = 0; k < 2; ++k) {
       const double r = glm::length(ends[k]);
       const glm::dvec3 p = ends[k] - to_local;
-      f[k] = L.camera_field + L.field_from_local * (p + (L.noise_vertical_scale - 1.0) * (r - R) * (ends[k] / r));
+      f[k] = L.noise_shaping *
+             (L.camera_field + L.field_from_local * (p + (L.noise_vertical_scale - 1.0) * (r - R) * (ends[k] / r)));
     }
-    const double widen = std::abs(L.noise_vertical_scale - 1.0) * (band_height + band_top * length / R + 1.0);
+    const double widen_field = std::abs(L.noise_vertical_scale - 1.0) * (band_height + band_top * length / R + 1.0);
+    glm::dvec3 widen(0.0);
+    for (int i = 0; i < 3; ++i)  // row i of S (glm is column-major)
+      widen[i] = widen_field * (std::abs(L.noise_shaping[0][i]) + std::abs(L.noise_shaping[1][i]) + std::abs(L.noise_shaping[2][i]));
     const glm::dvec3 lo = (glm::min(f[0], f[1]) - widen) / L.base_period_m;
     const glm::dvec3 hi = (glm::max(f[0], f[1]) + widen) / L.base_period_m;
     const double noise = noise_tiling_ ? weather::tiled_max_over(base_, lo, hi,
@@ -213,8 +219,13 @@ TruthWorld make_scene_world(const reference::ReferenceScene& scene, const refere
   if (local) {
     w.local = local;
     w.local_stretch_m = 1e9;
-    for (const reference::ReferenceLayer& L : scene.layers)  // four base-noise texels of the finest layer
-      w.local_stretch_m = std::min(w.local_stretch_m, 4.0 * L.base_period_m / std::max(1, inputs.base_noise.size));
+    for (const reference::ReferenceLayer& L : scene.layers) {  // four base-noise texels of the finest layer
+      // (in metres along the direction the strands' S makes finest: its largest column norm)
+      double stretch = 1.0;
+      for (int j = 0; j < 3; ++j) stretch = std::max(stretch, glm::length(L.noise_shaping[j]));
+      w.local_stretch_m =
+          std::min(w.local_stretch_m, 4.0 * L.base_period_m / stretch / std::max(1, inputs.base_noise.size));
+    }
   }
 
   w.sun = scene.sun_local;

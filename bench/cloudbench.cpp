@@ -55,6 +55,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bench/bench_scenes.h"
@@ -605,18 +606,21 @@ int main(int argc, char** argv) {
   for (const bench::BenchScene& s : scenes) {
     scene_names.push_back(s.name);
     const auto t_scene = std::chrono::steady_clock::now();
-    // one reference per light model the configurations draw (columns or not), the default's first
-    std::map<bool, Reference> models;
+    // one reference per light model the configurations draw (column depths, tilted sun slab),
+    // the default's first
+    std::map<std::pair<bool, bool>, Reference> models;
     auto model_ref = [&](const RenderQuality& q) -> const Reference& {
-      const bool columns = reference::same_light_model(q).column_depths;
-      auto it = models.find(columns);
+      const reference::ReferenceSettings m = reference::same_light_model(q);
+      const std::pair<bool, bool> model{m.column_depths, m.sun_slab_tilt};
+      auto it = models.find(model);
       if (it != models.end()) return it->second;
       Reference ref = reference_for(s, o, q);
-      std::printf("%-32s reference%s %s %.1f s, %.0f evals/px\n", s.name.c_str(), columns ? " (column depths)" : "",
-                  ref.cached ? "(cached)" : "rendered", ref.seconds, ref.evals_px);
+      std::printf("%-32s reference%s%s %s %.1f s, %.0f evals/px\n", s.name.c_str(), model.first ? " (column depths)" : "",
+                  model.second ? " (tilted sun slab)" : "", ref.cached ? "(cached)" : "rendered", ref.seconds,
+                  ref.evals_px);
       std::fflush(stdout);
       if (!ref.cached) ref_seconds += ref.seconds;
-      return models.emplace(columns, std::move(ref)).first->second;
+      return models.emplace(model, std::move(ref)).first->second;
     };
     const Reference& ref = model_ref(RenderQuality{});
     renderer.set_weather(s.weather);
@@ -650,7 +654,7 @@ int main(int argc, char** argv) {
      << num("%.1f", total_s) << " s, of which reference renders " << num("%.1f", ref_seconds)
      << " s (0 = all cached in " << (o.out / "ref").string() << ").\n\n"
      << "Error on linear radiance of the last of " << kStillFrames
-     <<  " frames of the still view (temporal configurations have converged by then; the others march every "
+     << " frames of the still view (temporal configurations have converged by then; the others march every "
         "frame in full) vs the CPU reference of the configuration's own light model (reference::same_light_model: "
         "labels with \"columns\" or \"colvol\" against the reference of each point's own column depths, the others "
         "against the homogeneous layer's), renderer/reference/image_metrics.h (PSNR peak = the reference's "

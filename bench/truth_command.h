@@ -279,13 +279,15 @@ inline int run(int argc, char** argv) {
     const bench::CachedImage truth = adaptive_truth(s, dir / "truth", w, h, spp, max_spp, max_collisions, scene_spp);
     // the reference of each light model the presets draw (at most two: with and without columns)
     std::map<bool, bench::CachedImage> refs;
+    double scene_ref_s = 0;
     for (const std::string& name : configs) {
       const reference::ReferenceSettings m = reference::same_light_model(quality_of(name));
       if (refs.count(m.column_depths)) continue;
       refs[m.column_depths] =
           bench::reference_image(s, dir / "ref", w, h, ref_samples, m.column_depths, m.sun_slab_tilt);
-      ref_s += refs[m.column_depths].seconds;
+      scene_ref_s += refs[m.column_depths].seconds;
     }
+    ref_s += scene_ref_s;
     truth_s += truth.seconds;
     truth_spp.push_back(scene_spp);
     const Mask valid = complete_pixels(truth);
@@ -295,7 +297,7 @@ inline int run(int argc, char** argv) {
     noises.push_back(noise);
     std::printf("%-12s truth %s %.1f s (%d spp, %.0f evals/px, %d incomplete px), references %.1f s; %s\n",
                 s.name.c_str(), truth.cached ? "cached" : "rendered", truth.seconds, scene_spp, truth.evals_px, incomplete,
-                ref_s, describe(s).c_str());
+                scene_ref_s, describe(s).c_str());
     std::fflush(stdout);
     for (const auto& [columns, ref] : refs)
       rows.push_back({s.name, reference_name(columns), ref.evals_px, errors_of(ref.img, truth.img, ref.img, valid)});

@@ -82,6 +82,15 @@ inline std::string file_slug(const std::string& s) {
   return o;
 }
 
+// "_strandsR" for each layer whose type draws strands (weather/noise_shaping.h), for the
+// reference cache's key.
+inline std::string strands_suffix(const weather::Weather& w) {
+  std::string s;
+  for (const weather::CloudLayer& l : w.layers)
+    if (const double r = weather::cloud_type_traits(l.type).strand_ratio; r != 1.0) s += "_strands" + std::to_string(r);
+  return s;
+}
+
 inline int run(int argc, char** argv) {
   CLI::App app{"Presets on views beyond the benchmark scenes, against the CPU reference (cloudbench --views)"};
   std::string size = "96x54", presets_text = "naive,default", out = "bench-out";
@@ -140,9 +149,10 @@ inline int run(int argc, char** argv) {
       const std::pair<bool, bool> model{settings.column_depths, settings.sun_slab_tilt};
       if (const auto it = refs.find(model); it != refs.end()) return it->second;
       char key[320];  // the cache file names everything the reference depends on
-      std::snprintf(key, sizeof key, "view_%s_%g_%g_%g_%g_%g_%s_%dx%d_ss%d_dt%gx%d%s%s", uv.preset, uv.lat_deg,
+      std::snprintf(key, sizeof key, "view_%s_%g_%g_%g_%g_%g_%s_%dx%d_ss%d_dt%gx%d_lm%d%s%s%s", uv.preset, uv.lat_deg,
                     uv.lon_deg, uv.alt_m, uv.heading_deg, uv.pitch_deg, uv.time_utc, w, h, ref_samples, frame_dt, frames,
-                    model.first ? "_columns" : "", model.second ? "_tilt" : "");
+                    reference::kLightModelRevision, model.first ? "_columns" : "", model.second ? "_tilt" : "",
+                    strands_suffix(weather).c_str());
       bench::CachedImage ref = bench::cached_render(dir / "ref" / (file_slug(key) + ".exr"), key, w, h, [&] {
         bench::CachedImage c;
         c.img = reference::render_reference(last, weather, settings, &anchor);

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "renderer/coverage_cull.h"
+#include "renderer/density_programs.h"
 #include "renderer/frame_uniforms_packing.h"
 #include "renderer/layers_in_view.h"
 #include "weather/weather_map.h"
@@ -230,15 +231,14 @@ FrameImage CloudRenderer::render(const ViewRequest& view, const RenderQuality& q
   // no ray sees the ground and none that reads the map or a volume is marched.
   // The diffuse light's column depths: from the column volume, or marched per lit sample
   // where there is no map to build it with or the quality asks for that.
-  const bool column_volume = quality.column_volume && quality.ground_shadow_map;
-  const int volume_column_steps = column_volume ? quality.column_steps : 0;
-  const int marched_column_steps = column_volume ? 0 : quality.column_steps;
+  const int marched_columns = marched_column_steps(quality);
+  const int volume_column_steps = quality.column_steps - marched_columns;
   const bool volumes_read = quality.light_volume || volume_column_steps > 0;
   const bool shadow_needed =
       rays.sees_ground || rays.meets_a_layer_under_another || (volumes_read && rays.meets_a_layer);
   const bool shadow_rebuilt =
       shadow_map_.update(frame, inputs, weather_generation_, quality.light_steps, !quality.ground_shadow_map,
-                         quality.light_volume, volume_column_steps, marched_column_steps, shadow_needed);
+                         quality.light_volume, volume_column_steps, marched_columns, shadow_needed);
   timer_.end();
   const TemporalPlan plan = march_and_resolve(frame, quality, rays.meets_a_layer, inputs, channel.cloud_buffer);  // 4., 5.
   timer_.begin(kCompositePass);  // 6.

@@ -9,9 +9,8 @@ namespace cloudsvc {
 bool density_loops_fit(const RenderQuality& q) {
   constexpr double kLoopIterationBudget = 65535.0;  // llvmpipe, per invocation (gallivm)
   constexpr double kMarchOverhead = 4.0;
-  // a lit sample's own column, where marched, is column_steps base-shape evaluations more
-  const double column = q.column_steps > 0 && (!q.column_volume || !q.ground_shadow_map) ? q.column_steps : 0.0;
-  const double evals = static_cast<double>(q.primary_steps) * (1.0 + q.light_steps + column);
+  // a lit sample's own column, where marched, is that many base-shape evaluations more
+  const double evals = static_cast<double>(q.primary_steps) * (1.0 + q.light_steps + marched_column_steps(q));
   return kMarchOverhead * evals * (1.0 + weather::kDomeLevels) <= kLoopIterationBudget;
 }
 

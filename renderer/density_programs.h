@@ -32,6 +32,13 @@ namespace cloudsvc {
 // samples per ray (the accuracy tests' fine march).
 bool density_loops_fit(const RenderQuality& q);
 
+// The column steps quality q marches from each lit sample (RenderQuality::column_steps
+// where the columns do not come from the column volume: without it, or without the ground
+// shadow map it is built with), 0 where the volume holds them or there are none.
+inline int marched_column_steps(const RenderQuality& q) {
+  return q.column_volume && q.ground_shadow_map ? 0 : q.column_steps;
+}
+
 class DensityPrograms {
  public:
   // file: the compute shader; defines: those of every variant.

@@ -95,7 +95,9 @@ TEST(QualityPresets, HighAndUltraMarchEachSamplesOwnColumn) {
     if (!q) continue;
     const bool columns = name == "high" || name == "ultra";
     EXPECT_EQ(q->column_steps, columns ? 8 : 0) << name;
-    if (columns) EXPECT_FALSE(q->column_volume) << name;
+    if (columns) {
+      EXPECT_FALSE(q->column_volume) << name;
+    }
     EXPECT_FALSE(q->sun_slab_tilt) << name;
     EXPECT_EQ(reference::same_light_model(*q).column_depths, columns) << name;
   }

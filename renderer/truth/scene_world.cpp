@@ -180,8 +180,9 @@ double SceneLocalMajorant::cloud_bound(int band, const glm::dvec3& a, const glm:
     }
     const double widen_field = std::abs(L.noise_vertical_scale - 1.0) * (band_height + band_top * length / R + 1.0);
     glm::dvec3 widen(0.0);
+    const glm::dmat3& S = L.noise_shaping;
     for (int i = 0; i < 3; ++i)  // row i of S (glm is column-major)
-      widen[i] = widen_field * (std::abs(L.noise_shaping[0][i]) + std::abs(L.noise_shaping[1][i]) + std::abs(L.noise_shaping[2][i]));
+      widen[i] = widen_field * (std::abs(S[0][i]) + std::abs(S[1][i]) + std::abs(S[2][i]));
     const glm::dvec3 lo = (glm::min(f[0], f[1]) - widen) / L.base_period_m;
     const glm::dvec3 hi = (glm::max(f[0], f[1]) + widen) / L.base_period_m;
     const double noise = noise_tiling_ ? weather::tiled_max_over(base_, lo, hi,

@@ -127,6 +127,10 @@ inline std::string reference_key(const BenchScene& s, int ref_samples) {
       std::snprintf(b, sizeof b, " strands %.9g", t.strand_ratio);
       key += b;
     }
+    if (t.base_relief != 0.0) {  // (absent for the types with a flat base: their earlier keys stay valid)
+      std::snprintf(b, sizeof b, " relief %.9g", t.base_relief);
+      key += b;
+    }
   }
   return key;
 }

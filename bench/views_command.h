@@ -82,12 +82,16 @@ inline std::string file_slug(const std::string& s) {
   return o;
 }
 
-// "_strandsR" for each layer whose type draws strands (weather/noise_shaping.h), for the
+// "_strandsR" for each layer whose type draws strands (weather/noise_shaping.h) and
+// "_reliefR" for each whose base is textured (CloudTypeTraits::base_relief), for the
 // reference cache's key.
-inline std::string strands_suffix(const weather::Weather& w) {
+inline std::string shape_traits_suffix(const weather::Weather& w) {
   std::string s;
-  for (const weather::CloudLayer& l : w.layers)
-    if (const double r = weather::cloud_type_traits(l.type).strand_ratio; r != 1.0) s += "_strands" + std::to_string(r);
+  for (const weather::CloudLayer& l : w.layers) {
+    const weather::CloudTypeTraits& t = weather::cloud_type_traits(l.type);
+    if (t.strand_ratio != 1.0) s += "_strands" + std::to_string(t.strand_ratio);
+    if (t.base_relief != 0.0) s += "_relief" + std::to_string(t.base_relief);
+  }
   return s;
 }
 
@@ -152,7 +156,7 @@ inline int run(int argc, char** argv) {
       std::snprintf(key, sizeof key, "view_%s_%g_%g_%g_%g_%g_%s_%dx%d_ss%d_dt%gx%d_lm%d%s%s%s", uv.preset, uv.lat_deg,
                     uv.lon_deg, uv.alt_m, uv.heading_deg, uv.pitch_deg, uv.time_utc, w, h, ref_samples, frame_dt, frames,
                     reference::kLightModelRevision, model.first ? "_columns" : "", model.second ? "_tilt" : "",
-                    strands_suffix(weather).c_str());
+                    shape_traits_suffix(weather).c_str());
       bench::CachedImage ref = bench::cached_render(dir / "ref" / (file_slug(key) + ".exr"), key, w, h, [&] {
         bench::CachedImage c;
         c.img = reference::render_reference(last, weather, settings, &anchor);

@@ -36,7 +36,8 @@ struct CloudLayerGpu {
   // (model::ms_similarity_scale of the layer's phase function)
   float ms_similarity;
   int coverage_channel = -1;  // weather::CloudLayer::coverage_channel: -1 R-modulated, 0-3 a layer-coverage channel
-  float pad1 = 0.0f, pad2 = 0.0f;  // std140 aligns the next member to a vec4
+  float base_relief = 0.0f;  // weather::CloudTypeTraits::base_relief (fraction of the layer's depth)
+  float pad2 = 0.0f;         // std140 aligns the next member to a vec4
   // the noises' stochastic tiling (weather/noise_tiling.h, noise_tiling.glsl): floor(camera's
   // field position / period) per axis, and the four lattices' hash seeds
   alignas(16) glm::ivec3 base_noise_cell;

@@ -139,6 +139,7 @@ FrameUniforms pack_frame_uniforms(const FrameContext& c, const RenderQuality& qu
       g.detail_tiling_seeds[k] = weather::tiling_lattice_seed(detail_seed, k);
     }
     g.stratiform = tr.stratiform ? 1 : 0;
+    g.base_relief = static_cast<float>(tr.base_relief);
     g.detail_noise_offset = wrapped_offset(lf.camera_field_m, lf.detail_period_m);
     g.dome = lf.domes ? 1 : 0;
     g.anvil = glm::vec4(tr.anvil.spread, tr.anvil.base, tr.anvil.top, tr.anvil.density_ratio);
@@ -146,7 +147,9 @@ FrameUniforms pack_frame_uniforms(const FrameContext& c, const RenderQuality& qu
     g.ms_similarity = static_cast<float>(model::ms_similarity_scale(ph));
     g.coverage_channel = l.coverage_channel;
     // the layer's full nominal optical depth tau_c of diffuse_inscatter (cloud_lighting.glsl)
-    const double tau_cloud = static_cast<double>(g.extinction_max) * g.density_scale * (g.top_m - g.base_m);
+    // (over the depth below the base raised by a textured base's mean lift: nominal_base_m)
+    const double tau_cloud = static_cast<double>(g.extinction_max) * g.density_scale * (g.top_m - g.base_m) *
+                             (1.0 - tr.base_relief * weather::kBaseLiftMean);
     static_assert(model::kSlabFluxMuNodes == 11, "ground_transmittance holds 11 beam values and the diffuse one");
     for (int j = 0; j < model::kSlabFluxMuNodes; ++j)
       g.ground_transmittance[j / 4][j % 4] =

@@ -10,6 +10,7 @@
 #include "renderer/model/ms_source_table.h"
 #include "renderer/model/scene_constants.h"
 #include "renderer/model/slab_flux_table.h"
+#include "weather/cloud_layer.h"
 
 namespace cloudsvc::gpu {
 
@@ -61,6 +62,7 @@ std::string make_preamble() {
   s << "const float LIGHT_MARCH_REACH_M = " << glsl_float(m::kLightMarchReach_m) << ";\n";
   s << "#define COLUMN_PIECES " << m::kColumnPiecesPerStep << '\n';
   s << "#define COLUMN_ANVIL_PIECES " << m::kColumnAnvilPiecesMax << '\n';
+  s << "const float BASE_LIFT_MEAN = " << glsl_float(weather::kBaseLiftMean) << ";\n";
   // the Mie phase table's angle grid (renderer/model/mie_phase_table.h)
   s << "#define PHASE_TABLE_SAMPLES " << m::kPhaseTableSamples << '\n';
   s << "#define PHASE_TABLE_FORWARD_INTERVALS " << m::kPhaseTableForwardIntervals << '\n';

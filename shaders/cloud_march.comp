@@ -33,6 +33,12 @@ layout(rgba32f, binding = IMG_FRESH_RADIANCE_OUT) uniform writeonly image2D fres
 layout(rgba32f, binding = IMG_FRESH_DEPTH_OUT) uniform writeonly image2D fresh_depth;
 
 const float CLOUD_T_EPS = 1e-3;  // early exit below this cloud transmittance
+// ... but rays that may see the sun's disk march on to this one: the disk is ~1e5 times as
+// bright as a lit cloud (2.8e4 against ~0.2 W m^-2 sr^-1 nm^-1) and shows through a cloud
+// until its optical depth passes ~12, where the sky and ground behind are lost at 7
+// (composite.comp adds the disk times T always). At 1e-8 what is left of the disk is 1 % of a
+// dim cloud's radiance.
+const float SUN_T_EPS = 1e-8;
 // With the column depths, a step of optical depth above SKIN_TAU (at its sample) seen
 // through a cloud transmittance above SKIN_T_MIN is read at SKIN_SUBSTEPS points and lit
 // once where its light comes from (march_ray). Against the reference's columns
@@ -116,6 +122,10 @@ RaySample march_ray(ivec2 q, vec3 dir, float column_offset) {
   vec3 E_sun = SOLAR_IRRADIANCE;
   float mu = dir.z;
   float cos_view_sun = dot(dir, sun);
+  // the early exit's transmittance: lower for rays within 4 cloud pixels of the sun's disk
+  // (a pixel's angle at the image centre, the largest, times the cloud buffer's divisor)
+  float pixel_rad = 2.0 * frame.tan_half_fov_x / frame.image_size_px.x * float(temporal.cloud_divisor);
+  float t_eps = cos_view_sun > cos(acos(SUN_COS_ANGULAR_RADIUS) + 4.0 * pixel_rad) ? SUN_T_EPS : CLOUD_T_EPS;
 
   vec2 g = intersect_shell(R, h, ground_alt, mu);
   bool hits_ground = g.x >= 0.0;
@@ -156,7 +166,7 @@ RaySample march_ray(ivec2 q, vec3 dir, float column_offset) {
   if (n_iv > 0) {
     float jitter = hash12(uvec2(q) + uvec2(frame.frame_index * 7919, frame.frame_index * 104729));
     float nominal_du = total_len / float(frame.primary_steps);
-    for (int k = 0; k < n_iv && T > CLOUD_T_EPS; ++k) {
+    for (int k = 0; k < n_iv && T > t_eps; ++k) {
       int li = iv[k].layer;
       CloudLayerGpu L = frame.layers[li];
       // light marches stop where the sun's peak beam towards the camera is spent
@@ -187,7 +197,7 @@ RaySample march_ray(ivec2 q, vec3 dir, float column_offset) {
       // covered by a query
       bool pyramid = frame.coverage_pyramid != 0 && local_coverage(L, vec4(0.0)) <= 0.0;
       int next_query = 0;
-      for (int guard = 0; st < steps && T > CLOUD_T_EPS && guard < 3 * steps + 4; ++guard) {
+      for (int guard = 0; st < steps && T > t_eps && guard < 3 * steps + 4; ++guard) {
         if (pyramid && st >= next_query) {
           // the samples of steps st .. st + PYRAMID_RUN - 1 lie between these distances
           next_query = min(st + PYRAMID_RUN, steps);
@@ -313,7 +323,7 @@ RaySample march_ray(ivec2 q, vec3 dir, float column_offset) {
         } else {
           float sigma_nominal = L.extinction_max * L.density_scale * coverage;
           tau_above = sigma_nominal * max(L.top_m - alt, 0.0);
-          tau_below = sigma_nominal * max(alt - L.base_m, 0.0);
+          tau_below = sigma_nominal * max(alt - nominal_base_m(L), 0.0);
         }
         // the sun's slab: tilted towards the sun (RenderQuality::sun_slab_tilt) or the
         // column's horizontal one; the scattered light travels along -dir

@@ -51,10 +51,17 @@ ColumnThreshold column_threshold(CloudLayerGpu L, vec4 w) {
   return c;
 }
 
+// The height profile P at height h (m) above layer L's base, over the base-shape field's
+// lifted base (a textured base's mean lift: base_lift at the detail noise's mean).
+float column_profile(CloudLayerGpu L, ColumnThreshold c, float h) {
+  float f = h / (L.top_m - L.base_m);
+  return height_profile(L, clamp(h / c.span, 0.0, 1.0)) * base_lift_factor(L, f, base_lift(L, frame.detail_noise_mean));
+}
+
 // g = (S P - q) / edge of base shape S at height h (m) above the layer's base: the cloud
 // fraction there is saturate(g).
 float column_g(CloudLayerGpu L, ColumnThreshold c, float shape, float h) {
-  return (shape * height_profile(L, clamp(h / c.span, 0.0, 1.0)) - c.q) / COVERAGE_EDGE;
+  return (shape * column_profile(L, c, h) - c.q) / COVERAGE_EDGE;
 }
 
 // One step of a column (base shape only) from fraction t0 to t1 of its signed length len
@@ -77,7 +84,7 @@ float column_step(CloudLayerGpu L, float alt, ColumnThreshold c, float shape0, f
       float h = alt + mix(t0, t1, u) * len - L.base_m;  // height above the base at the piece's midpoint
       if (h > 0.0 && h < c.span) {
         float anvil_factor;
-        float d = threshold_fraction(L, h / thickness, height_profile(L, h / c.span), c.coverage, c.q,
+        float d = threshold_fraction(L, h / thickness, column_profile(L, c, h), c.coverage, c.q,
                                      mix(shape0, shape1, u), anvil_factor);
         sum += d * anvil_factor * piece;
       }

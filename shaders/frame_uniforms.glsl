@@ -17,6 +17,7 @@ struct CloudLayerGpu {
   mat4 noise_rotation;
   float ms_similarity;  // model::ms_similarity_scale: optical depths onto the source table's droplets
   int coverage_channel;  // weather::CloudLayer::coverage_channel: -1 R-modulated, 0-3 a layer-coverage channel
+  float base_relief;  // weather::CloudTypeTraits::base_relief: the base rises by up to this fraction of the depth
   // the noises' stochastic tiling (noise_tiling.glsl): floor(camera's field position /
   // period) and the four lattices' hash seeds (weather::tiling_lattice_seed)
   ivec3 base_noise_cell;

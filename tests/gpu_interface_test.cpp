@@ -91,6 +91,7 @@ Offsets expected_frame_uniforms() {
       MEMBER(CloudLayerGpu, base_noise_offset), MEMBER(CloudLayerGpu, stratiform),
       MEMBER(CloudLayerGpu, detail_noise_offset), MEMBER(CloudLayerGpu, dome),
       MEMBER(CloudLayerGpu, anvil), MEMBER(CloudLayerGpu, noise_rotation), MEMBER(CloudLayerGpu, ms_similarity), MEMBER(CloudLayerGpu, coverage_channel),
+      MEMBER(CloudLayerGpu, base_relief),
       MEMBER(CloudLayerGpu, base_noise_cell), MEMBER(CloudLayerGpu, detail_noise_cell),
       MEMBER(CloudLayerGpu, base_tiling_seeds), MEMBER(CloudLayerGpu, detail_tiling_seeds),
       ARRAY_MEMBER(CloudLayerGpu, ground_transmittance)};

@@ -56,17 +56,7 @@ TEST(CirrusStrands, TheGpuDrawsEastWestStrandsAsTheReferenceDoes) {
   weather::Weather w = single_layer(weather::CloudType::Cirrus, 9000.0, 10000.0, 0.6, 7);
   w.layers[0].wind = {30.0, 8.0};
   const ViewRequest v = make_view(47.45, 8.0, 500.0, 90.0, 90.0, "2026-06-21T10:00:00Z", 96, 96, 60.0);
-  CloudRenderer& r = shared_renderer();
-  r.set_weather(w);
-  RenderQuality q = *quality_preset("default");
-  q.temporal_reuse = false;
-  q.footprint_jitter = false;
-  ViewRequest fresh = v;
-  fresh.reset_history = true;
-  const FrameImage gpu = r.render(fresh, q);
-  const FrameImage ref = reference::render_reference(v, w, reference::same_light_model(q));
-  maybe_save("cirrus_strands_gpu", gpu);
-  maybe_save("cirrus_strands_ref", ref);
+  const auto [gpu, ref] = render_frame_and_reference(w, v, "cirrus_strands");
   EXPECT_EQ(gpu.stats.nonfinite_pixels, 0);
   const reference::Field og = reference::opacity_field(gpu), orf = reference::opacity_field(ref);
   // looking straight up heading east, the image's columns run east-west

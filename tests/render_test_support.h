@@ -14,6 +14,8 @@
 #include "renderer/cloud_renderer.h"
 #include "renderer/gl/egl_context.h"
 #include "renderer/image_output.h"
+#include "renderer/quality_presets.h"
+#include "renderer/reference/reference_renderer.h"
 #include "tests/make_view.h"
 #include "weather/presets.h"
 
@@ -32,6 +34,27 @@ inline CloudRenderer& shared_renderer() {
 inline void maybe_save(std::string name, const FrameImage& img) {
   for (char& c : name) if (c == '/') c = '_';  // parameterised test names
   if (const char* dir = std::getenv("CLOUDSVC_TEST_IMAGES")) write_image(std::string(dir) + "/" + name + ".png", img);
+}
+
+// One frame of the default preset under weather w, marched in full through the pixel
+// centres (no history, no footprint jitter), and the CPU reference of the same light model:
+// the pair the tests of a field's shape compare. Saved as <name>_gpu and <name>_ref.
+struct GpuAndReference {
+  FrameImage gpu, ref;
+};
+inline GpuAndReference render_frame_and_reference(const weather::Weather& w, const ViewRequest& v,
+                                                  const std::string& name) {
+  CloudRenderer& r = shared_renderer();
+  r.set_weather(w);
+  RenderQuality q = *quality_preset("default");
+  q.temporal_reuse = false;
+  q.footprint_jitter = false;
+  ViewRequest fresh = v;
+  fresh.reset_history = true;
+  GpuAndReference out{r.render(fresh, q), reference::render_reference(v, w, reference::same_light_model(q))};
+  maybe_save(name + "_gpu", out.gpu);
+  maybe_save(name + "_ref", out.ref);
+  return out;
 }
 
 inline FrameImage render_weather(const weather::Weather& w, const ViewRequest& v, const RenderQuality& q = {}) {

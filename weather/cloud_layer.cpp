@@ -65,6 +65,11 @@ CloudTypeTraits with_strands(CloudTypeTraits t, double strand_ratio) {
   return t;
 }
 
+CloudTypeTraits with_base_relief(CloudTypeTraits t, double base_relief) {
+  t.base_relief = base_relief;
+  return t;
+}
+
 // Indexed by the CIGI number (CloudType value).
 const std::array<CloudTypeTraits, 11>& traits_table() {
   static const std::array<CloudTypeTraits, 11> table = {
@@ -108,14 +113,18 @@ const std::array<CloudTypeTraits, 11>& traits_table() {
       // Shape noise stretched 1.5x vertically: cells are about as tall as wide.
       make_traits({0.05f, 0.6f, 0.0f, 0.6f}, 1200, 2600, 20, 0.40, 8000, false, 1.0 / 1.5),
       // Nimbostratus: thick (2-5 km) precipitating grey layer from a low base; d ~18 um,
-      // LWC ~0.5 g/m^3 -> 0.5 / 0.92 = 0.55. Nearly uniform, little erosion.
-      make_traits({0.1f, 0.2f, 0.0f, 0.15f}, 600, 4000, 18, 0.55, 30000, true),
+      // LWC ~0.5 g/m^3 -> 0.5 / 0.92 = 0.55. Nearly uniform, little erosion. A ragged base
+      // (pannus under it, WMO International Cloud Atlas): raised by up to 6 % of the depth
+      // (200 m of the default 3.4 km) where the detail noise is high.
+      with_base_relief(make_traits({0.1f, 0.2f, 0.0f, 0.15f}, 600, 4000, 18, 0.55, 30000, true), 0.06),
       // Stratocumulus: low (0.6-2 km) lumpy sheet, 0.2-0.8 km thick; d ~16 um, LWC
       // ~0.35 g/m^3 -> 0.35 / 0.64 = 0.54. Cells ~1-3 km.
       make_traits({0.15f, 0.3f, 0.0f, 0.35f}, 1200, 1800, 16, 0.54, 12000, true),
-      // Stratus: low (0.1-0.6 km base), thin (0.2-0.5 km), flat and uniform; small
-      // droplets (d ~12 um), LWC ~0.25 g/m^3 -> 0.25 / 0.27 = 0.92. Little erosion.
-      make_traits({0.1f, 0.15f, 0.0f, 0.2f}, 400, 900, 12, 0.92, 20000, true),
+      // Stratus: low (0.1-0.6 km base), thin (0.2-0.5 km), a uniform grey sheet; small
+      // droplets (d ~12 um), LWC ~0.25 g/m^3 -> 0.25 / 0.27 = 0.92. Little erosion. Its base
+      // is not a plane: raised by up to 20 % of the depth (100 m of the default 500 m) where
+      // the detail noise is high, a lumpy, textured underside (stratus undulatus, fractus).
+      with_base_relief(make_traits({0.1f, 0.15f, 0.0f, 0.2f}, 400, 900, 12, 0.92, 20000, true), 0.2),
   };
   return table;
 }

@@ -112,10 +112,23 @@ struct CloudTypeTraits {
   // How much finer the shape noise is along the Earth's axis (weather/noise_shaping.h):
   // 1 = isotropic; > 1 draws strands that run east-west (cirrus fibratus).
   double strand_ratio = 1.0;
+  // Relief of the layer's base, as a fraction of its depth: 0 = the flat base of the height
+  // profile; > 0 raises the base by up to this fraction with the detail noise (kBaseLiftMean
+  // below), so a sheet's underside is lumpy at the detail noise's scale, hundreds of metres (the
+  // textured base of stratus and nimbostratus; part of the detail, like the erosion:
+  // CloudField::base_lift_factor, cloud_density.glsl base_lift_factor).
+  double base_relief = 0.0;
   bool stratiform = false;
   Anvil anvil;  // spread 0 except cumulonimbus
 };
 const CloudTypeTraits& cloud_type_traits(CloudType t);
+
+// A textured base (CloudTypeTraits::base_relief r) lifts the base by r * saturate(kBaseLiftMean
+// + D - mean(D)) of the layer's depth where the detail noise reads D: by r * kBaseLiftMean
+// where D is at its mean, which is the lift of the light's base-shape field and of the
+// homogeneous layer of the diffuse light (CloudField::base_lift, cloud_density.glsl
+// base_lift). [BASE_LIFT_MEAN]
+inline constexpr double kBaseLiftMean = 0.5;
 
 // All cloud types except None, in enum order.
 const std::vector<CloudType>& all_cloud_types();

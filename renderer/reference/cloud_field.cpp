@@ -1,6 +1,7 @@
 // Cloud density field of the reference (see cloud_field.h).
 #include "renderer/reference/cloud_field.h"
 
+#include "weather/cloud_layer.h"
 #include "weather/cumulus_domes.h"
 #include "weather/dome_rings.h"
 #include "weather/noise_tiling.h"
@@ -137,6 +138,18 @@ double CloudField::depth_fraction(const ReferenceLayer& L, const glm::dvec4& w) 
   return (honour_stratiform_ && L.stratiform) ? 1.0 : std::clamp(0.5 + w.g, 0.3, 1.0);
 }
 
+double CloudField::base_lift(const ReferenceLayer& L, double detail_value) const {
+  return L.base_relief * saturate(weather::kBaseLiftMean + detail_value - inputs_.detail_mean);
+}
+
+double CloudField::base_lift_factor(const ReferenceLayer& L, double f, double lift) {
+  return L.base_relief > 0.0 ? smoothstep(lift, lift + std::max(L.bottom_ramp, 1e-3), f) : 1.0;
+}
+
+double CloudField::nominal_base_m(const ReferenceLayer& L) {
+  return L.base_m + L.base_relief * weather::kBaseLiftMean * (L.top_m - L.base_m);
+}
+
 double CloudField::threshold_fraction(const ReferenceLayer& L, double f, double profile, double coverage, double q,
                                       double shape, double& anvil_factor) const {
   double d = saturate((shape * profile - q) / kCoverageEdge);
@@ -186,7 +199,14 @@ CloudSample CloudField::sample(int li, const glm::dvec3& p, double alt, bool det
   const glm::dvec3 field = field_point(L, p, alt);
   const double threshold = interpolate_quantile(inputs_.base_quantiles, 1.0 - out.coverage);
   double anvil_factor = 1.0;
-  const double d = threshold_fraction(L, f, profile, out.coverage, threshold, base_shape(L, field), anvil_factor);
+  const double shape = base_shape(L, field);
+  double d = threshold_fraction(L, f, profile, out.coverage, threshold, shape, anvil_factor);
+  // a textured base (step 3): the fraction over the profile lifted where the detail noise
+  // reads D (with detail; its mean without)
+  if (d > 0.0 && L.base_relief > 0.0 && f < L.base_relief + L.bottom_ramp) {
+    const double lift = base_lift(L, detail ? detail_shape(L, field) : inputs_.detail_mean);
+    d = threshold_fraction(L, f, profile * base_lift_factor(L, f, lift), out.coverage, threshold, shape, anvil_factor);
+  }
   if (d > 0.0) out.sigma_t = extinction(d, anvil_factor, field);
   return out;
 }
@@ -242,8 +262,14 @@ glm::dvec2 CloudField::column_depths(int li, const glm::dvec3& p, double alt, co
     return base_shape(L, field_point(L, p + up * s, alt + s));
   };
   const auto fraction_at = [&](double s) { return (alt + s - L.base_m) / thickness; };
+  // the profile at height fraction f, over the base-shape field's lifted base (a textured
+  // base's mean lift)
+  const double mean_lift = base_lift(L, inputs_.detail_mean);
+  const auto profile_at = [&](double f) {
+    return height_profile(L, std::clamp(f / f_v, 0.0, 1.0)) * base_lift_factor(L, f, mean_lift);
+  };
   const double shape_p = shape_at(0.0);  // shared by both parts
-  const double g_p = (shape_p * height_profile(L, std::clamp(fraction_at(0.0) / f_v, 0.0, 1.0)) - q) / kCoverageEdge;
+  const double g_p = (shape_p * profile_at(fraction_at(0.0)) - q) / kCoverageEdge;
   // the part of signed length len_m (> 0 upwards)
   const auto part = [&](double len_m) {
     if (len_m == 0.0) return 0.0;
@@ -259,13 +285,12 @@ glm::dvec2 CloudField::column_depths(int li, const glm::dvec3& p, double alt, co
           const double u = (k + 0.5) / pieces, f = fraction_at((j + u) * ds);
           if (!(f > 0.0 && f < f_v)) continue;
           double anvil_factor = 1.0;
-          const double d = threshold_fraction(L, f, height_profile(L, f / f_v), coverage, q,
+          const double d = threshold_fraction(L, f, profile_at(f), coverage, q,
                                               shape0 + (shape1 - shape0) * u, anvil_factor);
           sum += d * anvil_factor;
         } else {
           const double u = static_cast<double>(k + 1) / pieces;
-          const double x = std::clamp(fraction_at((j + u) * ds) / f_v, 0.0, 1.0);
-          const double g1 = ((shape0 + (shape1 - shape0) * u) * height_profile(L, x) - q) / kCoverageEdge;
+          const double g1 = ((shape0 + (shape1 - shape0) * u) * profile_at(fraction_at((j + u) * ds)) - q) / kCoverageEdge;
           sum += saturate_mean(g0, g1);
           g0 = g1;
         }

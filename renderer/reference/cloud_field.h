@@ -15,6 +15,10 @@
 //      type's noise vertical scale k: R (X + (k - 1) a n), n the shell's up at the point
 //      (k < 1 stretches features upwards: convective towers);
 //      d = saturate((S P - Q(1 - c)) / 0.12), Q the base noise's quantile function;
+//      with a textured base (the layer's base_relief r > 0, the type's) and f < r + r_b,
+//      d is that of the lifted profile P smoothstep(l, l + r_b, f), l = r saturate(0.5 + D -
+//      mean(D)) (base_lift; D the detail noise at the point where detail is wanted, its
+//      mean otherwise: the base-shape field of the light is lifted by r / 2);
 //   4. anvil (weather::Anvil; layers with spread > 0): with its weight w = W(f) > 0, the
 //      shield's d_s = saturate((S P - Q(1 - c_w)) / 0.12), c_w = 1 - (1 - c)^(1 + spread w);
 //      factor a = 1 - w (1 - density_ratio)(1 - d), then d = max(d, d_s) (a = 1 elsewhere);
@@ -91,6 +95,16 @@ class CloudField {
   // The pieces, for tests: weather map value at p; the vertical profile at height fraction x.
   glm::dvec4 weather_at(const glm::dvec3& p) const;
   static double height_profile(const ReferenceLayer& layer, double x);
+  // Step 3's textured base: the lift l (fraction of the depth) where the detail noise reads
+  // D, and the factor on the profile at height fraction f over a base lifted by l (1 in
+  // layers without relief, else in [0, 1], so every bound of the profile holds with it).
+  // The GPU's base_lift and base_lift_factor (shaders/cloud_density.glsl).
+  double base_lift(const ReferenceLayer& L, double detail_value) const;
+  static double base_lift_factor(const ReferenceLayer& L, double f, double lift);
+  // The base of layer L's homogeneous layer for the diffuse light and its nominal optical
+  // depth: the base raised by the textured base's mean lift, base_relief x kBaseLiftMean of
+  // the depth (the GPU's nominal_base_m; the base itself without relief).
+  static double nominal_base_m(const ReferenceLayer& L);
   // The anvil (weather::Anvil): its weight at the layer's height fraction f, the largest
   // weight over [f0, f1] (at the interval's point nearest the band's middle: the weight
   // rises to a plateau there and falls after it), the shield's coverage for c at weight w.

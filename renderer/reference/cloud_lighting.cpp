@@ -16,9 +16,10 @@ constexpr double kCumulusPeriod_m = 8000.0;
 constexpr double kCumulusPeakSigma_per_m = 0.15;  // 0.1885 /m (d = 20 um) * 0.40 * 2
 
 // The layer's full nominal optical depth: peak extinction times density scale times
-// thickness (a homogeneous layer at full coverage).
+// thickness (a homogeneous layer at full coverage) above the base raised by a textured base's
+// mean lift (CloudField::nominal_base_m).
 double nominal_optical_depth(const ReferenceLayer& L) {
-  return L.sigma_max_per_m * L.density_scale * (L.top_m - L.base_m);
+  return L.sigma_max_per_m * L.density_scale * (L.top_m - CloudField::nominal_base_m(L));
 }
 }  // namespace
 
@@ -95,7 +96,7 @@ ColumnDepths column_optical_depths(const CloudField& field, int li, const glm::d
 
 ColumnDepths nominal_column_depths(const ReferenceLayer& L, double alt, double coverage) {
   const double sigma_nominal = L.sigma_max_per_m * L.density_scale * coverage;
-  return {sigma_nominal * std::max(L.top_m - alt, 0.0), sigma_nominal * std::max(alt - L.base_m, 0.0)};
+  return {sigma_nominal * std::max(L.top_m - alt, 0.0), sigma_nominal * std::max(alt - CloudField::nominal_base_m(L), 0.0)};
 }
 
 double layer_sun_optical_depth(const CloudField& field, int li, const glm::dvec3& p, double alt, const glm::dvec3& sun,

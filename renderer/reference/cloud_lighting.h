@@ -52,7 +52,8 @@ struct ColumnDepths {
 ColumnDepths column_optical_depths(const CloudField& field, int li, const glm::dvec3& p, double alt, double step_m,
                                    std::uint64_t& evals);
 // ... of a homogeneous layer of the map's coverage instead: the layer's nominal extinction
-// sigma_max * density_scale * coverage times the distances to its top and base (the GPU's
+// sigma_max * density_scale * coverage times the distances to its top and to its base
+// raised by a textured base's mean lift (CloudField::nominal_base_m; the GPU's
 // RenderQuality::column_steps = 0).
 ColumnDepths nominal_column_depths(const ReferenceLayer& L, double alt, double coverage);
 

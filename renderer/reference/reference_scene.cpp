@@ -110,6 +110,7 @@ ReferenceScene make_reference_scene(const ViewRequest& view, const weather::Weat
     r.top_weight = tr.profile.top_weight;
     r.noise_vertical_scale = tr.noise_vertical_scale;
     r.stratiform = tr.stratiform;
+    r.base_relief = tr.base_relief;
     r.anvil = tr.anvil;
     r.type = l.type;
     r.dome_seed = weather::dome_placement_seed(weather, i);

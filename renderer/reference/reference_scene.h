@@ -79,6 +79,7 @@ struct ReferenceLayer {
   double bottom_ramp = 0.1, top_ramp = 0.3, top_weight = 0.0;  // height profile (type traits)
   double noise_vertical_scale = 1.0;  // k: the noise is sampled at X + (k - 1) a(X) n(X) (type trait)
   bool stratiform = false;
+  double base_relief = 0.0;           // fraction of the depth the base rises by (type trait base_relief)
   weather::Anvil anvil;               // the type's anvil (spread 0: none)
   weather::CloudType type = weather::CloudType::Cumulus;
   std::uint32_t dome_seed = 0;        // weather::dome_placement_seed (cumulus domes)

@@ -16,6 +16,7 @@
 #include "renderer/reference/cloud_field.h"
 #include "renderer/reference/reference_renderer.h"
 #include "renderer/reference/reference_scene.h"
+#include "tests/make_view.h"
 
 namespace cloudsvc::reference {
 namespace {
@@ -112,12 +113,7 @@ TEST_P(TexturedBase, TheBaseIsLumpyWithTheReliefAndFlatWithout) {
   l.density_scale = weather::cloud_type_traits(c.type).default_density_scale;
   w.layers.push_back(l);
   w.map_seed = 4;
-  ViewRequest v;
-  v.position = {47.45, 8.56, 100.0};
-  v.attitude = {0.0, 90.0, 0.0};
-  v.unix_time_s = 1.78e9;
-  v.width = 16;
-  v.height = 9;
+  const ViewRequest v = test::make_view(47.45, 8.56, 100.0, 0.0, 90.0, "2026-06-21T11:30:00Z", 16, 9);
   const ReferenceScene textured = make_reference_scene(v, w);
   ReferenceScene flat = textured;
   flat.layers[0].base_relief = 0.0;

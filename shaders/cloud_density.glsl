@@ -226,9 +226,9 @@ float base_lift_factor(CloudLayerGpu L, float f, float lift) {
 // The base of layer L's homogeneous layer for the diffuse light (the optical depth below a
 // point) and its full nominal optical depth: the base raised by the textured base's mean
 // lift (CloudField::nominal_base_m). Where the view meets the lumpy base there is little
-// cloud below it: counting the depth the relief removes made the underside of a stratus deck
-// 35 % brighter than without it, where the path-traced truth is 12 % brighter
-// (docs/MORPHOLOGY.md, "Textured base").
+// cloud below it: counting the depth the relief removes had made the underside of a stratus
+// deck 35 % brighter, where the path-traced truth was 12 % brighter (an earlier, stronger
+// relief; docs/MORPHOLOGY.md, "Textured base").
 float nominal_base_m(CloudLayerGpu L) { return L.base_m + L.base_relief * BASE_LIFT_MEAN * (L.top_m - L.base_m); }
 
 // Cloud fraction of a threshold layer (not a dome layer) with base shape `shape` at height

@@ -177,11 +177,17 @@ CloudSample CloudField::sample(int li, const glm::dvec3& p, double alt, bool det
   out.coverage = weather::local_coverage(L.coverage, w.r);
   if (out.coverage <= 0.0) return out;
   const double f_v = depth_fraction(L, w);
+  // the detail noise at the sample's field point, read once where first needed (the
+  // textured base's lift and the erosion both use it; values lie in [0, 1])
+  double detail_value = -1.0;
+  const auto detail_at = [&](const glm::dvec3& field) {
+    if (detail_value < 0.0) detail_value = detail_shape(L, field);
+    return detail_value;
+  };
   // steps 5 and 6 of the header for the cloud fraction d > 0
   const auto extinction = [&](double d, double anvil_factor, const glm::dvec3& field) {
     if (detail && d < 1.0) {
-      const double dn = detail_shape(L, field);
-      const double floor_value = dn * L.erosion;
+      const double floor_value = detail_at(field) * L.erosion;
       d = saturate((d - floor_value) / (1.0 - floor_value));
     }
     return d * anvil_factor * extinction_scale(L, w);
@@ -204,7 +210,7 @@ CloudSample CloudField::sample(int li, const glm::dvec3& p, double alt, bool det
   // a textured base (step 3): the fraction over the profile lifted where the detail noise
   // reads D (with detail; its mean without)
   if (d > 0.0 && L.base_relief > 0.0 && f < L.base_relief + L.bottom_ramp) {
-    const double lift = base_lift(L, detail ? detail_shape(L, field) : inputs_.detail_mean);
+    const double lift = base_lift(L, detail ? detail_at(field) : inputs_.detail_mean);
     d = threshold_fraction(L, f, profile * base_lift_factor(L, f, lift), out.coverage, threshold, shape, anvil_factor);
   }
   if (d > 0.0) out.sigma_t = extinction(d, anvil_factor, field);
